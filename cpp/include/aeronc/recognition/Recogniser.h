@@ -1,0 +1,37 @@
+#pragma once
+#include <aeronc/recognition/DomainTree.h>
+
+#include <TopoDS_Shape.hxx>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace aeronc::recognition {
+
+struct Blank {
+    Vec3 min{0, 0, 0};
+    Vec3 max{0, 0, 0};
+};
+
+struct RecogniseOptions {
+    // Setup directions (tool axes). Empty: found from the part (largest planar face's
+    // normal and its opposite, then directions of remaining unmachined features).
+    std::vector<Vec3> directions;
+    // Blank: explicit box in world coordinates, or the part's bounding box in each
+    // setup frame grown by this allowance.
+    std::optional<Blank> blank;
+    double blankAllowance = 0.0;
+    double linearTolerance = 1e-3;   // mm: heights equal, points coincide
+    double angularTolerance = 1e-3;  // rad: normal parallel / perpendicular to the axis
+    double chordTolerance = 0.01;    // mm: sagitta when curves become polylines
+    // Called with a fraction 0..1 and a stage; returning false cancels (throws).
+    std::function<bool(double, const std::string&)> progress;
+};
+
+// Layered-slicing recognition of generalised pockets, openings and holes.
+DomainTree recognise(const TopoDS_Shape& solid, const RecogniseOptions& options = {});
+
+// JSON text of the tree (the CLI's --json output and the Python binding's result).
+std::string toJson(const DomainTree& tree, int indent = 1);
+
+}  // namespace aeronc::recognition
