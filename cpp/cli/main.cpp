@@ -1,0 +1,139 @@
+// aeronc: command-line entry to the AeroNC core.
+//   aeronc recognise PART.(step|brep) [--json OUT] [--directions auto|+Z,-Z|x:y:z,...]
+//                    [--allowance MM] [--tolerance MM]
+//   aeronc panel OUT.step [--pockets NXxNY] [--truth TRUTH.json] [--plain]
+#include <aeronc/core/Error.h>
+#include <aeronc/core/PartIO.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <Standard_Failure.hxx>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
+    "  aeronc panel OUT.step [--pockets NXxNY] [--truth TRUTH.json] [--plain]\n";
+
+std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
+    std::vector<aeronc::Vec3> out;
+    if (s == "auto" || s.empty()) return out;
+    std::stringstream ss(s);
+    std::string tok;
+    while (std::getline(ss, tok, ',')) {
+        static const std::map<std::string, aeronc::Vec3> named{{"+X", {1, 0, 0}}, {"-X", {-1, 0, 0}},
+                                                               {"+Y", {0, 1, 0}}, {"-Y", {0, -1, 0}},
+                                                               {"+Z", {0, 0, 1}}, {"-Z", {0, 0, -1}}};
+        auto it = named.find(tok);
+        if (it != named.end()) {
+            out.push_back(it->second);
+            continue;
+        }
+        aeronc::Vec3 v{};
+        char c1 = 0, c2 = 0;
+        std::stringstream vs(tok);
+        if (!(vs >> v[0] >> c1 >> v[1] >> c2 >> v[2]) || c1 != ':' || c2 != ':')
+            throw aeronc::inputError("bad direction '" + tok + "': use +Z, -X ... or x:y:z");
+        out.push_back(v);
+    }
+    return out;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    const std::string tmp = path + ".part";
+    {
+        std::ofstream f(tmp, std::ios::binary);
+        f << text;
+        if (!f) throw aeronc::inputError(path + ": could not be written");
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+int recogniseCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("recognise needs a part file");
+    std::string part = argv[2], jsonOut;
+    aeronc::recognition::RecogniseOptions opt;
+    for (int i = 3; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "--json") jsonOut = next();
+        else if (a == "--directions") opt.directions = parseDirections(next());
+        else if (a == "--allowance") opt.blankAllowance = std::stod(next());
+        else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
+        else throw aeronc::inputError("unknown option " + a);
+    }
+    const TopoDS_Shape solid = aeronc::loadPart(part);
+    const auto tree = aeronc::recognition::recognise(solid, opt);
+    const std::string text = aeronc::recognition::toJson(tree);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+    std::map<std::string, int> counts;
+    for (const auto& e : tree.elements) counts[toString(e.type)]++;
+    std::cerr << part << ": " << tree.faceCount << " faces, " << tree.setups.size() << " setup(s), "
+              << tree.elements.size() << " element(s):";
+    for (auto& kv : counts) std::cerr << " " << kv.second << " " << kv.first;
+    std::cerr << "\n";
+    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
+    return 0;
+}
+
+int panelCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("panel needs an output STEP path");
+    aeronc::testparts::PanelSpec spec;
+    std::string out = argv[2], truth;
+    for (int i = 3; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--pockets" && i + 1 < argc) {
+            if (std::sscanf(argv[++i], "%dx%d", &spec.pocketsX, &spec.pocketsY) != 2 || spec.pocketsX < 1 ||
+                spec.pocketsY < 1)
+                throw aeronc::inputError("--pockets wants NXxNY, e.g. 40x25");
+        } else if (a == "--truth" && i + 1 < argc) {
+            truth = argv[++i];
+        } else if (a == "--plain") {
+            spec.lowerRibs = spec.islands = spec.openings = spec.lighteningHoles = spec.boltHoles = false;
+            spec.joggles = spec.flange = spec.bottomPockets = false;
+        } else {
+            throw aeronc::inputError("unknown option " + a);
+        }
+    }
+    const auto panel = aeronc::testparts::makePanel(spec);
+    aeronc::writeStep(panel.shape, out);
+    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(panel));
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::cerr << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string cmd = argv[1];
+    try {
+        if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
+        if (cmd == "panel") return panelCmd(argc, argv);
+        std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
+        return 2;
+    } catch (const aeronc::Error& e) {
+        std::cerr << "aeronc: error: " << e.what() << "\n";
+        return 1;
+    } catch (const Standard_Failure& f) {
+        std::cerr << "aeronc: error: OpenCASCADE: " << f.GetMessageString() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "aeronc: error: " << e.what() << "\n";
+        return 1;
+    }
+}

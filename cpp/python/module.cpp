@@ -1,0 +1,140 @@
+// aeronc._core: the binding between FreeCAD's Python and the C++ core.
+// Every C++ and OCCT exception stops here and becomes RecognitionError.
+#include <aeronc/core/Error.h>
+#include <aeronc/core/PartIO.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <BRepTools.hxx>
+#include <Standard_Failure.hxx>
+#include <nlohmann/json.hpp>
+#include <pybind11/functional.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+namespace py = pybind11;
+using namespace aeronc;
+
+namespace {
+
+PyObject* g_error = nullptr;  // owned by the module
+
+struct PyCallbackAbort {};
+
+recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3>>& directions, double allowance,
+                                          const py::object& blank, double lin, double ang, double chord,
+                                          const py::object& progress) {
+    recognition::RecogniseOptions o;
+    for (auto& d : directions) o.directions.push_back({d[0], d[1], d[2]});
+    o.blankAllowance = allowance;
+    if (!blank.is_none()) {
+        auto b = blank.cast<std::vector<double>>();
+        if (b.size() != 6) throw inputError("blank must be (xmin, ymin, zmin, xmax, ymax, zmax)");
+        o.blank = recognition::Blank{{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
+    }
+    o.linearTolerance = lin;
+    o.angularTolerance = ang;
+    o.chordTolerance = chord;
+    if (!progress.is_none()) {
+        o.progress = [progress](double f, const std::string& stage) {
+            py::gil_scoped_acquire gil;
+            py::object r = progress(f, stage);
+            return r.is_none() ? true : r.cast<bool>();
+        };
+    }
+    return o;
+}
+
+template <class F>
+auto guarded(F f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const py::error_already_set&) {
+        throw;
+    } catch (const Error& e) {
+        PyErr_SetString(g_error, e.what());
+    } catch (const Standard_Failure& e) {
+        PyErr_SetString(g_error, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
+    } catch (const std::exception& e) {
+        PyErr_SetString(g_error, e.what());
+    } catch (...) {
+        PyErr_SetString(g_error, "unknown failure in the AeroNC core");
+    }
+    throw py::error_already_set();
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "AeroNC core: machining-feature recognition and test parts";
+    g_error = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
+
+    auto recogniseWith = [](const TopoDS_Shape& solid, const recognition::RecogniseOptions& o) {
+        recognition::DomainTree t;
+        {
+            py::gil_scoped_release nogil;
+            t = recognition::recognise(solid, o);
+        }
+        return recognition::toJson(t, -1);
+    };
+
+    m.def(
+        "recognise_brep",
+        [recogniseWith](const std::string& brep, const std::vector<std::array<double, 3>>& directions,
+                        double allowance, const py::object& blank, double lin, double ang, double chord,
+                        const py::object& progress) {
+            return guarded([&] {
+                const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
+                return recogniseWith(partFromBrepText(brep), o);
+            });
+        },
+        py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
+        py::arg("allowance") = 0.0, py::arg("blank") = py::none(), py::arg("linear_tolerance") = 1e-3,
+        py::arg("angular_tolerance") = 1e-3, py::arg("chord_tolerance") = 0.01, py::arg("progress") = py::none(),
+        "Recognise the machining features of a solid given as BREP text; returns JSON text.");
+
+    m.def(
+        "recognise_file",
+        [recogniseWith](const std::string& path, const std::vector<std::array<double, 3>>& directions,
+                        double allowance, const py::object& blank, double lin, double ang, double chord,
+                        const py::object& progress) {
+            return guarded([&] {
+                const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
+                return recogniseWith(loadPart(path), o);
+            });
+        },
+        py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,
+        py::arg("blank") = py::none(), py::arg("linear_tolerance") = 1e-3, py::arg("angular_tolerance") = 1e-3,
+        py::arg("chord_tolerance") = 0.01, py::arg("progress") = py::none(),
+        "Recognise the machining features of a STEP or BREP file; returns JSON text.");
+
+    m.def(
+        "make_panel",
+        [](const std::string& specJson) {
+            return guarded([&] {
+                testparts::PanelSpec s;
+                const auto j = specJson.empty() ? nlohmann::json::object() : nlohmann::json::parse(specJson);
+                auto get = [&](const char* k, auto& v) {
+                    if (j.contains(k)) v = j.at(k).get<std::decay_t<decltype(v)>>();
+                };
+                get("pocketsX", s.pocketsX), get("pocketsY", s.pocketsY), get("pitch", s.pitch);
+                get("ribThickness", s.ribThickness), get("border", s.border), get("thickness", s.thickness);
+                get("webZ", s.webZ), get("cornerRadius", s.cornerRadius), get("floorFillet", s.floorFillet);
+                get("lowerRibs", s.lowerRibs), get("lowerRibBy", s.lowerRibBy), get("islands", s.islands);
+                get("openings", s.openings), get("lighteningHoles", s.lighteningHoles);
+                get("boltHoles", s.boltHoles), get("joggles", s.joggles), get("flange", s.flange);
+                get("bottomPockets", s.bottomPockets), get("bottomDepth", s.bottomDepth);
+                testparts::Panel p;
+                {
+                    py::gil_scoped_release nogil;
+                    p = testparts::makePanel(s);
+                }
+                std::ostringstream os;
+                BRepTools::Write(p.shape, os);
+                return py::make_tuple(os.str(), testparts::truthToJson(p));
+            });
+        },
+        py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
+}

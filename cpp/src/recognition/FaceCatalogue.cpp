@@ -1,0 +1,146 @@
+#include "FaceCatalogue.h"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
+#include <gp_Pln.hxx>
+#include <gp_Torus.hxx>
+
+#include <algorithm>
+#include <limits>
+
+namespace aeronc::recognition {
+namespace {
+Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+}  // namespace
+
+FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
+    TopExp::MapShapes(solid, TopAbs_FACE, map_);
+    faces_.resize(static_cast<std::size_t>(map_.Extent()));
+    for (int i = 0; i < map_.Extent(); ++i) {
+        FaceInfo& f = faces_[static_cast<std::size_t>(i)];
+        f.face = TopoDS::Face(map_(i + 1));
+        const bool reversed = f.face.Orientation() == TopAbs_REVERSED;
+        BRepAdaptor_Surface s(f.face, false);
+        switch (s.GetType()) {
+            case GeomAbs_Plane: {
+                f.kind = SurfaceKind::Plane;
+                const gp_Ax3 pos = s.Plane().Position();
+                gp_Dir n = pos.Direction();
+                if (!pos.Direct()) n.Reverse();
+                if (reversed) n.Reverse();
+                f.normal = v3(n.XYZ());
+                break;
+            }
+            case GeomAbs_Cylinder: {
+                f.kind = SurfaceKind::Cylinder;
+                const gp_Cylinder c = s.Cylinder();
+                f.axisDir = v3(c.Axis().Direction().XYZ());
+                f.axisPoint = v3(c.Axis().Location().XYZ());
+                f.radius = c.Radius();
+                // The natural normal of a direct cylinder points away from the axis.
+                f.concave = (c.Position().Direct() == reversed);
+                break;
+            }
+            case GeomAbs_Cone: {
+                f.kind = SurfaceKind::Cone;
+                const gp_Cone c = s.Cone();
+                f.axisDir = v3(c.Axis().Direction().XYZ());
+                f.axisPoint = v3(c.Axis().Location().XYZ());
+                f.radius = c.RefRadius();
+                f.semiAngle = c.SemiAngle();
+                f.concave = (c.Position().Direct() == reversed);
+                break;
+            }
+            case GeomAbs_Torus: {
+                f.kind = SurfaceKind::Torus;
+                const gp_Torus t = s.Torus();
+                f.axisDir = v3(t.Axis().Direction().XYZ());
+                f.axisPoint = v3(t.Axis().Location().XYZ());
+                f.radius = t.MinorRadius();
+                break;
+            }
+            case GeomAbs_Sphere:
+                f.kind = SurfaceKind::Sphere;
+                f.radius = s.Sphere().Radius();
+                break;
+            default:
+                f.kind = SurfaceKind::Other;
+        }
+        Bnd_Box box;
+        BRepBndLib::Add(f.face, box, false);
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        const double g = box.GetGap();
+        f.boxMin = {x0 + g, y0 + g, z0 + g};
+        f.boxMax = {x1 - g, y1 - g, z1 - g};
+    }
+    TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+    TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+    for (int e = 1; e <= edgeFaces.Extent(); ++e) {
+        const TopTools_ListOfShape& fl = edgeFaces(e);
+        std::vector<int> idx;
+        for (const TopoDS_Shape& s : fl) idx.push_back(indexOf(s));
+        for (int a : idx)
+            for (int b : idx)
+                if (a != b && a >= 0 && b >= 0) faces_[static_cast<std::size_t>(a)].neighbours.push_back(b);
+    }
+    for (FaceInfo& f : faces_) {
+        std::sort(f.neighbours.begin(), f.neighbours.end());
+        f.neighbours.erase(std::unique(f.neighbours.begin(), f.neighbours.end()), f.neighbours.end());
+    }
+}
+
+double FaceCatalogue::area(int i) const {
+    const FaceInfo& f = faces_[static_cast<std::size_t>(i)];
+    if (f.area < 0) {
+        GProp_GProps props;
+        BRepGProp::SurfaceProperties(f.face, props);
+        f.area = props.Mass();
+    }
+    return f.area;
+}
+
+void FaceCatalogue::heightRange(int i, const Vec3& d, double& lo, double& hi) const {
+    const FaceInfo& f = faces_[static_cast<std::size_t>(i)];
+    lo = std::numeric_limits<double>::max();
+    hi = -lo;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 p{(c & 1) ? f.boxMax[0] : f.boxMin[0], (c & 2) ? f.boxMax[1] : f.boxMin[1],
+                     (c & 4) ? f.boxMax[2] : f.boxMin[2]};
+        const double h = dot(p, d);
+        lo = std::min(lo, h);
+        hi = std::max(hi, h);
+    }
+}
+
+Vec3 FaceCatalogue::interiorPoint(int i) const {
+    const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    BRepTopAdaptor_FClass2d cls(face, 1e-9);
+    BRepAdaptor_Surface s(face, true);
+    // Search a refining grid; the centre first, which is inside for most faces.
+    for (int n = 1; n <= 65; n = n * 2 + 1) {
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) {
+                const double u = u0 + (u1 - u0) * (a + 0.5) / n;
+                const double v = v0 + (v1 - v0) * (b + 0.5) / n;
+                if (cls.Perform(gp_Pnt2d(u, v)) == TopAbs_IN) return v3(s.Value(u, v).XYZ());
+            }
+    }
+    const gp_Pnt p = s.Value(0.5 * (u0 + u1), 0.5 * (v0 + v1));
+    return v3(p.XYZ());
+}
+
+}  // namespace aeronc::recognition

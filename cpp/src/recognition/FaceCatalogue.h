@@ -1,0 +1,47 @@
+#pragma once
+// Per-face geometry the recognition needs, computed once per part.
+#include <aeronc/core/Vec3.h>
+
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <vector>
+
+namespace aeronc::recognition {
+
+enum class SurfaceKind { Plane, Cylinder, Cone, Torus, Sphere, Other };
+
+struct FaceInfo {
+    TopoDS_Face face;
+    SurfaceKind kind = SurfaceKind::Other;
+    Vec3 normal{0, 0, 0};   // plane: outward normal (out of the material)
+    Vec3 axisDir{0, 0, 0};  // cylinder / cone / torus axis direction
+    Vec3 axisPoint{0, 0, 0};
+    double radius = 0;       // cylinder radius, torus minor radius, cone reference radius
+    double semiAngle = 0;    // cone
+    bool concave = false;    // cylinder / cone: outward normal points towards the axis
+    Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};
+    std::vector<int> neighbours;  // 0-based indices of faces sharing an edge
+    mutable double area = -1;     // computed on demand
+};
+
+class FaceCatalogue {
+public:
+    explicit FaceCatalogue(const TopoDS_Shape& solid);
+    int size() const { return static_cast<int>(faces_.size()); }
+    const FaceInfo& operator[](int i) const { return faces_[static_cast<std::size_t>(i)]; }
+    // 0-based index of a face of the solid, -1 if foreign.
+    int indexOf(const TopoDS_Shape& face) const { return map_.FindIndex(face) - 1; }
+    double area(int i) const;
+    // Height range of face i along unit direction d (conservative: from its box).
+    void heightRange(int i, const Vec3& d, double& lo, double& hi) const;
+    // A point strictly inside face i (world coordinates).
+    Vec3 interiorPoint(int i) const;
+
+private:
+    std::vector<FaceInfo> faces_;
+    TopTools_IndexedMapOfShape map_;
+};
+
+}  // namespace aeronc::recognition

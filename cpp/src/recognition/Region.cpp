@@ -1,0 +1,95 @@
+#include "Region.h"
+
+#include <cmath>
+
+namespace aeronc::recognition {
+using namespace ClipperLib;
+
+namespace {
+struct Shape {
+    int outers = 0, holes = 0;
+    bool operator==(const Shape& o) const { return outers == o.outers && holes == o.holes; }
+};
+Shape shapeOf(const Paths& ps) {
+    Shape s;
+    for (const Path& p : ps) (Orientation(p) ? s.outers : s.holes)++;
+    return s;
+}
+// Round joins: the erosion is then the true distance from the boundary.
+Paths erode(const Paths& ps, double r) {
+    ClipperOffset off(2.0, 0.005 * kClipperScale);
+    off.AddPaths(ps, jtRound, etClosedPolygon);
+    Paths out;
+    off.Execute(out, -r * kClipperScale);
+    return out;
+}
+}  // namespace
+
+void Region::updateBox() {
+    if (outer.empty()) return;
+    lo = hi = toP2(outer[0]);
+    for (const IntPoint& ip : outer) {
+        const P2 p = toP2(ip);
+        lo.x = std::min(lo.x, p.x), lo.y = std::min(lo.y, p.y);
+        hi.x = std::max(hi.x, p.x), hi.y = std::max(hi.y, p.y);
+    }
+}
+
+double Region::area() const {
+    double a = std::fabs(Area(outer));
+    for (const Path& h : holes) a -= std::fabs(Area(h));
+    return a / (kClipperScale * kClipperScale);
+}
+
+bool Region::contains(const P2& p) const {
+    if (p.x < lo.x || p.x > hi.x || p.y < lo.y || p.y > hi.y) return false;
+    const IntPoint ip = toInt(p);
+    if (PointInPolygon(ip, outer) == 0) return false;
+    for (const Path& h : holes)
+        if (PointInPolygon(ip, h) == 1) return false;
+    return true;
+}
+
+Paths Region::paths() const {
+    Paths ps{outer};
+    ps.insert(ps.end(), holes.begin(), holes.end());
+    return ps;
+}
+
+double Region::minWidth() const {
+    const Paths ps = paths();
+    const Shape ref{1, static_cast<int>(holes.size())};
+    double good = 0, bad = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y) + 1e-3;
+    for (int it = 0; it < 16; ++it) {
+        const double r = 0.5 * (good + bad);
+        const Paths e = erode(ps, r);
+        if (!e.empty() && shapeOf(e) == ref) good = r;
+        else bad = r;
+    }
+    return 2 * good;
+}
+
+P2 Region::interiorPoint() const {
+    const Paths ps = paths();
+    // Erode as far as possible while something remains; any vertex of that is deep inside.
+    double good = 0, bad = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y) + 1e-3;
+    Paths best = ps;
+    for (int it = 0; it < 10; ++it) {
+        const double r = 0.5 * (good + bad);
+        Paths e = erode(ps, r);
+        if (!e.empty()) good = r, best = std::move(e);
+        else bad = r;
+    }
+    for (const Path& p : best)
+        if (Orientation(p) && !p.empty()) {
+            // Centre of the eroded outer's box nudged to a vertex if it falls outside.
+            P2 c{0, 0};
+            for (const IntPoint& q : p) c.x += q.X, c.y += q.Y;
+            const IntPoint m{static_cast<cInt>(c.x / p.size()), static_cast<cInt>(c.y / p.size())};
+            if (PointInPolygon(m, p) == 1 && contains(toP2(m))) return toP2(m);
+            return toP2(p[0]);
+        }
+    return toP2(outer[0]);
+}
+
+}  // namespace aeronc::recognition

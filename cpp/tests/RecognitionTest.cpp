@@ -1,0 +1,188 @@
+// Recognition on parts built here with known answers, and on bad input.
+#include <aeronc/core/Error.h>
+#include <aeronc/core/PartIO.h>
+#include <aeronc/recognition/Recogniser.h>
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+using namespace aeronc;
+using namespace aeronc::recognition;
+
+namespace {
+
+TopoDS_Shape roundedBox(double x, double y, double z, double dx, double dy, double dz, double r) {
+    TopoDS_Shape b = BRepPrimAPI_MakeBox(gp_Pnt(x, y, z), dx, dy, dz).Shape();
+    if (r <= 0) return b;
+    BRepFilletAPI_MakeFillet f(b);
+    for (TopExp_Explorer e(b, TopAbs_EDGE); e.More(); e.Next()) {
+        TopoDS_Vertex v1, v2;
+        TopExp::Vertices(TopoDS::Edge(e.Current()), v1, v2);
+        const gp_Pnt a = BRep_Tool::Pnt(v1), c = BRep_Tool::Pnt(v2);
+        if (std::fabs(a.X() - c.X()) < 1e-9 && std::fabs(a.Y() - c.Y()) < 1e-9) f.Add(r, TopoDS::Edge(e.Current()));
+    }
+    return f.Shape();
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b) { return BRepAlgoAPI_Cut(a, b).Shape(); }
+
+RecogniseOptions along(std::initializer_list<Vec3> dirs) {
+    RecogniseOptions o;
+    o.directions = dirs;
+    return o;
+}
+
+std::string tmpFile(const std::string& name, const std::string& content) {
+    const std::string p = (std::filesystem::temp_directory_path() / name).string();
+    std::ofstream(p, std::ios::binary) << content;
+    return p;
+}
+
+}  // namespace
+
+TEST(Recognition, RoundedPocketInBlock) {
+    const TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), roundedBox(30, 25, 10, 40, 30, 15, 5));
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    ASSERT_EQ(t.setups.size(), 1u);
+    ASSERT_EQ(t.elements.size(), 1u);
+    const DomainElement& e = t.elements[0];
+    EXPECT_EQ(e.type, ElementType::ClosedPocket);
+    EXPECT_EQ(e.parent, -1);
+    EXPECT_NEAR(e.level, 10, 1e-6);
+    EXPECT_NEAR(e.depth, 10, 1e-6);
+    EXPECT_NEAR(e.minCornerRadius, 5, 1e-6);
+    EXPECT_NEAR(e.minWidth, 30, 0.05);
+    EXPECT_NEAR(e.floorArea, 40 * 30 - (4 - M_PI) * 25, 1e-3);
+    EXPECT_NEAR(e.area, 40 * 30 - (4 - M_PI) * 25, 0.5);
+    EXPECT_EQ(e.floorFaces.size(), 1u);
+    EXPECT_EQ(e.contourFaces.size(), 8u);  // 4 planes + 4 corner cylinders
+    EXPECT_TRUE(e.islandFaces.empty());
+    EXPECT_EQ(e.topFaces.size(), 1u);
+    // Every face has exactly one role; the pocket's faces belong to it.
+    int claimed = 0;
+    for (std::size_t i = 0; i < t.faceRoles.size(); ++i) claimed += t.faceElement[i] == 0;
+    EXPECT_EQ(claimed, 9);
+}
+
+TEST(Recognition, SharpCornersGiveZeroRadius) {
+    const TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(30, 25, 12), 40, 30, 10).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    ASSERT_EQ(t.elements.size(), 1u);
+    EXPECT_EQ(t.elements[0].minCornerRadius, 0);
+    EXPECT_NEAR(t.elements[0].depth, 8, 1e-6);
+}
+
+TEST(Recognition, PocketWithIslandAndHoleInFloor) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(120, 100, 30).Shape(), roundedBox(10, 10, 10, 100, 80, 25, 8));
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(20, 20, 10), 20, 20, 15).Shape()).Shape();  // island
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(80, 50, -1), gp_Dir(0, 0, 1)), 6, 40).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    ASSERT_EQ(t.elements.size(), 2u);
+    const DomainElement* pocket = nullptr;
+    const DomainElement* hole = nullptr;
+    for (auto& e : t.elements) (e.hole ? hole : pocket) = &e;
+    ASSERT_TRUE(pocket && hole);
+    EXPECT_EQ(pocket->type, ElementType::ClosedPocket);
+    EXPECT_EQ(pocket->islandFaces.size(), 1u);  // the block; the hole lies below the floor
+    EXPECT_EQ(hole->type, ElementType::Hole);
+    EXPECT_EQ(hole->parent, pocket->id);
+    EXPECT_TRUE(hole->hole->through);
+    EXPECT_NEAR(hole->hole->diameter, 12, 1e-6);
+    EXPECT_NEAR(hole->hole->depth, 10, 1e-6);
+    EXPECT_NEAR(pocket->minWidth, 10, 0.05);  // between the island and the wall
+}
+
+TEST(Recognition, StepAtEdgeIsOpenPocket) {
+    const TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 12), 102, 21, 10).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    ASSERT_EQ(t.elements.size(), 1u);
+    EXPECT_EQ(t.elements[0].type, ElementType::OpenPocket);
+    EXPECT_FALSE(t.elements[0].openEdges.empty());
+    EXPECT_NEAR(t.elements[0].level, 12, 1e-6);
+    EXPECT_EQ(t.elements[0].contourFaces.size(), 1u);
+}
+
+TEST(Recognition, DoubleSidedAndRotationStable) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), roundedBox(10, 10, 12, 30, 30, 10, 4));
+    part = cut(part, roundedBox(50, 20, -1, 30, 40, 7, 3));  // -Z pocket, floor at z = 6
+    RecogniseOptions autoDirs;
+    const DomainTree t = recognise(validatedSolid(part, "test"), autoDirs);
+    ASSERT_EQ(t.elements.size(), 2u);
+    ASSERT_EQ(t.setups.size(), 2u);
+    for (auto& e : t.elements) {
+        const Vec3 d = t.setups[static_cast<std::size_t>(e.setup)].direction;
+        if (d[2] > 0.5) EXPECT_NEAR(e.level, 12, 1e-6);
+        else EXPECT_NEAR(e.level, -6, 1e-6);
+        EXPECT_EQ(e.type, ElementType::ClosedPocket);
+    }
+    // Rotated part: the same elements, with the same depths.
+    gp_Trsf rot;
+    rot.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 3)), 0.7);
+    const DomainTree r = recognise(validatedSolid(part.Moved(TopLoc_Location(rot)), "test"), autoDirs);
+    ASSERT_EQ(r.elements.size(), 2u);
+    std::vector<double> a{t.elements[0].depth, t.elements[1].depth}, b{r.elements[0].depth, r.elements[1].depth};
+    std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+    EXPECT_NEAR(a[0], b[0], 1e-5);
+    EXPECT_NEAR(a[1], b[1], 1e-5);
+}
+
+TEST(BadInput, NotAPartFile) {
+    EXPECT_THROW(loadPart(tmpFile("aeronc_not_step.txt", "hello world\n")), Error);
+    EXPECT_THROW(loadPart(tmpFile("aeronc_empty.step", "")), Error);
+    EXPECT_THROW(loadPart("/nonexistent/part.step"), Error);
+    try {
+        loadPart(tmpFile("aeronc_empty2.step", ""));
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("empty"), std::string::npos);
+    }
+}
+
+TEST(BadInput, OpenShellAndSeveralSolids) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(10, 10, 10).Shape();
+    TopoDS_Shape shell;
+    for (TopExp_Explorer e(box, TopAbs_SHELL); e.More(); e.Next()) shell = e.Current();
+    BRepBuilderAPI_Sewing sew;
+    int n = 0;
+    for (TopExp_Explorer e(box, TopAbs_FACE); e.More() && n < 5; e.Next(), ++n) sew.Add(e.Current());
+    sew.Perform();
+    EXPECT_THROW(validatedSolid(sew.SewedShape(), "open"), Error);
+    TopoDS_Compound two;
+    BRep_Builder b;
+    b.MakeCompound(two);
+    b.Add(two, box);
+    b.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(20, 0, 0), 5, 5, 5).Shape());
+    try {
+        validatedSolid(two, "two");
+        FAIL() << "two solids accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("2 solids"), std::string::npos);
+    }
+    EXPECT_THROW(partFromBrepText("not brep"), Error);
+}
+
+TEST(BadInput, NoFaceNormalToDirection) {
+    const TopoDS_Shape part = validatedSolid(BRepPrimAPI_MakeBox(10, 10, 10).Shape(), "box");
+    try {
+        recognise(part, along({{1, 1, 0}}));
+        FAIL() << "accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("no planar face normal"), std::string::npos);
+    }
+}
