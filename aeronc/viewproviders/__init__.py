@@ -1,0 +1,41 @@
+"""GUI side of AeroNC's document objects. Import only when FreeCAD.GuiUp."""
+from aeronc.objects.base import proxy_type
+
+
+def attach(obj, restoring=False):
+    """Give obj the view provider of its AeroNC type (no-op if it already has one).
+    restoring: called while the document is being opened."""
+    vobj = getattr(obj, "ViewObject", None)
+    if vobj is None or getattr(vobj, "Proxy", None) is not None:
+        return
+    from aeronc.objects import DOMAIN_ELEMENT, MACHINING_FEATURES, SETUP_DIRECTION
+    t = proxy_type(obj)
+    if t == MACHINING_FEATURES:
+        from aeronc.viewproviders.view_machining_features import ViewMachiningFeatures as cls
+    elif t == SETUP_DIRECTION:
+        from aeronc.viewproviders.view_setup_direction import ViewSetupDirection as cls
+    elif t == DOMAIN_ELEMENT:
+        from aeronc.viewproviders.view_domain_element import ViewDomainElement as cls
+    else:
+        return
+    cls(vobj)
+    if restoring:
+        # The object has no view state: the document was made under freecadcmd. Its objects
+        # come in hidden; show the tree and colour the part once the document is open (the
+        # part's view provider resets its colours when it gets its shape during opening).
+        vobj.Visibility = True
+        if t == MACHINING_FEATURES and obj.Result:
+            from PySide import QtCore
+            name, doc = obj.Name, obj.Document
+            QtCore.QTimer.singleShot(0, lambda: _colour_later(doc, name))
+    elif t == MACHINING_FEATURES and obj.Result and vobj.Visibility:
+        vobj.Proxy.colour_source(obj)
+
+
+def _colour_later(doc, name):
+    try:
+        obj = doc.getObject(name)
+    except Exception:  # document closed meanwhile
+        return
+    if obj is not None and getattr(obj.ViewObject, "Proxy", None) is not None:
+        obj.ViewObject.Proxy.colour_source(obj)

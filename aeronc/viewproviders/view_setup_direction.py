@@ -1,0 +1,5 @@
+from aeronc.viewproviders.view_base import BaseView
+
+
+class ViewSetupDirection(BaseView):
+    ICON = "SetupDirection"

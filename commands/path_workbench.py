@@ -1,0 +1,60 @@
+"""Puts AeroNC's commands into FreeCAD 0.20's Path workbench (0.20 has no
+WorkbenchManipulator): an "AeroNC" menu in Path's menu bar, an "AeroNC" toolbar, and the
+context menu of the 3-D view and tree when a solid is selected.
+
+Path's workbench object is set up lazily on its first activation, so the menu and toolbar
+are added when the main window reports that Path has been activated, and the workbench is
+then reloaded to show them. The context menu is extended by wrapping the workbench
+object's ContextMenu, which FreeCAD looks up on the object each time it builds a menu.
+"""
+import FreeCAD
+import FreeCADGui
+
+PATH_WORKBENCH = "PathWorkbench"
+MENU = "AeroNC"
+TOOLBAR = "AeroNC"
+
+
+def install():
+    """Register the commands and hook into the Path workbench (called from InitGui)."""
+    from aeronc import commands
+    commands.register()
+    FreeCADGui.getMainWindow().workbenchActivated.connect(_on_workbench_activated)
+
+
+def _on_workbench_activated(name):
+    if name != PATH_WORKBENCH:
+        return
+    try:
+        wb = FreeCADGui.getWorkbench(PATH_WORKBENCH)
+        if extend(wb):
+            wb.reloadActive()
+    except Exception as e:
+        FreeCAD.Console.PrintError("AeroNC: could not extend the Path workbench: {}\n".format(e))
+
+
+def extend(wb):
+    """Add AeroNC's menu, toolbar and context menu to workbench wb; True if anything was
+    added (it is idempotent)."""
+    from aeronc.commands import COMMANDS
+    changed = False
+    if TOOLBAR not in wb.listToolbars():
+        wb.appendToolbar(TOOLBAR, COMMANDS)
+        changed = True
+    if MENU not in wb.listMenus():
+        wb.appendMenu(MENU, COMMANDS)
+        changed = True
+    if not getattr(wb, "_aeronc_context_menu", False):
+        original = wb.ContextMenu
+
+        def context_menu(recipient):
+            try:
+                original(recipient)  # Path's own items (its errors still reach FreeCAD)
+            finally:
+                from aeronc.commands.recognise_features import selected_solid
+                if selected_solid() is not None:
+                    wb.appendContextMenu("", ["Separator"] + COMMANDS)
+
+        wb.ContextMenu = context_menu
+        wb._aeronc_context_menu = True
+    return changed

@@ -1,0 +1,1 @@
+"""Task panels of AeroNC (installed as aeronc.panels). GUI only."""
