@@ -19,6 +19,9 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace aeronc::recognition {
@@ -113,6 +116,7 @@ public:
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
         claimed_.assign(static_cast<std::size_t>(faces_.size()), false);
+        consumed_.assign(static_cast<std::size_t>(faces_.size()), false);
     }
 
     DomainTree run() {
@@ -143,6 +147,7 @@ private:
     FaceCatalogue faces_;
     DomainTree tree_;
     std::vector<bool> claimed_;
+    std::vector<bool> consumed_;  // faces whose direction was already tried
     double progressBase_ = 0, progressSpan_ = 1;
 
     double angTol() const { return opt_.angularTolerance; }
@@ -175,7 +180,7 @@ private:
                 faces_.heightRange(i, w, s.lo, s.hi);
             } else {
                 Bnd_Box b;
-                BRepBndLib::AddOptimal(f.face.Moved(loc), b, false, false);
+                BRepBndLib::Add(f.face.Moved(loc), b, false);
                 double x0, y0, x1, y1;
                 b.Get(x0, y0, s.lo, x1, y1, s.hi);
             }
@@ -205,7 +210,7 @@ private:
             std::vector<std::pair<double, Vec3>> cands;
             for (int i = 0; i < faces_.size(); ++i) {
                 const FaceInfo& f = faces_[i];
-                if (claimed_[static_cast<std::size_t>(i)]) continue;
+                if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
                 if (f.kind == SurfaceKind::Plane) cands.push_back({0.0, f.normal});
                 if (f.kind == SurfaceKind::Cylinder && f.concave) {
                     cands.push_back({0.0, f.axisDir});
@@ -229,6 +234,8 @@ private:
             }
             if (bestScore <= 0) break;
             tried.push_back(best);
+            // Faces that called for this direction do not call for another one.
+            score(best, true);
             progressBase_ = std::min(0.9, 0.45 * round);
             progressSpan_ = round == 0 ? 0.45 : 0.1;
             runSetup(best);
@@ -237,10 +244,11 @@ private:
     }
 
     // Unclaimed floor area seen from d plus unclaimed concave cylinder area along d.
-    double score(const Vec3& d) const {
+    double score(const Vec3& d, bool consume = false) {
         double s = 0;
         for (int i = 0; i < faces_.size(); ++i) {
-            if (claimed_[static_cast<std::size_t>(i)]) continue;
+            if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
+            const double before = s;
             const FaceInfo& f = faces_[i];
             if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= 1 - angTol()) {
                 double lo, hi;
@@ -255,9 +263,9 @@ private:
                     }
                 }
             } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, d)) >= 1 - angTol()) {
-                // Only from the side where the hole opens: the solid is absent just beyond its top.
                 s += 0.5 * faces_.area(i);
             }
+            if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;
         }
         return s;
     }
@@ -316,12 +324,16 @@ private:
         }
 
         std::vector<Internal> made;
+        const auto t0 = std::chrono::steady_clock::now();
         for (std::size_t li = 0; li < uniq.size(); ++li) {
             progress(double(li) / uniq.size(), "slicing " + setup.name);
             const double h = uniq[li].first;
             const double hn = li + 1 < uniq.size() ? uniq[li + 1].first : h1;
             sliceLevel(frame, fs, h, hn, h0, h1, blo, bhi, li == 0, setup.id, made);
         }
+        if (std::getenv("AERONC_TRACE"))
+            std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(), uniq.size(),
+                         made.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         progress(1.0, "linking " + setup.name);
         link(made);
         finish(made, frame, fs, h0);
@@ -400,8 +412,12 @@ private:
             const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
             if (f.lo < z && f.hi > z) cands.push_back(i);
         }
+        const auto ts = std::chrono::steady_clock::now();
         std::vector<SectionLoop> loops =
             sliceLoops(faces_, cands, frame, z, opt_.chordTolerance, linTol(), tree_.warnings);
+        if (std::getenv("AERONC_TRACE"))
+            std::fprintf(stderr, "  level %.3f: %zu faces cut, %zu loops, %.3f s\n", h, cands.size(), loops.size(),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
 
         // Closed void regions: odd-depth loops with their even-depth children as islands.
         std::vector<Candidate> regions;
@@ -488,23 +504,35 @@ private:
                 if (L.depth != 0) continue;
                 std::set<std::size_t> touched;
                 std::vector<std::pair<std::size_t, int>> hits;
+                // One probe per run of segments on the same face, at the run's longest segment.
                 const std::size_t n = L.pts.size();
-                for (std::size_t i = 0; i < n; ++i) {
-                    const P2& a = L.pts[i];
-                    const P2& b = L.pts[(i + 1) % n];
+                std::size_t runs = 0;
+                for (std::size_t i = 0; i < n;) {
+                    std::size_t j = i, best = i;
+                    double bestLen = -1;
+                    for (; j < n && L.faces[j] == L.faces[i]; ++j) {
+                        const P2& a = L.pts[j];
+                        const P2& b = L.pts[(j + 1) % n];
+                        const double len = std::hypot(b.x - a.x, b.y - a.y);
+                        if (len > bestLen) bestLen = len, best = j;
+                    }
+                    ++runs;
+                    const P2& a = L.pts[best];
+                    const P2& b = L.pts[(best + 1) % n];
                     const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+                    i = j;
                     if (len <= 0) continue;
                     const P2 probe{0.5 * (a.x + b.x) + dy / len * off, 0.5 * (a.y + b.y) - dx / len * off};
                     for (std::size_t r = closedCount; r < regions.size(); ++r)
                         if (regions[r].region.contains(probe)) {
                             touched.insert(r);
-                            hits.push_back({r, L.faces[i]});
+                            hits.push_back({r, L.faces[best]});
                             break;
                         }
                 }
                 bool touchesBlank = L.lo.x <= blo.x + 1e-6 || L.lo.y <= blo.y + 1e-6 || L.hi.x >= bhi.x - 1e-6 ||
                                     L.hi.y >= bhi.y - 1e-6;
-                if (touched.size() == 1 && !touchesBlank && hits.size() == n) {
+                if (touched.size() == 1 && !touchesBlank && hits.size() == runs) {
                     Candidate& c = regions[*touched.begin()];
                     std::vector<int> fl;
                     for (int f : L.faces) pushUnique(fl, f);

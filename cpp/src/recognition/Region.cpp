@@ -1,5 +1,6 @@
 #include "Region.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace aeronc::recognition {
@@ -17,7 +18,7 @@ Shape shapeOf(const Paths& ps) {
 }
 // Round joins: the erosion is then the true distance from the boundary.
 Paths erode(const Paths& ps, double r) {
-    ClipperOffset off(2.0, 0.005 * kClipperScale);
+    ClipperOffset off(2.0, std::clamp(r * 4e-3, 0.002, 0.1) * kClipperScale);
     off.AddPaths(ps, jtRound, etClosedPolygon);
     Paths out;
     off.Execute(out, -r * kClipperScale);
@@ -56,11 +57,19 @@ Paths Region::paths() const {
     return ps;
 }
 
+// Tessellated arcs carry many short edges whose offsets all intersect; thinning them
+// first keeps the erosions fast without moving the boundary by more than 5 µm.
+static Paths thinned(const Paths& ps) {
+    Paths out;
+    CleanPolygons(ps, out, 0.005 * kClipperScale);
+    return out;
+}
+
 double Region::minWidth() const {
-    const Paths ps = paths();
+    const Paths ps = thinned(paths());
     const Shape ref{1, static_cast<int>(holes.size())};
     double good = 0, bad = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y) + 1e-3;
-    for (int it = 0; it < 16; ++it) {
+    for (int it = 0; it < 14; ++it) {
         const double r = 0.5 * (good + bad);
         const Paths e = erode(ps, r);
         if (!e.empty() && shapeOf(e) == ref) good = r;
@@ -70,7 +79,20 @@ double Region::minWidth() const {
 }
 
 P2 Region::interiorPoint() const {
-    const Paths ps = paths();
+    // The centroid serves when it is inside (holes, most pockets).
+    {
+        double a = 0, cx = 0, cy = 0;
+        for (std::size_t i = 0; i < outer.size(); ++i) {
+            const P2 p = toP2(outer[i]), q = toP2(outer[(i + 1) % outer.size()]);
+            const double c = p.x * q.y - q.x * p.y;
+            a += c, cx += (p.x + q.x) * c, cy += (p.y + q.y) * c;
+        }
+        if (std::fabs(a) > 0) {
+            const P2 c{cx / (3 * a), cy / (3 * a)};
+            if (contains(c)) return c;
+        }
+    }
+    const Paths ps = thinned(paths());
     // Erode as far as possible while something remains; any vertex of that is deep inside.
     double good = 0, bad = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y) + 1e-3;
     Paths best = ps;
