@@ -8,6 +8,7 @@
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <Standard_Failure.hxx>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -20,7 +21,7 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
+    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
     "  aeronc panel OUT.step [--pockets NXxNY] [--truth TRUTH.json] [--plain]\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
@@ -60,6 +61,8 @@ void writeText(const std::string& path, const std::string& text) {
 int recogniseCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("recognise needs a part file");
     std::string part = argv[2], jsonOut;
+    bool faceNames = false;
+    std::vector<std::string> names;
     aeronc::recognition::RecogniseOptions opt;
     for (int i = 3; i < argc; ++i) {
         const std::string a = argv[i];
@@ -71,11 +74,17 @@ int recogniseCmd(int argc, char** argv) {
         else if (a == "--directions") opt.directions = parseDirections(next());
         else if (a == "--allowance") opt.blankAllowance = std::stod(next());
         else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
+        else if (a == "--face-names") faceNames = true;
         else throw aeronc::inputError("unknown option " + a);
     }
-    const TopoDS_Shape solid = aeronc::loadPart(part);
+    const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
     const auto tree = aeronc::recognition::recognise(solid, opt);
-    const std::string text = aeronc::recognition::toJson(tree);
+    std::string text = aeronc::recognition::toJson(tree);
+    if (faceNames) {  // the STEP name of each face, for comparing with labelled data
+        auto j = nlohmann::json::parse(text);
+        j["faceNames"] = names;
+        text = j.dump(1);
+    }
     if (jsonOut.empty()) std::cout << text << "\n";
     else writeText(jsonOut, text);
     std::map<std::string, int> counts;

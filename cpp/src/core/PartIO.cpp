@@ -13,6 +13,15 @@
 #include <TopoDS.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 
+#include <StepRepr_RepresentationItem.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+#include <BRep_Tool.hxx>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -104,6 +113,29 @@ TopoDS_Shape loadPart(const std::string& path) {
         throw inputError(path + ": reading failed: " + f.GetMessageString());
     }
     return validatedSolid(shape, path);
+}
+
+TopoDS_Shape loadStepWithFaceNames(const std::string& path, std::vector<std::string>& faceNames) {
+    if (head(path, 4096).find("ISO-10303-21") == std::string::npos) throw inputError(path + ": not a STEP file");
+    STEPControl_Reader reader;
+    TopoDS_Shape solid;
+    try {
+        if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw inputError(path + ": the STEP file could not be parsed");
+        if (reader.TransferRoots() == 0) throw inputError(path + ": the STEP file holds no shape");
+        solid = validatedSolid(reader.OneShape(), path);
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(solid, TopAbs_FACE, faces);
+        const Handle(XSControl_TransferReader) tr = reader.WS()->TransferReader();
+        faceNames.assign(static_cast<std::size_t>(faces.Extent()), std::string());
+        for (int i = 1; i <= faces.Extent(); ++i) {
+            Handle(StepRepr_RepresentationItem) item =
+                Handle(StepRepr_RepresentationItem)::DownCast(tr->EntityFromShapeResult(faces(i), 1));
+            if (!item.IsNull() && !item->Name().IsNull()) faceNames[static_cast<std::size_t>(i - 1)] = item->Name()->ToCString();
+        }
+    } catch (const Standard_Failure& f) {
+        throw inputError(path + ": reading failed: " + f.GetMessageString());
+    }
+    return solid;
 }
 
 namespace {

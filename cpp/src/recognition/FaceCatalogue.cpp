@@ -12,6 +12,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Cone.hxx>
+#include <gp_Lin.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
 #include <gp_Torus.hxx>
@@ -24,8 +25,9 @@ namespace {
 Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 }  // namespace
 
-FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
+FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) : solid_(solid) {
     TopExp::MapShapes(solid, TopAbs_FACE, map_);
+    interior_.assign(static_cast<std::size_t>(map_.Extent()), {false, Vec3{0, 0, 0}});
     faces_.resize(static_cast<std::size_t>(map_.Extent()));
     for (int i = 0; i < map_.Extent(); ++i) {
         FaceInfo& f = faces_[static_cast<std::size_t>(i)];
@@ -124,8 +126,27 @@ void FaceCatalogue::heightRange(int i, const Vec3& d, double& lo, double& hi) co
     }
 }
 
+bool FaceCatalogue::reachable(int i, const Vec3& d) const {
+    if (!rays_) {
+        rays_ = std::make_unique<IntCurvesFace_ShapeIntersector>();
+        rays_->Load(solid_, 1e-7);
+    }
+    const Vec3 p = interiorPoint(i);
+    const double eps = 1e-4;  // start just off the face so it does not see itself
+    const gp_Lin ray(gp_Pnt(p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]), gp_Dir(d[0], d[1], d[2]));
+    rays_->PerformNearest(ray, 0, 1e100);
+    return !rays_->IsDone() || rays_->NbPnt() == 0;
+}
+
 Vec3 FaceCatalogue::interiorPoint(int i) const {
-    const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
+    auto& cached = interior_[static_cast<std::size_t>(i)];
+    if (cached.first) return cached.second;
+    cached.first = true;
+    cached.second = searchInterior(faces_[static_cast<std::size_t>(i)].face);
+    return cached.second;
+}
+
+Vec3 FaceCatalogue::searchInterior(const TopoDS_Face& face) {
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
     BRepTopAdaptor_FClass2d cls(face, 1e-9);

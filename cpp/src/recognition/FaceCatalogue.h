@@ -6,6 +6,8 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <memory>
 #include <vector>
 
 namespace aeronc::recognition {
@@ -36,12 +38,19 @@ public:
     double area(int i) const;
     // Height range of face i along unit direction d (conservative: from its box).
     void heightRange(int i, const Vec3& d, double& lo, double& hi) const;
-    // A point strictly inside face i (world coordinates).
+    // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
+    // Whether the ray from inside face i along d leaves the part without meeting it:
+    // the tool can reach the face from d.
+    bool reachable(int i, const Vec3& d) const;
 
 private:
+    static Vec3 searchInterior(const TopoDS_Face& face);
     std::vector<FaceInfo> faces_;
     TopTools_IndexedMapOfShape map_;
+    TopoDS_Shape solid_;
+    mutable std::vector<std::pair<bool, Vec3>> interior_;
+    mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;
 };
 
 }  // namespace aeronc::recognition

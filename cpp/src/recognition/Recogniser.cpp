@@ -148,6 +148,7 @@ private:
     DomainTree tree_;
     std::vector<bool> claimed_;
     std::vector<bool> consumed_;  // faces whose direction was already tried
+    std::vector<Vec3> axes_;      // principal axes, on first use
     double progressBase_ = 0, progressSpan_ = 1;
 
     double angTol() const { return opt_.angularTolerance; }
@@ -240,7 +241,49 @@ private:
             progressSpan_ = round == 0 ? 0.45 : 0.1;
             runSetup(best);
         }
-        if (tree_.setups.empty()) throw inputError("the part has no face normal to any setup direction: nothing to machine");
+        // The part's principal axes too: through openings have no floor to call for them.
+        for (const Vec3& d : principalAxes()) {
+            bool seen = false;
+            for (const Vec3& t : tried) seen |= dot(d, t) >= 1 - angTol();
+            if (seen) continue;
+            tried.push_back(d);
+            runSetup(d);
+        }
+        // Setups that found nothing are noise in the tree.
+        std::vector<SetupDirection> keep;
+        for (SetupDirection& s : tree_.setups)
+            if (!s.elements.empty()) {
+                for (int e : s.elements) renumberSetup(e, static_cast<int>(keep.size()));
+                s.id = static_cast<int>(keep.size());
+                keep.push_back(std::move(s));
+            }
+        tree_.setups = std::move(keep);
+        if (tree_.setups.empty()) throw inputError("no machining feature found in any setup direction");
+    }
+
+    void renumberSetup(int e, int setup) {
+        DomainElement& el = tree_.elements[static_cast<std::size_t>(e)];
+        el.setup = setup;
+        for (int c : el.children) renumberSetup(c, setup);
+    }
+
+    // ± the normal of the largest planar face, of the largest one square to it, and their cross product.
+    std::vector<Vec3> principalAxes() const {
+        int a = -1, b = -1;
+        for (int i = 0; i < faces_.size(); ++i)
+            if (faces_[i].kind == SurfaceKind::Plane && (a < 0 || faces_.area(i) > faces_.area(a))) a = i;
+        if (a < 0) return {};
+        const Vec3 n1 = faces_[a].normal;
+        for (int i = 0; i < faces_.size(); ++i)
+            if (faces_[i].kind == SurfaceKind::Plane && std::fabs(dot(faces_[i].normal, n1)) <= angTol() &&
+                (b < 0 || faces_.area(i) > faces_.area(b)))
+                b = i;
+        std::vector<Vec3> out{n1, {-n1[0], -n1[1], -n1[2]}};
+        if (b < 0) return out;
+        const Vec3 n2 = faces_[b].normal;
+        const Vec3 n3{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2], n1[0] * n2[1] - n1[1] * n2[0]};
+        for (const Vec3& n : {n2, n3}) out.push_back(n), out.push_back({-n[0], -n[1], -n[2]});
+        return out;
     }
 
     // Unclaimed floor area seen from d plus unclaimed concave cylinder area along d.
@@ -250,7 +293,7 @@ private:
             if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
             const double before = s;
             const FaceInfo& f = faces_[i];
-            if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= 1 - angTol()) {
+            if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= 1 - angTol() && faces_.reachable(i, d)) {
                 double lo, hi;
                 faces_.heightRange(i, d, lo, hi);
                 const double h = 0.5 * (lo + hi);
@@ -271,7 +314,15 @@ private:
     }
 
     void runSetup(const Vec3& d) {
-        SetupFrame frame(d);
+        // Align the frame with a principal axis square to d, so the blank box fits the part.
+        const Vec3* ref = nullptr;
+        if (axes_.empty()) axes_ = principalAxes();
+        for (const Vec3& a : axes_)
+            if (std::fabs(dot(a, d)) <= angTol()) {
+                ref = &a;
+                break;
+            }
+        SetupFrame frame(d, ref);
         const std::vector<FaceInSetup> fs = classify(frame);
 
         // Part extent in the setup frame.
@@ -306,7 +357,7 @@ private:
         std::vector<bool> holeBottom{false};
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-            if (s.att == Attitude::Up) levels.push_back(s.h), holeBottom.push_back(false);
+            if (s.att == Attitude::Up && faces_.reachable(i, frame.w)) levels.push_back(s.h), holeBottom.push_back(false);
             else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave)
                 levels.push_back(s.lo), holeBottom.push_back(true);
         }
@@ -394,7 +445,7 @@ private:
         double excess = 0;
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-            if (s.att != Attitude::Up || std::fabs(s.h - h) > tol) continue;
+            if (s.att != Attitude::Up || std::fabs(s.h - h) > tol || !faces_.reachable(i, frame.w)) continue;
             ups.push_back(i);
             for (int n : faces_[i].neighbours) {
                 const FaceInSetup& ns = fs[static_cast<std::size_t>(n)];

@@ -13,7 +13,9 @@ struct P2 {
 // and h = p . w is the height along the tool axis.
 struct SetupFrame {
     Vec3 u, v, w;
-    explicit SetupFrame(const Vec3& d) {
+    // ref: a direction square to d to align u with (the part's principal axis), so the
+    // blank box in this frame fits a rotated part; ignored when not square to d.
+    explicit SetupFrame(const Vec3& d, const Vec3* ref = nullptr) {
         const double n = norm(d);
         w = {d[0] / n, d[1] / n, d[2] / n};
         // Seed with the world axis least aligned with w, so the frame is exact for ±X/Y/Z.
@@ -22,6 +24,7 @@ struct SetupFrame {
         if (std::fabs(w[0]) <= std::fabs(w[1]) && std::fabs(w[0]) <= std::fabs(w[2])) a = {1, 0, 0};
         else if (std::fabs(w[1]) <= std::fabs(w[2])) a = {0, 1, 0};
         else a = {0, 0, 1};
+        if (ref && std::fabs(dot(*ref, w)) < 1e-2 * norm(*ref)) a = *ref;
         const double k = dot(a, w);
         u = {a[0] - k * w[0], a[1] - k * w[1], a[2] - k * w[2]};
         const double un = norm(u);

@@ -1,6 +1,7 @@
 #pragma once
 #include <TopoDS_Shape.hxx>
 #include <string>
+#include <vector>
 
 namespace aeronc {
 
@@ -9,6 +10,10 @@ namespace aeronc {
 // missing or empty file, an unknown format, no solid or several, an open shell, and
 // a B-rep that fails OCCT's checker.
 TopoDS_Shape loadPart(const std::string& path);
+
+// loadPart for a STEP file, plus the STEP entity name of every face of the solid in
+// FaceN order ("" where the file gives none). Labelled data sets key faces by these names.
+TopoDS_Shape loadStepWithFaceNames(const std::string& path, std::vector<std::string>& faceNames);
 
 // Same checks for a shape passed as BREP text (FreeCAD's Shape.exportBrepToString()).
 TopoDS_Shape partFromBrepText(const std::string& text);

@@ -1,0 +1,100 @@
+#!/usr/bin/env python3
+"""Per-face agreement of AeroNC recognition with the MFCAD labels.
+
+Usage: mfcad_eval.py AERONC_CLI MFCAD_DIR [--out report.md]
+
+Each part is recognised with `aeronc recognise PART --face-names`; faces are matched to
+labels through their STEP entity names (see shared/data/README.md). Two mappings:
+
+* binary: a face any element machines (floor, wall, fillet, chamfer, hole wall ...)
+  is "feature"; top/stock faces are "stock" (label 15);
+* class: the face's element type against the label family
+    closed_pocket          <- rectangular/triangular/6sides_pocket (11, 12, 13)
+    open_pocket            <- through/blind slots and steps (0, 1, 5-10)
+    opening, hole          <- passages (2, 3, 4)
+    chamfer (face role)    <- chamfer (14)
+    stock                  <- stock (15)
+"""
+import glob
+import json
+import os
+import pickle
+import subprocess
+import sys
+import tempfile
+
+FAMILY = {11: "closed", 12: "closed", 13: "closed", 2: "through", 3: "through", 4: "through", 14: "chamfer",
+          15: "stock"}
+for k in (0, 1, 5, 6, 7, 8, 9, 10):
+    FAMILY[k] = "open"
+TYPE_FAMILY = {"closed_pocket": "closed", "open_pocket": "open", "opening": "through", "hole": "through"}
+STOCK_ROLES = {"top", "stock", "unclaimed"}
+
+
+def predicted(result):
+    out = []
+    for i, role in enumerate(result["faceRoles"]):
+        if role == "chamfer" and result["faceElement"][i] < 0:
+            out.append("chamfer")
+        elif role in STOCK_ROLES or result["faceElement"][i] < 0:
+            out.append("stock")
+        elif role == "chamfer":
+            out.append("chamfer")
+        else:
+            out.append(TYPE_FAMILY[result["elements"][result["faceElement"][i]]["type"]])
+    return out
+
+
+def main():
+    cli, folder = sys.argv[1], sys.argv[2]
+    out = sys.argv[sys.argv.index("--out") + 1] if "--out" in sys.argv else None
+    parts = sorted(glob.glob(os.path.join(folder, "*.step")))
+    tot = okb = okc = 0
+    fam_tot, fam_ok, rows, confusion = {}, {}, [], {}
+    for step in parts:
+        truth = pickle.load(open(step[:-5] + ".face_truth", "rb"))
+        with tempfile.NamedTemporaryFile(suffix=".json") as tmp:
+            r = subprocess.run([cli, "recognise", step, "--face-names", "--json", tmp.name], capture_output=True,
+                               text=True)
+            if r.returncode != 0:
+                rows.append((os.path.basename(step), 0, 0, 0, r.stderr.strip()))
+                tot += len(truth)
+                continue
+            res = json.load(open(tmp.name))
+        pred = predicted(res)
+        n = b = c = 0
+        for i, name in enumerate(res["faceNames"]):
+            lab = truth[int(name)]
+            fam = FAMILY[lab]
+            p = pred[i]
+            n += 1
+            b += (fam == "stock") == (p == "stock")
+            c += fam == p
+            fam_tot[fam] = fam_tot.get(fam, 0) + 1
+            fam_ok[fam] = fam_ok.get(fam, 0) + (fam == p)
+            confusion[(fam, p)] = confusion.get((fam, p), 0) + 1
+        tot, okb, okc = tot + n, okb + b, okc + c
+        rows.append((os.path.basename(step), n, b, c, ""))
+    lines = ["| part | faces | binary agree | class agree |", "|---|---|---|---|"]
+    for name, n, b, c, err in rows:
+        lines.append(f"| {name} | {n} | {b} | {c} |" if not err else f"| {name} | error | {err} | |")
+    lines.append(f"| **all {len(parts)} parts** | {tot} | {okb / tot:.1%} | {okc / tot:.1%} |")
+    lines.append("")
+    lines.append("| label family | faces | recognised as that family |")
+    lines.append("|---|---|---|")
+    for fam in sorted(fam_tot):
+        lines.append(f"| {fam} | {fam_tot[fam]} | {fam_ok[fam] / fam_tot[fam]:.1%} |")
+    lines.append("")
+    lines.append("Confusion (label family -> predicted): " + ", ".join(
+        f"{a}->{b}: {v}" for (a, b), v in sorted(confusion.items()) if a != b))
+    text = "\n".join(lines)
+    print(text)
+    print(f"binary agreement {okb / tot:.4f}, class agreement {okc / tot:.4f}")
+    if out:
+        with open(out + ".part", "w") as f:
+            f.write(text + "\n")
+        os.replace(out + ".part", out)
+
+
+if __name__ == "__main__":
+    main()
