@@ -9,25 +9,7 @@ import FreeCADGui
 
 from aeronc.viewproviders.view_base import BaseView
 
-# (r, g, b) per face role of the core's result.
-ROLE_COLOURS = {
-    "floor": (0.20, 0.40, 0.95),             # blue
-    "counterbore_floor": (0.10, 0.25, 0.70),
-    "wall": (0.20, 0.75, 0.25),              # green
-    "island_wall": (0.95, 0.85, 0.15),       # yellow
-    "hole_wall": (0.90, 0.15, 0.15),         # red
-    "countersink": (0.95, 0.45, 0.45),
-    "floor_fillet": (0.15, 0.85, 0.90),      # cyan
-    "corner_fillet": (0.55, 0.95, 0.95),
-    "chamfer": (0.90, 0.20, 0.85),           # magenta
-    "open_bevel": (0.95, 0.55, 0.10),        # orange
-    "closed_bevel": (0.70, 0.35, 0.05),
-    "rib_top": (0.75, 0.80, 0.90),
-    "top": (0.80, 0.80, 0.80),
-    "stock": (0.55, 0.55, 0.55),             # grey
-    "unclaimed": (0.10, 0.10, 0.10),         # near black: stands out as "not recognised"
-}
-UNKNOWN_ROLE = (1.0, 1.0, 1.0)
+from aeronc.feature_colours import ROLE_COLOURS, UNKNOWN_ROLE
 
 
 def role_colours(roles):

@@ -1,0 +1,75 @@
+"""The main job on the embedded sample part, headless:
+
+    AERONC_OUT=out/demo freecadcmd <Mod>/AeroNC/aeronc/demo.py
+
+Opens resources/samples/sample_panel.step (an integral panel with pockets on both faces,
+islands, openings, lightening and bolt holes, a flange and a joggle), recognises its machining
+features into a FreeCAD document, and writes to AERONC_OUT:
+  sample_panel.FCStd            the document with its Machining Features tree
+  recognition.json              the machining-domain tree and the role of every face
+  sample_panel_features.png     the part coloured by feature type
+AERONC_PART=<file.step> runs the same on another part. Exit code 0 on success.
+"""
+import json
+import os
+import sys
+import time
+import traceback
+
+
+def main():
+    import FreeCAD
+    import Part
+
+    import aeronc
+    from aeronc import picture
+    from aeronc.objects import create_machining_features
+    from aeronc.objects.machining_features import result_of
+
+    part_path = os.environ.get("AERONC_PART") or os.path.join(aeronc.PACKAGE_DIR, "resources", "samples",
+                                                               "sample_panel.step")
+    out = os.path.abspath(os.environ.get("AERONC_OUT", "out/demo"))
+    os.makedirs(out, exist_ok=True)
+    name = os.path.splitext(os.path.basename(part_path))[0]
+
+    doc = FreeCAD.newDocument(name)
+    shape = Part.read(part_path)
+    part = doc.addObject("Part::Feature", "Part")
+    part.Label = name
+    part.Shape = shape
+    doc.recompute()
+
+    t0 = time.perf_counter()
+    group = create_machining_features(doc, part)
+    seconds = time.perf_counter() - t0
+    result = result_of(group)
+
+    doc.saveAs(os.path.join(out, name + ".FCStd"))
+    tmp = os.path.join(out, "recognition.json.part")
+    with open(tmp, "w") as f:
+        json.dump(result, f, indent=1)
+    os.replace(tmp, os.path.join(out, "recognition.json"))
+    png = picture.render(part.Shape, result, os.path.join(out, name + "_features.png"),
+                         title="{}: machining features".format(name))
+
+    print("{}: {} faces recognised in {:.2f} s".format(part_path, result["faceCount"], seconds))
+    for setup in result["setups"]:
+        mine = [e for e in result["elements"] if e["setup"] == setup["id"]]
+        counts = {}
+        for e in mine:
+            counts[e["type"]] = counts.get(e["type"], 0) + 1
+        print("  setup {}: {} element(s): {}".format(
+            setup["name"], len(mine), ", ".join("{} {}".format(v, k) for k, v in sorted(counts.items()))))
+    for w in result.get("warnings", []):
+        print("  warning:", w)
+    print("wrote {}, {}, {}".format(os.path.join(out, name + ".FCStd"), os.path.join(out, "recognition.json"), png))
+
+
+try:
+    main()
+    code = 0
+except Exception:
+    traceback.print_exc()
+    code = 1
+sys.stdout.flush()
+os._exit(code)

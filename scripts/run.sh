@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# AeroNC developer entry point. Each command first installs the Debian packages (once),
+# configures a Release build in build/ (once), builds what changed and installs the addon
+# into build/stage/AeroNC.
+#
+#   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
+#   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
+#                            Xvfb, FreeCAD's own Path suite with the addon installed
+#   scripts/run.sh bench     the benchmarks (figures on stdout)
+#   scripts/run.sh install   install the addon into your FreeCAD Mod folder
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+BUILD=$ROOT/build
+STAGE=$BUILD/stage
+
+bash scripts/setup-debian.sh
+if [ ! -f "$BUILD/build.ninja" ]; then
+  cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$BUILD" -j "$(nproc)"
+cmake --install "$BUILD" --prefix "$STAGE" > /dev/null
+
+# FreeCAD run with a private HOME so nothing touches the user's settings.
+fc_home() {
+  local home=$BUILD/home-$1
+  mkdir -p "$home/.local/share/FreeCAD/Mod" "$home/.config/FreeCAD"
+  ln -sfn "$STAGE/AeroNC" "$home/.local/share/FreeCAD/Mod/AeroNC"
+  echo "$home"
+}
+
+case "${1:-}" in
+  demo)
+    out=$ROOT/out/demo
+    mkdir -p "$out"
+    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/demo.py"
+    ;;
+  test)
+    ctest --test-dir "$BUILD" --output-on-failure
+    ;;
+  bench)
+    cmake --build "$BUILD" --target bench
+    ;;
+  install)
+    cmake --install "$BUILD"
+    ;;
+  *)
+    echo "usage: scripts/run.sh demo|test|bench|install" >&2
+    exit 2
+    ;;
+esac
