@@ -358,7 +358,8 @@ private:
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
             if (s.att == Attitude::Up && faces_.reachable(i, frame.w)) levels.push_back(s.h), holeBottom.push_back(false);
-            else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave)
+            else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
+                     onDrillPoint(i, s.lo, fs))
                 levels.push_back(s.lo), holeBottom.push_back(true);
         }
         std::vector<std::pair<double, bool>> lv;
@@ -374,13 +375,16 @@ private:
             }
         }
 
+        std::vector<double> critical;  // heights where faces start or end
+        for (const FaceInSetup& f : fs) critical.push_back(f.lo), critical.push_back(f.hi);
+        std::sort(critical.begin(), critical.end());
         std::vector<Internal> made;
         const auto t0 = std::chrono::steady_clock::now();
         for (std::size_t li = 0; li < uniq.size(); ++li) {
             progress(double(li) / uniq.size(), "slicing " + setup.name);
             const double h = uniq[li].first;
             const double hn = li + 1 < uniq.size() ? uniq[li + 1].first : h1;
-            sliceLevel(frame, fs, h, hn, h0, h1, blo, bhi, li == 0, setup.id, made);
+            sliceLevel(frame, fs, critical, h, hn, h0, h1, blo, bhi, li == 0, setup.id, made);
         }
         if (std::getenv("AERONC_TRACE"))
             std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(), uniq.size(),
@@ -437,8 +441,9 @@ private:
         tree_.setups.push_back(std::move(setup));
     }
 
-    void sliceLevel(const SetupFrame& frame, const std::vector<FaceInSetup>& fs, double h, double hn, double h0,
-                    double h1, const P2& blo, const P2& bhi, bool bottom, int setupId, std::vector<Internal>& made) {
+    void sliceLevel(const SetupFrame& frame, const std::vector<FaceInSetup>& fs, const std::vector<double>& critical,
+                    double h, double hn, double h0, double h1, const P2& blo, const P2& bhi, bool bottom, int setupId,
+                    std::vector<Internal>& made) {
         const double tol = 10 * linTol();
         // Slice above floor fillets and bottom chamfers so the loops run on the walls.
         std::vector<int> ups;
@@ -453,10 +458,17 @@ private:
                     excess = std::max(excess, ns.hi - h);
             }
         }
-        const double gap = hn - h;
-        const double eps = std::min(0.05, 0.25 * gap);
-        const double s = std::min(std::max(excess + eps, eps), 0.5 * gap);
-        const double z = h + s;
+        // Mid-way to the next height where any face starts or ends: a plane through an
+        // edge would give degenerate sections.
+        const double base = h + excess;
+        double next = h1;
+        for (double c : critical) {
+            if (c > base + tol) {
+                next = c;
+                break;
+            }
+        }
+        const double z = 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
 
         std::vector<int> cands;
         for (int i = 0; i < faces_.size(); ++i) {
@@ -637,9 +649,11 @@ private:
             } else if (bottom) {
                 type = ElementType::Opening;
             } else {
-                // A hole with a non-flat bottom (drill point) ends here if all its walls do.
-                bool ends = !c.contourFaces.empty();
-                for (int f : c.contourFaces) ends &= std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol;
+                // A drilled hole ends here on a drill point (cone or sphere under its walls).
+                bool ends = !c.contourFaces.empty() && c.islandFaces.empty();
+                for (int f : c.contourFaces)
+                    ends = ends && faces_[f].kind == SurfaceKind::Cylinder && faces_[f].concave &&
+                           std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol && onDrillPoint(f, h, fs);
                 if (!ends) continue;
                 type = ElementType::ClosedPocket;
             }
@@ -693,6 +707,15 @@ private:
             in.sample = c.sample;
             made.push_back(std::move(in));
         }
+    }
+
+    // Whether face f's bottom at height h rests on a drill point (cone or sphere below it).
+    bool onDrillPoint(int f, double h, const std::vector<FaceInSetup>& fs) const {
+        for (int n : faces_[f].neighbours)
+            if ((faces_[n].kind == SurfaceKind::Cone || faces_[n].kind == SurfaceKind::Sphere) &&
+                fs[static_cast<std::size_t>(n)].hi <= h + 10 * linTol())
+                return true;
+        return false;
     }
 
     // Smallest concave corner radius along the loops; 0 where two walls meet sharp.

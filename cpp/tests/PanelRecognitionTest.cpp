@@ -1,0 +1,120 @@
+// Recognition of generated integral panels against the truth the generator knows.
+#include <aeronc/core/PartIO.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+using namespace aeronc;
+using namespace aeronc::recognition;
+using namespace aeronc::testparts;
+
+namespace {
+
+bool inside(const Polyline& loop, double x, double y) {
+    bool in = false;
+    for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) {
+        const double xi = loop[i][0], yi = loop[i][1], xj = loop[j][0], yj = loop[j][1];
+        if ((yi > y) != (yj > y) && x < (xj - xi) * (y - yi) / (yj - yi) + xi) in = !in;
+    }
+    return in;
+}
+
+// The recognised element a truth element stands for: same setup and level, region holding its point.
+int match(const DomainTree& t, const TruthElement& want) {
+    const double sign = want.setup == 0 ? 1 : -1;
+    int found = -1;
+    for (const DomainElement& e : t.elements) {
+        if (std::fabs(t.setups[static_cast<std::size_t>(e.setup)].direction[2] - sign) > 1e-9) continue;
+        if (std::fabs(e.level - want.level) > 1e-3) continue;
+        if (!inside(e.contour, want.point[0], want.point[1])) continue;
+        bool inIsland = false;
+        for (const Polyline& isl : e.islands) inIsland |= inside(isl, want.point[0], want.point[1]);
+        if (inIsland) continue;
+        EXPECT_EQ(found, -1) << "two elements hold truth element " << want.id << " (" << want.note << ")";
+        found = e.id;
+    }
+    return found;
+}
+
+void expectMatchesTruth(const PanelSpec& spec) {
+    const Panel panel = makePanel(spec);
+    RecogniseOptions o;
+    o.directions = {{0, 0, 1}, {0, 0, -1}};
+    const DomainTree t = recognise(validatedSolid(panel.shape, "panel"), o);
+    ASSERT_EQ(t.setups.size(), 2u);
+    std::map<int, int> recognisedOf;  // truth id -> element id
+    for (const TruthElement& want : panel.truth) {
+        const int id = match(t, want);
+        ASSERT_GE(id, 0) << "not found: truth element " << want.id << " " << want.type << " (" << want.note
+                         << ") at level " << want.level;
+        recognisedOf[want.id] = id;
+    }
+    for (const TruthElement& want : panel.truth) {
+        const DomainElement& e = t.elements[static_cast<std::size_t>(recognisedOf[want.id])];
+        SCOPED_TRACE("truth element " + std::to_string(want.id) + " (" + want.note + ")");
+        EXPECT_EQ(toString(e.type), want.type);
+        EXPECT_EQ(e.parent, want.parent < 0 ? -1 : recognisedOf[want.parent]);
+        EXPECT_EQ(static_cast<int>(e.islandFaces.size()), want.islands);
+        if (want.type == "hole") {
+            ASSERT_TRUE(e.hole.has_value());
+            EXPECT_NEAR(e.hole->diameter, want.diameter, 1e-6);
+            EXPECT_EQ(e.hole->through, want.through);
+            EXPECT_NEAR(e.hole->counterboreDiameter, want.counterboreDiameter, 1e-6);
+            EXPECT_NEAR(e.hole->countersinkDiameter, want.countersinkDiameter, 1e-3);
+        }
+        if (want.note == "joggle") {
+            bool attached = false;
+            for (const AttachedFeature& a : t.elements[static_cast<std::size_t>(e.parent)].attached)
+                attached |= a.kind == "joggle" && a.element == e.id;
+            EXPECT_TRUE(attached) << "joggle not attached to its pocket";
+        }
+    }
+    // Nothing found that is not in the truth.
+    EXPECT_EQ(t.elements.size(), panel.truth.size());
+    // Pocket walls and floors carry their roles; every face has one role.
+    std::map<std::string, int> roles;
+    for (FaceRole r : t.faceRoles) roles[toString(r)]++;
+    EXPECT_EQ(roles["unclaimed"], 0);
+    EXPECT_GT(roles["floor"], 0);
+    EXPECT_GT(roles["wall"], 0);
+    EXPECT_GT(roles["hole_wall"], 0);
+}
+
+}  // namespace
+
+TEST(PanelRecognition, DefaultPanelMatchesTruth) { expectMatchesTruth(PanelSpec{}); }
+
+TEST(PanelRecognition, LargerPanelWithFloorFilletsMatchesTruth) {
+    PanelSpec s;
+    s.pocketsX = 6;
+    s.pocketsY = 4;
+    s.floorFillet = 3;
+    expectMatchesTruth(s);
+}
+
+TEST(PanelRecognition, FloorFilletRadiusAndCornerRadius) {
+    PanelSpec s;
+    s.pocketsX = 2, s.pocketsY = 1;
+    s.floorFillet = 2.5;
+    s.cornerRadius = 7;
+    s.lowerRibs = s.islands = s.openings = s.lighteningHoles = s.boltHoles = s.joggles = s.flange = false;
+    s.bottomPockets = false;
+    const Panel panel = makePanel(s);
+    RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const DomainTree t = recognise(validatedSolid(panel.shape, "panel"), o);
+    ASSERT_EQ(t.elements.size(), 2u);
+    for (const DomainElement& e : t.elements) {
+        EXPECT_NEAR(e.floorFilletRadius, 2.5, 1e-6);
+        EXPECT_NEAR(e.minCornerRadius, 7, 1e-6);
+        EXPECT_NEAR(e.depth, s.thickness - s.webZ, 1e-6);
+        EXPECT_FALSE(e.filletFaces.empty());
+        // The drive contour runs on the walls, not on the fillet: its width is the pocket's.
+        EXPECT_NEAR(e.minWidth, s.pitch - s.ribThickness, 0.05);
+    }
+}
