@@ -1,4 +1,5 @@
 // Tests of the integral-panel test-part generator (geometry and ground truth only).
+#include <aeronc/core/Error.h>
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <BRepCheck_Analyzer.hxx>
@@ -14,7 +15,6 @@
 
 #include <cmath>
 #include <map>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -332,15 +332,19 @@ TEST(PanelGenerator, OptionsTurnFeaturesOff) {
 }
 
 TEST(PanelGenerator, RejectsImpossibleSpecs) {
-    PanelSpec s;
-    s.floorFillet = s.cornerRadius;  // floor fillet must be smaller than the corner radius
-    EXPECT_THROW(makePanel(s), std::invalid_argument);
-    PanelSpec t;
-    t.bottomDepth = t.webZ - 0.5;  // web under the pockets would be 0.5 mm
-    EXPECT_THROW(makePanel(t), std::invalid_argument);
-    PanelSpec u;
-    u.pocketsX = 0;
-    EXPECT_THROW(makePanel(u), std::invalid_argument);
+    std::vector<PanelSpec> bad(4);
+    bad[0].floorFillet = bad[0].cornerRadius;  // floor fillet must be under the corner radius
+    bad[1].bottomDepth = bad[1].webZ - 0.5;    // web under the pockets would be 0.5 mm
+    bad[2].pocketsX = 0;
+    bad[3].webZ = bad[3].thickness;
+    for (const auto& s : bad) {
+        try {
+            makePanel(s);
+            ADD_FAILURE() << "no error";
+        } catch (const aeronc::Error& e) {
+            EXPECT_EQ(e.kind(), aeronc::Error::Kind::Input) << e.what();
+        }
+    }
 }
 
 TEST(PanelGenerator, TruthJsonRoundTrips) {

@@ -25,9 +25,36 @@
 //     n mod 3: 0 plain, 1 counterbored, 2 countersunk.
 //   * Flange: the frame strip y in [0, border / 2] lowered by 6 mm over the whole length.
 //
+// Feature sizes: island 0.30 pw x 0.25 pw (corner radius 3, top 2 mm under the panel top,
+// floor fillet round its foot); opening 0.40 pw x 0.30 pw (corner radius 3); lightening hole
+// diameter min(20, 0.4 pw); joggle the middle third of the pocket along x, full width in y,
+// 1.5 mm deep; -Z pocket inset 4 mm from the pocket outline; rib notch 3 mm into each pocket
+// and 0.5 pw - max(cornerRadius, floorFillet) wide; bolt holes 6.6, counterbore 11 x 6 deep,
+// countersink 12 at 90 degrees, placed for the largest clearance to edges and pockets.
+//
+// Truth (notes in quotes). Setup 0 is +Z, setup 1 is -Z (levels along -Z are -z).
+//   "pocket"        closed_pocket, level webZ, islands 1 in island cells, parent -1 or its
+//                   "lowered rib" element.
+//   "lowered rib"   closed_pocket, level thickness - lowerRibBy, the region above the lowered
+//                   rib joining both pockets; children: the two pockets; islands: those of
+//                   the two pockets (island tops stand above the rib top).
+//   "joggle"        closed_pocket, level webZ - 1.5, parent: its pocket.
+//   "opening"       opening, through, level 0, parent: its pocket.
+//   "lightening hole"  hole, through, level 0, diameter, parent: its pocket.
+//   "bottom pocket" closed_pocket, setup 1, level -bottomDepth, parent -1.
+//   "flange"        open_pocket, level thickness - 6, parent -1.
+//   "bolt hole"     hole, through, level 0, diameter 6.6, parent -1; under a counterbore its
+//                   parent is the "counterbore" and counterboreDiameter is 11.
+//   "counterbore"   hole, level thickness - 6, diameter 11, parent -1, one child.
+//   "countersunk bolt hole"  hole, through, level 0, diameter 6.6, countersinkDiameter 12.
+// Points lie 0.5 mm above the floor along the setup direction (through elements: 0.5 mm
+// above z = 0), clear of islands, holes and fillets.
+//
 // All cutting tools are built once as prototypes (filleted boxes, locally fused with their
 // floor features), placed by location and cut from the plate in a single Boolean operation.
 #include <aeronc/testparts/PanelGenerator.h>
+
+#include <aeronc/core/Error.h>
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
@@ -60,7 +87,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,7 +114,10 @@ constexpr double kToolOver = 1;              // tools stick out of the panel by 
 
 enum CellKind { Plain = 0, Island = 1, Opening = 2, Lightening = 3, Joggle = 4 };
 
-void fail(const std::string& what) { throw std::invalid_argument("makePanel: " + what); }
+// A spec the generator cannot build.
+[[noreturn]] void fail(const std::string& what) { throw inputError("makePanel: " + what); }
+// An OCCT operation that did not give the expected shape.
+[[noreturn]] void broken(const std::string& what) { throw geometryError("makePanel: " + what); }
 
 TopoDS_Shape box(double x0, double y0, double z0, double x1, double y1, double z1) {
     return BRepPrimAPI_MakeBox(gp_Pnt(x0, y0, z0), gp_Pnt(x1, y1, z1)).Shape();
@@ -115,7 +144,7 @@ TopoDS_Shape roundedBox(double x0, double y0, double z0, double x1, double y1, d
         if (isVertical(e)) mk.Add(r, e);
     }
     mk.Build();
-    if (!mk.IsDone()) fail("corner fillet failed");
+    if (!mk.IsDone()) broken("corner fillet failed");
     return mk.Shape();
 }
 
@@ -135,28 +164,37 @@ TopoDS_Shape filletBottom(const TopoDS_Shape& s, double z, double r) {
             ++added;
         }
     }
-    if (added == 0) fail("floor fillet: no floor face");
+    if (added == 0) broken("floor fillet: no floor face");
     mk.Build();
-    if (!mk.IsDone()) fail("floor fillet failed");
+    if (!mk.IsDone()) broken("floor fillet failed");
     return mk.Shape();
+}
+
+// The only solid of a Boolean result (which comes as a compound).
+TopoDS_Shape singleSolid(const TopoDS_Shape& s, const char* what) {
+    TopoDS_Shape solid;
+    int n = 0;
+    for (TopExp_Explorer ex(s, TopAbs_SOLID); ex.More(); ex.Next(), ++n) solid = ex.Current();
+    if (n != 1) broken(std::string(what) + " gave " + std::to_string(n) + " solids");
+    return solid;
 }
 
 TopoDS_Shape fuse(const TopoDS_Shape& a, const TopoDS_Shape& b, bool unify = false) {
     BRepAlgoAPI_Fuse op(a, b);
-    if (!op.IsDone() || op.HasErrors()) fail("local fuse failed");
-    TopoDS_Shape r = op.Shape();
+    if (!op.IsDone() || op.HasErrors()) broken("local fuse failed");
+    TopoDS_Shape r = singleSolid(op.Shape(), "local fuse");
     if (unify) {
         ShapeUpgrade_UnifySameDomain u(r, true, true, false);
         u.Build();
-        r = u.Shape();
+        r = singleSolid(u.Shape(), "unify");
     }
     return r;
 }
 
 TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b) {
     BRepAlgoAPI_Cut op(a, b);
-    if (!op.IsDone() || op.HasErrors()) fail("local cut failed");
-    return op.Shape();
+    if (!op.IsDone() || op.HasErrors()) broken("local cut failed");
+    return singleSolid(op.Shape(), "local cut");
 }
 
 // Solid of revolution about the Z axis of the closed profile (r, z) given in order; the
@@ -168,7 +206,7 @@ TopoDS_Shape revolveProfile(const std::vector<std::pair<double, double>>& rz) {
     TopoDS_Face face = BRepBuilderAPI_MakeFace(poly.Wire(), true).Face();
     BRepPrimAPI_MakeRevol rev(face, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 2 * kPi);
     rev.Build();
-    if (!rev.IsDone()) fail("revolution failed");
+    if (!rev.IsDone()) broken("revolution failed");
     return rev.Shape();
 }
 
@@ -470,16 +508,8 @@ Panel makePanel(const PanelSpec& s) {
     op.SetNonDestructive(true);  // the placed tools share their prototypes' sub-shapes
     op.SetToFillHistory(false);
     op.Build();
-    if (!op.IsDone() || op.HasErrors()) fail("panel cut failed");
-    TopoDS_Shape result = op.Shape();
-
-    TopoDS_Shape solid;
-    int solids = 0;
-    for (TopExp_Explorer ex(result, TopAbs_SOLID); ex.More(); ex.Next()) {
-        solid = ex.Current();
-        ++solids;
-    }
-    panel.shape = (solids == 1) ? solid : result;
+    if (!op.IsDone() || op.HasErrors()) broken("panel cut failed");
+    panel.shape = singleSolid(op.Shape(), "panel cut");
     return panel;
 }
 
