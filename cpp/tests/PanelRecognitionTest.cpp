@@ -4,6 +4,9 @@
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <gtest/gtest.h>
+#include <gp_Trsf.hxx>
+
+#include <cstdlib>
 
 #include <cmath>
 #include <map>
@@ -117,4 +120,30 @@ TEST(PanelRecognition, FloorFilletRadiusAndCornerRadius) {
         // The drive contour runs on the walls, not on the fillet: its width is the pocket's.
         EXPECT_NEAR(e.minWidth, s.pitch - s.ribThickness, 0.05);
     }
+}
+
+// The fast section of faces along the axis must agree with OCCT's general section,
+// also on a part moved away from the origin (faces with locations).
+TEST(PanelRecognition, FastSectionAgreesWithGeneralSection) {
+    PanelSpec s;
+    s.floorFillet = 2;
+    const Panel panel = makePanel(s);
+    gp_Trsf move;
+    move.SetTranslation(gp_Vec(125, -40, 7.5));
+    const TopoDS_Shape part = validatedSolid(panel.shape.Moved(TopLoc_Location(move)), "panel");
+    RecogniseOptions o;
+    o.directions = {{0, 0, 1}, {0, 0, -1}};
+    const DomainTree fast = recognise(part, o);
+    setenv("AERONC_GENERAL_SECTION", "1", 1);
+    const DomainTree general = recognise(part, o);
+    unsetenv("AERONC_GENERAL_SECTION");
+    ASSERT_EQ(fast.elements.size(), panel.truth.size());
+    ASSERT_EQ(fast.elements.size(), general.elements.size());
+    for (std::size_t k = 0; k < fast.elements.size(); ++k) {
+        EXPECT_EQ(fast.elements[k].type, general.elements[k].type);
+        EXPECT_NEAR(fast.elements[k].level, general.elements[k].level, 1e-9);
+        EXPECT_NEAR(fast.elements[k].area, general.elements[k].area, 0.05);
+        EXPECT_EQ(fast.elements[k].contourFaces.size(), general.elements[k].contourFaces.size());
+    }
+    EXPECT_EQ(fast.faceRoles, general.faceRoles);
 }

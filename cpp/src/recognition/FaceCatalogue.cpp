@@ -18,6 +18,7 @@
 #include <gp_Torus.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace aeronc::recognition {
@@ -126,16 +127,20 @@ void FaceCatalogue::heightRange(int i, const Vec3& d, double& lo, double& hi) co
     }
 }
 
-bool FaceCatalogue::reachable(int i, const Vec3& d) const {
+double FaceCatalogue::firstHit(const Vec3& p, const Vec3& d) const {
     if (!rays_) {
         rays_ = std::make_unique<IntCurvesFace_ShapeIntersector>();
         rays_->Load(solid_, 1e-7);
     }
+    rays_->PerformNearest(gp_Lin(gp_Pnt(p[0], p[1], p[2]), gp_Dir(d[0], d[1], d[2])), 0, 1e100);
+    if (!rays_->IsDone() || rays_->NbPnt() == 0) return std::numeric_limits<double>::infinity();
+    return rays_->WParameter(1);
+}
+
+bool FaceCatalogue::reachable(int i, const Vec3& d) const {
     const Vec3 p = interiorPoint(i);
     const double eps = 1e-4;  // start just off the face so it does not see itself
-    const gp_Lin ray(gp_Pnt(p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]), gp_Dir(d[0], d[1], d[2]));
-    rays_->PerformNearest(ray, 0, 1e100);
-    return !rays_->IsDone() || rays_->NbPnt() == 0;
+    return std::isinf(firstHit({p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]}, d));
 }
 
 Vec3 FaceCatalogue::interiorPoint(int i) const {

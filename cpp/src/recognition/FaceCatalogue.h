@@ -43,6 +43,8 @@ public:
     // Whether the ray from inside face i along d leaves the part without meeting it:
     // the tool can reach the face from d.
     bool reachable(int i, const Vec3& d) const;
+    // Distance from p along unit d to the first face of the part; infinity if none.
+    double firstHit(const Vec3& p, const Vec3& d) const;
 
 private:
     static Vec3 searchInterior(const TopoDS_Face& face);

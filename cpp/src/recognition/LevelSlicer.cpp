@@ -1,4 +1,5 @@
 #include "LevelSlicer.h"
+#include "VerticalSection.h"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
@@ -10,6 +11,7 @@
 #include <gp_Pln.hxx>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <unordered_map>
 
@@ -65,49 +67,64 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
                                     std::vector<std::string>& warnings) {
     std::vector<SectionLoop> loops;
     if (candidates.empty()) return loops;
+    // Faces along the axis are cut in their own parameter space; the rest by OCCT.
+    std::vector<Piece> pieces;
     TopoDS_Compound comp;
     BRep_Builder bb;
     bb.MakeCompound(comp);
-    for (int i : candidates) bb.Add(comp, faces[i].face);
-
-    const Vec3 o = frame.world({0, 0}, h);
-    const gp_Pln plane(gp_Pnt(o[0], o[1], o[2]), gp_Dir(frame.w[0], frame.w[1], frame.w[2]));
-    BRepAlgoAPI_Section sec(comp, plane, false);
-    sec.ComputePCurveOn1(false);
-    sec.Approximation(false);
-    sec.SetRunParallel(false);
-    sec.Build();
-    if (!sec.IsDone()) {
-        warnings.push_back("section at height " + std::to_string(h) + " failed");
-        return loops;
-    }
-
-    std::vector<Piece> pieces;
-    for (TopExp_Explorer ex(sec.Shape(), TopAbs_EDGE); ex.More(); ex.Next()) {
-        const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
-        TopoDS_Shape anc;
-        Piece piece;
-        if (sec.HasAncestorFaceOn1(e, anc)) piece.face = faces.indexOf(anc);
-        BRepAdaptor_Curve c(e);
-        const double t0 = c.FirstParameter(), t1 = c.LastParameter();
-        if (c.GetType() == GeomAbs_Line) {
-            gp_Pnt a = c.Value(t0), b = c.Value(t1);
-            piece.pts = {frame.project({a.X(), a.Y(), a.Z()}), frame.project({b.X(), b.Y(), b.Z()})};
+    int general = 0;
+    for (int i : candidates) {
+        std::vector<std::vector<P2>> polys;
+        if (!std::getenv("AERONC_GENERAL_SECTION") && sectionVerticalFace(faces[i].face, frame, h, chordTol, polys)) {
+            for (auto& pl : polys) {
+                Piece piece;
+                piece.face = i;
+                piece.pts = std::move(pl);
+                if (piece.pts.size() >= 2) pieces.push_back(std::move(piece));
+            }
         } else {
-            GCPnts_QuasiUniformDeflection d(c, chordTol, t0, t1);
-            if (d.IsDone() && d.NbPoints() >= 2) {
-                for (int k = 1; k <= d.NbPoints(); ++k) {
-                    const gp_Pnt p = d.Value(k);
-                    piece.pts.push_back(frame.project({p.X(), p.Y(), p.Z()}));
-                }
+            bb.Add(comp, faces[i].face);
+            ++general;
+        }
+    }
+    if (general > 0) {
+        const Vec3 o = frame.world({0, 0}, h);
+        const gp_Pln plane(gp_Pnt(o[0], o[1], o[2]), gp_Dir(frame.w[0], frame.w[1], frame.w[2]));
+        BRepAlgoAPI_Section sec(comp, plane, false);
+        sec.ComputePCurveOn1(false);
+        sec.Approximation(false);
+        sec.SetRunParallel(false);
+        sec.Build();
+        if (!sec.IsDone()) {
+            warnings.push_back("section at height " + std::to_string(h) + " failed");
+            return loops;
+        }
+        for (TopExp_Explorer ex(sec.Shape(), TopAbs_EDGE); ex.More(); ex.Next()) {
+            const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
+            TopoDS_Shape anc;
+            Piece piece;
+            if (sec.HasAncestorFaceOn1(e, anc)) piece.face = faces.indexOf(anc);
+            BRepAdaptor_Curve c(e);
+            const double t0 = c.FirstParameter(), t1 = c.LastParameter();
+            if (c.GetType() == GeomAbs_Line) {
+                gp_Pnt a = c.Value(t0), b = c.Value(t1);
+                piece.pts = {frame.project({a.X(), a.Y(), a.Z()}), frame.project({b.X(), b.Y(), b.Z()})};
             } else {
-                for (int k = 0; k <= 16; ++k) {
-                    const gp_Pnt p = c.Value(t0 + (t1 - t0) * k / 16.0);
-                    piece.pts.push_back(frame.project({p.X(), p.Y(), p.Z()}));
+                GCPnts_QuasiUniformDeflection d(c, chordTol, t0, t1);
+                if (d.IsDone() && d.NbPoints() >= 2) {
+                    for (int k = 1; k <= d.NbPoints(); ++k) {
+                        const gp_Pnt p = d.Value(k);
+                        piece.pts.push_back(frame.project({p.X(), p.Y(), p.Z()}));
+                    }
+                } else {
+                    for (int k = 0; k <= 16; ++k) {
+                        const gp_Pnt p = c.Value(t0 + (t1 - t0) * k / 16.0);
+                        piece.pts.push_back(frame.project({p.X(), p.Y(), p.Z()}));
+                    }
                 }
             }
+            if (piece.pts.size() >= 2) pieces.push_back(std::move(piece));
         }
-        if (piece.pts.size() >= 2) pieces.push_back(std::move(piece));
     }
 
     const double tol = std::max(10 * linTol, 1e-7);

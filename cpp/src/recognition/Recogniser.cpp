@@ -352,12 +352,13 @@ private:
         setup.direction = frame.w;
         setup.name = dirName(frame.w);
 
-        // Slicing levels: floors, hole bottoms, and the part bottom (for openings).
+        // Slicing levels: floors, hole bottoms, and the faces openings leave the part by.
         std::vector<double> levels{h0};
         std::vector<bool> holeBottom{false};
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
             if (s.att == Attitude::Up && faces_.reachable(i, frame.w)) levels.push_back(s.h), holeBottom.push_back(false);
+            else if (s.att == Attitude::Down) levels.push_back(s.h), holeBottom.push_back(false);  // openings exit here
             else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
                      onDrillPoint(i, s.lo, fs))
                 levels.push_back(s.lo), holeBottom.push_back(true);
@@ -391,7 +392,7 @@ private:
                          made.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         progress(1.0, "linking " + setup.name);
         link(made);
-        finish(made, frame, fs, h0);
+        finish(made, frame, fs);
 
         // Claim: an element whose floors (or, without floor, all walls) belong to an
         // earlier setup is that setup's already.
@@ -646,7 +647,7 @@ private:
                 type = c.exterior ? ElementType::OpenPocket : ElementType::ClosedPocket;
             } else if (c.exterior) {
                 continue;
-            } else if (bottom) {
+            } else if (bottom || leavesPart(c, fs, frame, h, z)) {
                 type = ElementType::Opening;
             } else {
                 // A drilled hole ends here on a drill point (cone or sphere under its walls).
@@ -660,18 +661,14 @@ private:
             if (!c.hasSample) c.sample = c.region.interiorPoint();
             if (type == ElementType::Opening) {
                 // Capped from above (a cavity seen from the wrong side): not machinable here.
-                double top = h;
-                for (int f : c.contourFaces) top = std::max(top, fs[static_cast<std::size_t>(f)].hi);
-                const Vec3 q = frame.world(c.sample, top + std::max(0.1, 100 * linTol()));
-                BRepClass3d_SolidClassifier cls(solid_, gp_Pnt(q[0], q[1], q[2]), linTol());
-                if (top < h1 - tol && cls.State() == TopAbs_IN) continue;
+                if (!std::isinf(faces_.firstHit(frame.world(c.sample, z), frame.w))) continue;
             }
             Internal in;
             DomainElement& e = in.el;
             e.id = static_cast<int>(made.size());
             e.setup = setupId;
             e.type = type;
-            e.level = type == ElementType::Opening ? h0 : h;
+            e.level = h;
             e.area = c.region.area();
             e.minWidth = c.region.minWidth();
             for (int f : c.contourFaces) e.contourFaces.push_back(f + 1);
@@ -707,6 +704,18 @@ private:
             in.sample = c.sample;
             made.push_back(std::move(in));
         }
+    }
+
+    // An opening: the region's walls all end at this level and below it lies no material.
+    bool leavesPart(Candidate& c, const std::vector<FaceInSetup>& fs, const SetupFrame& frame, double h, double z) const {
+        if (c.contourFaces.empty()) return false;
+        for (int f : c.contourFaces)
+            if (std::fabs(fs[static_cast<std::size_t>(f)].lo - h) > 10 * linTol()) return false;
+        if (!c.hasSample) c.sample = c.region.interiorPoint(), c.hasSample = true;
+        // Looking down from the slice: material right under the level means a floor, not an exit.
+        const Vec3 q = frame.world(c.sample, z);
+        const double margin = std::max(0.1, 100 * linTol());
+        return faces_.firstHit(q, {-frame.w[0], -frame.w[1], -frame.w[2]}) > z - h + margin;
     }
 
     // Whether face f's bottom at height h rests on a drill point (cone or sphere below it).
@@ -780,7 +789,7 @@ private:
     }
 
     // Attached features, holes, counterbores and countersinks, joggles.
-    void finish(std::vector<Internal>& made, const SetupFrame& frame, const std::vector<FaceInSetup>& fs, double h0) {
+    void finish(std::vector<Internal>& made, const SetupFrame& frame, const std::vector<FaceInSetup>& fs) {
         const double tol = 10 * linTol();
         for (Internal& in : made) {
             DomainElement& e = in.el;
@@ -851,7 +860,7 @@ private:
                     if (s.att == Attitude::Up && std::fabs(s.h - e.top) <= tol) pushUnique(e.topFaces, n + 1);
                 }
             // Hole: one circular contour of concave vertical cylinders, no islands.
-            holeCheck(in, frame, fs, h0);
+            holeCheck(in, frame, fs);
         }
         for (Internal& in : made) {
             DomainElement& e = in.el;
@@ -904,7 +913,7 @@ private:
         }
     }
 
-    void holeCheck(Internal& in, const SetupFrame& frame, const std::vector<FaceInSetup>& fs, double h0) {
+    void holeCheck(Internal& in, const SetupFrame& frame, const std::vector<FaceInSetup>& fs) {
         DomainElement& e = in.el;
         if (!e.islandFaces.empty() || e.contourFaces.empty() || e.type == ElementType::OpenPocket) return;
         const FaceInfo& f0 = faces_[e.contourFaces[0] - 1];
@@ -951,7 +960,6 @@ private:
             }
         e.type = ElementType::Hole;
         e.hole = hi;
-        (void)h0;
     }
 
     void assignRoles() {

@@ -1,0 +1,93 @@
+#include "VerticalSection.h"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2dAPI_InterCurveCurve.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aeronc::recognition {
+namespace {
+double dotp(const gp_XYZ& a, const Vec3& b) { return a.X() * b[0] + a.Y() * b[1] + a.Z() * b[2]; }
+}  // namespace
+
+bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, double h, double chordTol,
+                         std::vector<std::vector<P2>>& out) {
+    BRepAdaptor_Surface s(face, false);  // already carries the face's location
+    // The section in (u, v): the points where a*u + b*v = c.
+    double a = 0, b = 0, c = 0;
+    bool cylinder = false;
+    double radius = 0;
+    if (s.GetType() == GeomAbs_Plane) {
+        const gp_Ax3 pos = s.Plane().Position();
+        a = dotp(pos.XDirection().XYZ(), frame.w);
+        b = dotp(pos.YDirection().XYZ(), frame.w);
+        c = h - dotp(pos.Location().XYZ(), frame.w);
+        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1e-9) return false;
+    } else if (s.GetType() == GeomAbs_Cylinder) {
+        const gp_Ax3 pos = s.Cylinder().Position();
+        const double k = dotp(pos.Direction().XYZ(), frame.w);
+        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
+        b = k;
+        c = h - dotp(pos.Location().XYZ(), frame.w);
+        cylinder = true;
+        radius = s.Cylinder().Radius();
+    } else {
+        return false;
+    }
+    const double n = std::hypot(a, b);
+    if (n < 1e-12) return false;
+    // Line through the point closest to the origin, along (-b, a): parameter t along it.
+    const gp_Pnt2d p0(a * c / (n * n), b * c / (n * n));
+    const gp_Dir2d dir(-b / n, a / n);
+    Handle(Geom2d_Line) line = new Geom2d_Line(p0, dir);
+
+    std::vector<double> ts;
+    for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+        const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
+        double f, l;
+        Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(e, face, f, l);
+        if (pc.IsNull()) return false;
+        Handle(Geom2d_TrimmedCurve) tc = new Geom2d_TrimmedCurve(pc, f, l);
+        Geom2dAPI_InterCurveCurve inter(tc, line, 1e-9);
+        for (int k = 1; k <= inter.NbPoints(); ++k) {
+            const gp_Pnt2d q = inter.Point(k);
+            ts.push_back((q.X() - p0.X()) * dir.X() + (q.Y() - p0.Y()) * dir.Y());
+        }
+        if (inter.NbSegments() > 0) return false;  // an edge along the section: let OCCT decide
+    }
+    std::sort(ts.begin(), ts.end());
+    ts.erase(std::unique(ts.begin(), ts.end(), [](double x, double y) { return std::fabs(x - y) < 1e-9; }), ts.end());
+    if (ts.size() < 2) return true;  // the plane misses the face
+
+    BRepTopAdaptor_FClass2d cls(face, 1e-9);
+    auto uv = [&](double t) { return gp_Pnt2d(p0.X() + t * dir.X(), p0.Y() + t * dir.Y()); };
+    auto at = [&](double t) {
+        const gp_Pnt p = s.Value(uv(t).X(), uv(t).Y());
+        return frame.project({p.X(), p.Y(), p.Z()});
+    };
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+        const double t0 = ts[k], t1 = ts[k + 1];
+        if (cls.Perform(uv(0.5 * (t0 + t1))) != TopAbs_IN) continue;
+        std::vector<P2> pts;
+        if (cylinder) {
+            // t runs along u (the angle) up to the sign of the direction.
+            const double span = std::fabs(t1 - t0) * std::fabs(dir.X());
+            const double step = radius > chordTol ? 2 * std::acos(1 - chordTol / radius) : span;
+            const int m = std::max(1, static_cast<int>(std::ceil(span / std::max(step, 1e-6))));
+            for (int i = 0; i <= m; ++i) pts.push_back(at(t0 + (t1 - t0) * i / m));
+        } else {
+            pts = {at(t0), at(t1)};
+        }
+        out.push_back(std::move(pts));
+    }
+    return true;
+}
+
+}  // namespace aeronc::recognition

@@ -1,0 +1,17 @@
+#pragma once
+// Fast section of faces that stand along the setup direction (planes containing it,
+// cylinders about it) with a plane h = const, done in the face's parameter space where
+// the section is a straight line. Other faces go through OCCT's general section.
+#include "SetupFrame.h"
+
+#include <TopoDS_Face.hxx>
+#include <vector>
+
+namespace aeronc::recognition {
+
+// Appends the section polylines of `face` at height h; false when the face's surface is
+// not one this handles (the caller then uses the general section).
+bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, double h, double chordTol,
+                         std::vector<std::vector<P2>>& out);
+
+}  // namespace aeronc::recognition
