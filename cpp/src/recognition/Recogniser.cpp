@@ -151,7 +151,9 @@ private:
     std::vector<Vec3> axes_;      // principal axes, on first use
     double progressBase_ = 0, progressSpan_ = 1;
 
-    double angTol() const { return opt_.angularTolerance; }
+    // Parallel: |cos| >= cos(tol); square: |cos| <= sin(tol).
+    double cosTol() const { return std::cos(opt_.angularTolerance); }
+    double sinTol() const { return std::sin(opt_.angularTolerance); }
     double linTol() const { return opt_.linearTolerance; }
 
     void progress(double f, const std::string& stage) {
@@ -161,7 +163,7 @@ private:
 
     bool hasNormalFace(const Vec3& d) const {
         for (int i = 0; i < faces_.size(); ++i)
-            if (faces_[i].kind == SurfaceKind::Plane && std::fabs(dot(faces_[i].normal, d)) >= 1 - angTol())
+            if (faces_[i].kind == SurfaceKind::Plane && std::fabs(dot(faces_[i].normal, d)) >= cosTol())
                 return true;
         return false;
     }
@@ -187,15 +189,12 @@ private:
             }
             if (f.kind == SurfaceKind::Plane) {
                 const double c = dot(f.normal, w);
-                if (c >= 1 - angTol()) s.att = Attitude::Up;
-                else if (c <= -1 + angTol()) s.att = Attitude::Down;
-                else if (std::fabs(c) <= angTol()) s.att = Attitude::Vertical;
+                if (c >= cosTol()) s.att = Attitude::Up;
+                else if (c <= -cosTol()) s.att = Attitude::Down;
+                else if (std::fabs(c) <= sinTol()) s.att = Attitude::Vertical;
                 else s.att = Attitude::Inclined;
-                if (s.att == Attitude::Up || s.att == Attitude::Down) {
-                    s.h = 0.5 * (s.lo + s.hi);
-                    s.lo = s.hi = s.h;
-                }
-            } else if ((f.kind == SurfaceKind::Cylinder) && std::fabs(dot(f.axisDir, w)) >= 1 - angTol()) {
+                if (s.att == Attitude::Up || s.att == Attitude::Down) s.h = 0.5 * (s.lo + s.hi);
+            } else if ((f.kind == SurfaceKind::Cylinder) && std::fabs(dot(f.axisDir, w)) >= cosTol()) {
                 s.att = Attitude::Vertical;
             } else {
                 s.att = Attitude::Curved;
@@ -222,8 +221,8 @@ private:
             std::vector<Vec3> dirs;
             for (auto& c : cands) {
                 bool seen = false;
-                for (const Vec3& d : dirs) seen |= dot(d, c.second) >= 1 - angTol();
-                for (const Vec3& d : tried) seen |= dot(d, c.second) >= 1 - angTol();
+                for (const Vec3& d : dirs) seen |= dot(d, c.second) >= cosTol();
+                for (const Vec3& d : tried) seen |= dot(d, c.second) >= cosTol();
                 if (!seen) dirs.push_back(c.second);
             }
             double bestScore = 0;
@@ -244,7 +243,7 @@ private:
         // The part's principal axes too: through openings have no floor to call for them.
         for (const Vec3& d : principalAxes()) {
             bool seen = false;
-            for (const Vec3& t : tried) seen |= dot(d, t) >= 1 - angTol();
+            for (const Vec3& t : tried) seen |= dot(d, t) >= cosTol();
             if (seen) continue;
             tried.push_back(d);
             runSetup(d);
@@ -275,7 +274,7 @@ private:
         if (a < 0) return {};
         const Vec3 n1 = faces_[a].normal;
         for (int i = 0; i < faces_.size(); ++i)
-            if (faces_[i].kind == SurfaceKind::Plane && std::fabs(dot(faces_[i].normal, n1)) <= angTol() &&
+            if (faces_[i].kind == SurfaceKind::Plane && std::fabs(dot(faces_[i].normal, n1)) <= sinTol() &&
                 (b < 0 || faces_.area(i) > faces_.area(b)))
                 b = i;
         std::vector<Vec3> out{n1, {-n1[0], -n1[1], -n1[2]}};
@@ -293,7 +292,7 @@ private:
             if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
             const double before = s;
             const FaceInfo& f = faces_[i];
-            if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= 1 - angTol() && faces_.reachable(i, d)) {
+            if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= cosTol() && faces_.reachable(i, d)) {
                 double lo, hi;
                 faces_.heightRange(i, d, lo, hi);
                 const double h = 0.5 * (lo + hi);
@@ -305,7 +304,7 @@ private:
                         break;
                     }
                 }
-            } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, d)) >= 1 - angTol()) {
+            } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, d)) >= cosTol()) {
                 s += 0.5 * faces_.area(i);
             }
             if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;
@@ -318,7 +317,7 @@ private:
         const Vec3* ref = nullptr;
         if (axes_.empty()) axes_ = principalAxes();
         for (const Vec3& a : axes_)
-            if (std::fabs(dot(a, d)) <= angTol()) {
+            if (std::fabs(dot(a, d)) <= sinTol()) {
                 ref = &a;
                 break;
             }
@@ -472,9 +471,10 @@ private:
         const double z = 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
 
         std::vector<int> cands;
+        const double margin = 0.5;  // boxes of spline faces can be tight; extra faces cost little
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
-            if (f.lo < z && f.hi > z) cands.push_back(i);
+            if (f.lo - margin < z && f.hi + margin > z) cands.push_back(i);
         }
         const auto ts = std::chrono::steady_clock::now();
         std::vector<SectionLoop> loops =
@@ -941,7 +941,7 @@ private:
             for (int n : faces_[f - 1].neighbours) {
                 const FaceInfo& cf = faces_[n];
                 const FaceInSetup& cs = fs[static_cast<std::size_t>(n)];
-                if (cf.kind != SurfaceKind::Cone || std::fabs(dot(cf.axisDir, frame.w)) < 1 - angTol()) continue;
+                if (cf.kind != SurfaceKind::Cone || std::fabs(dot(cf.axisDir, frame.w)) < cosTol()) continue;
                 if (cs.lo >= e.top - tol) {
                     const double sgn = dot(cf.axisDir, frame.w) > 0 ? 1 : -1;
                     const double href = dot(cf.axisPoint, frame.w);
@@ -1004,7 +1004,7 @@ private:
                 const FaceInfo& f = faces_[i];
                 double lo, h;
                 faces_.heightRange(i, w, lo, h);
-                const bool top = f.kind == SurfaceKind::Plane && dot(f.normal, w) >= 1 - angTol() &&
+                const bool top = f.kind == SurfaceKind::Plane && dot(f.normal, w) >= cosTol() &&
                                  std::fabs(h - hi) <= 10 * linTol();
                 tree_.faceRoles[static_cast<std::size_t>(i)] = top ? FaceRole::Top : FaceRole::Stock;
             }

@@ -9,6 +9,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include <gp_Cone.hxx>
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,7 +31,17 @@ bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, doubl
         a = dotp(pos.XDirection().XYZ(), frame.w);
         b = dotp(pos.YDirection().XYZ(), frame.w);
         c = h - dotp(pos.Location().XYZ(), frame.w);
-        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1e-9) return false;
+        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1 - 1e-9) return false;  // parallel to the slice
+    } else if (s.GetType() == GeomAbs_Cone) {
+        // P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z: height is linear in v.
+        const gp_Cone cone = s.Cone();
+        const gp_Ax3 pos = cone.Position();
+        const double k = dotp(pos.Direction().XYZ(), frame.w);
+        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
+        b = k * std::cos(cone.SemiAngle());
+        c = h - dotp(pos.Location().XYZ(), frame.w);
+        cylinder = true;
+        radius = std::fabs(cone.RefRadius() + (c / b) * std::sin(cone.SemiAngle()));
     } else if (s.GetType() == GeomAbs_Cylinder) {
         const gp_Ax3 pos = s.Cylinder().Position();
         const double k = dotp(pos.Direction().XYZ(), frame.w);

@@ -1,7 +1,7 @@
 #pragma once
-// Fast section of faces that stand along the setup direction (planes containing it,
-// cylinders about it) with a plane h = const, done in the face's parameter space where
-// the section is a straight line. Other faces go through OCCT's general section.
+// Fast section of a face with the plane h = const, done in the face's parameter space where
+// the section is a straight line: planes not parallel to the slice, cylinders and cones
+// about the setup axis. Other faces go through OCCT's general section.
 #include "SetupFrame.h"
 
 #include <TopoDS_Face.hxx>
