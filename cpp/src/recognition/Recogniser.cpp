@@ -11,6 +11,8 @@
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <Standard_Failure.hxx>
 #include <gp_Trsf.hxx>
 
@@ -116,6 +118,7 @@ public:
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
         claimed_.assign(static_cast<std::size_t>(faces_.size()), false);
+        TopExp::MapShapes(solid, TopAbs_EDGE, edges_);
         consumed_.assign(static_cast<std::size_t>(faces_.size()), false);
     }
 
@@ -149,6 +152,7 @@ private:
     std::vector<bool> claimed_;
     std::vector<bool> consumed_;  // faces whose direction was already tried
     std::vector<Vec3> axes_;      // principal axes, on first use
+    TopTools_IndexedMapOfShape edges_;
     double progressBase_ = 0, progressSpan_ = 1;
 
     // Parallel: |cos| >= cos(tol); square: |cos| <= sin(tol).
@@ -227,11 +231,15 @@ private:
             }
             double bestScore = 0;
             Vec3 best{0, 0, 0};
+            const auto ts = std::chrono::steady_clock::now();
             for (const Vec3& d : dirs) {
                 const double s = score(d);
                 // Ties resolve by the score only up to rounding, then by the first found.
                 if (s > bestScore * (1 + 1e-9) + 1e-9) bestScore = s, best = d;
             }
+            if (std::getenv("AERONC_TRACE"))
+                std::fprintf(stderr, "scored %zu directions: %.3f s\n", dirs.size(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
             if (bestScore <= 0) break;
             tried.push_back(best);
             // Faces that called for this direction do not call for another one.
@@ -328,10 +336,15 @@ private:
         gp_Trsf t;
         t.SetValues(frame.u[0], frame.u[1], frame.u[2], 0, frame.v[0], frame.v[1], frame.v[2], 0, frame.w[0],
                     frame.w[1], frame.w[2], 0);
+        // The part's extremes in a prismatic part lie on its edges, whose boxes are exact
+        // for lines and arcs (a face box can be loose, and the optimal one is slow).
         Bnd_Box box;
-        BRepBndLib::AddOptimal(solid_.Moved(TopLoc_Location(t)), box, false, false);
+        const TopLoc_Location frameLoc(t);
+        for (int e = 1; e <= edges_.Extent(); ++e) BRepBndLib::Add(edges_(e).Moved(frameLoc), box, false);
         double x0, y0, h0, x1, y1, h1;
         box.Get(x0, y0, h0, x1, y1, h1);
+        const double gap = box.GetGap();
+        x0 += gap, y0 += gap, h0 += gap, x1 -= gap, y1 -= gap, h1 -= gap;
         P2 blo{x0 - opt_.blankAllowance, y0 - opt_.blankAllowance};
         P2 bhi{x1 + opt_.blankAllowance, y1 + opt_.blankAllowance};
         if (opt_.blank) {
