@@ -147,14 +147,22 @@ Vec3 FaceCatalogue::interiorPoint(int i) const {
     auto& cached = interior_[static_cast<std::size_t>(i)];
     if (cached.first) return cached.second;
     cached.first = true;
-    cached.second = searchInterior(faces_[static_cast<std::size_t>(i)].face);
+    cached.second = searchInterior(i);
     return cached.second;
 }
 
-Vec3 FaceCatalogue::searchInterior(const TopoDS_Face& face) {
+BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
+    if (classifiers_.empty()) classifiers_.resize(faces_.size());
+    auto& c = classifiers_[static_cast<std::size_t>(i)];
+    if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[static_cast<std::size_t>(i)].face, 1e-9);
+    return *c;
+}
+
+Vec3 FaceCatalogue::searchInterior(int i) const {
+    const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
-    BRepTopAdaptor_FClass2d cls(face, 1e-9);
+    BRepTopAdaptor_FClass2d& cls = classifier(i);
     BRepAdaptor_Surface s(face, true);
     // Search a refining grid; the centre first, which is inside for most faces.
     for (int n = 1; n <= 65; n = n * 2 + 1) {

@@ -6,6 +6,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <memory>
 #include <vector>
@@ -43,16 +44,19 @@ public:
     // Whether the ray from inside face i along d leaves the part without meeting it:
     // the tool can reach the face from d.
     bool reachable(int i, const Vec3& d) const;
+    // Classifier of points in face i's parameter space, built once per face.
+    BRepTopAdaptor_FClass2d& classifier(int i) const;
     // Distance from p along unit d to the first face of the part; infinity if none.
     double firstHit(const Vec3& p, const Vec3& d) const;
 
 private:
-    static Vec3 searchInterior(const TopoDS_Face& face);
+    Vec3 searchInterior(int i) const;
     std::vector<FaceInfo> faces_;
     TopTools_IndexedMapOfShape map_;
     TopoDS_Shape solid_;
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;
+    mutable std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
 };
 
 }  // namespace aeronc::recognition

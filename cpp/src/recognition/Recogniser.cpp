@@ -2,6 +2,7 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/recognition/Recogniser.h>
 
+#include "AxisRays.h"
 #include "FaceCatalogue.h"
 #include "LevelSlicer.h"
 #include "Region.h"
@@ -20,11 +21,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <unordered_map>
 
 namespace aeronc::recognition {
 using namespace ClipperLib;
@@ -153,6 +156,9 @@ private:
     std::vector<bool> consumed_;  // faces whose direction was already tried
     std::vector<Vec3> axes_;      // principal axes, on first use
     TopTools_IndexedMapOfShape edges_;
+    std::unique_ptr<AxisRays> rays_;  // along the current setup's axis
+    std::vector<signed char> reach_;  // -1 unknown, 0/1
+    std::unordered_map<std::string, double> widths_;  // minimum width by region shape
     double progressBase_ = 0, progressSpan_ = 1;
 
     // Parallel: |cos| >= cos(tol); square: |cos| <= sin(tol).
@@ -320,7 +326,15 @@ private:
         return s;
     }
 
+    // Reachability of faces from the current setup direction, computed once per face.
+    bool reachableNow(int i) {
+        signed char& r = reach_[static_cast<std::size_t>(i)];
+        if (r < 0) r = rays_->reachable(i) ? 1 : 0;
+        return r == 1;
+    }
+
     void runSetup(const Vec3& d) {
+        reach_.assign(static_cast<std::size_t>(faces_.size()), -1);
         // Align the frame with a principal axis square to d, so the blank box fits the part.
         const Vec3* ref = nullptr;
         if (axes_.empty()) axes_ = principalAxes();
@@ -330,6 +344,7 @@ private:
                 break;
             }
         SetupFrame frame(d, ref);
+        rays_ = std::make_unique<AxisRays>(faces_, frame);
         const std::vector<FaceInSetup> fs = classify(frame);
 
         // Part extent in the setup frame.
@@ -369,7 +384,7 @@ private:
         std::vector<bool> holeBottom{false};
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-            if (s.att == Attitude::Up && faces_.reachable(i, frame.w)) levels.push_back(s.h), holeBottom.push_back(false);
+            if (s.att == Attitude::Up && reachableNow(i)) levels.push_back(s.h), holeBottom.push_back(false);
             else if (s.att == Attitude::Down) levels.push_back(s.h), holeBottom.push_back(false);  // openings exit here
             else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
                      onDrillPoint(i, s.lo, fs))
@@ -463,7 +478,7 @@ private:
         double excess = 0;
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-            if (s.att != Attitude::Up || std::fabs(s.h - h) > tol || !faces_.reachable(i, frame.w)) continue;
+            if (s.att != Attitude::Up || std::fabs(s.h - h) > tol || !reachableNow(i)) continue;
             ups.push_back(i);
             for (int n : faces_[i].neighbours) {
                 const FaceInSetup& ns = fs[static_cast<std::size_t>(n)];
@@ -674,7 +689,7 @@ private:
             if (!c.hasSample) c.sample = c.region.interiorPoint();
             if (type == ElementType::Opening) {
                 // Capped from above (a cavity seen from the wrong side): not machinable here.
-                if (!std::isinf(faces_.firstHit(frame.world(c.sample, z), frame.w))) continue;
+                if (!std::isinf(rays_->firstHit(frame.world(c.sample, z), true))) continue;
             }
             Internal in;
             DomainElement& e = in.el;
@@ -683,7 +698,7 @@ private:
             e.type = type;
             e.level = h;
             e.area = c.region.area();
-            e.minWidth = c.region.minWidth();
+            e.minWidth = minWidth(c.region);
             for (int f : c.contourFaces) e.contourFaces.push_back(f + 1);
             for (auto& isl : c.islandFaces) {
                 std::vector<int> v;
@@ -720,7 +735,7 @@ private:
     }
 
     // An opening: the region's walls all end at this level and below it lies no material.
-    bool leavesPart(Candidate& c, const std::vector<FaceInSetup>& fs, const SetupFrame& frame, double h, double z) const {
+    bool leavesPart(Candidate& c, const std::vector<FaceInSetup>& fs, const SetupFrame& frame, double h, double z) {
         if (c.contourFaces.empty()) return false;
         for (int f : c.contourFaces)
             if (std::fabs(fs[static_cast<std::size_t>(f)].lo - h) > 10 * linTol()) return false;
@@ -728,7 +743,7 @@ private:
         // Looking down from the slice: material right under the level means a floor, not an exit.
         const Vec3 q = frame.world(c.sample, z);
         const double margin = std::max(0.1, 100 * linTol());
-        return faces_.firstHit(q, {-frame.w[0], -frame.w[1], -frame.w[2]}) > z - h + margin;
+        return rays_->firstHit(q, false) > z - h + margin;
     }
 
     // Whether face f's bottom at height h rests on a drill point (cone or sphere below it).
@@ -738,6 +753,27 @@ private:
                 fs[static_cast<std::size_t>(n)].hi <= h + 10 * linTol())
                 return true;
         return false;
+    }
+
+    // Regions of the same shape (repeated pockets) share one width computation.
+    double minWidth(const Region& r) {
+        std::string key;
+        auto add = [&](const Path& p) {
+            for (const IntPoint& q : p) {
+                const cInt d[2] = {q.X - p[0].X, q.Y - p[0].Y};
+                key.append(reinterpret_cast<const char*>(d), sizeof d);
+            }
+            const cInt o[2] = {p[0].X - r.outer[0].X, p[0].Y - r.outer[0].Y};
+            key.append(reinterpret_cast<const char*>(o), sizeof o);
+            key.push_back('|');
+        };
+        add(r.outer);
+        for (const Path& h : r.holes) add(h);
+        auto it = widths_.find(key);
+        if (it != widths_.end()) return it->second;
+        const double w = r.minWidth();
+        widths_.emplace(std::move(key), w);
+        return w;
     }
 
     // Smallest concave corner radius along the loops; 0 where two walls meet sharp.

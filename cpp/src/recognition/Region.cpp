@@ -68,8 +68,9 @@ static Paths thinned(const Paths& ps) {
 double Region::minWidth() const {
     const Paths ps = thinned(paths());
     const Shape ref{1, static_cast<int>(holes.size())};
-    double good = 0, bad = 0.5 * std::max(hi.x - lo.x, hi.y - lo.y) + 1e-3;
-    for (int it = 0; it < 14; ++it) {
+    // No disc wider than the box's narrow side fits; 11 halvings resolve it to ~1e-3 of that.
+    double good = 0, bad = 0.5 * std::min(hi.x - lo.x, hi.y - lo.y) + 1e-3;
+    for (int it = 0; it < 11; ++it) {
         const double r = 0.5 * (good + bad);
         const Paths e = erode(ps, r);
         if (!e.empty() && shapeOf(e) == ref) good = r;

@@ -19,8 +19,8 @@ namespace {
 double dotp(const gp_XYZ& a, const Vec3& b) { return a.X() * b[0] + a.Y() * b[1] + a.Z() * b[2]; }
 }  // namespace
 
-bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out) {
+bool sectionVerticalFace(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame,
+                         double h, double chordTol, std::vector<std::vector<P2>>& out) {
     BRepAdaptor_Surface s(face, false);  // already carries the face's location
     // The section in (u, v): the points where a*u + b*v = c.
     double a = 0, b = 0, c = 0;
@@ -78,7 +78,6 @@ bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, doubl
     ts.erase(std::unique(ts.begin(), ts.end(), [](double x, double y) { return std::fabs(x - y) < 1e-9; }), ts.end());
     if (ts.size() < 2) return true;  // the plane misses the face
 
-    BRepTopAdaptor_FClass2d cls(face, 1e-9);
     auto uv = [&](double t) { return gp_Pnt2d(p0.X() + t * dir.X(), p0.Y() + t * dir.Y()); };
     auto at = [&](double t) {
         const gp_Pnt p = s.Value(uv(t).X(), uv(t).Y());

@@ -4,6 +4,7 @@
 // about the setup axis. Other faces go through OCCT's general section.
 #include "SetupFrame.h"
 
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <TopoDS_Face.hxx>
 #include <vector>
 
@@ -11,7 +12,7 @@ namespace aeronc::recognition {
 
 // Appends the section polylines of `face` at height h; false when the face's surface is
 // not one this handles (the caller then uses the general section).
-bool sectionVerticalFace(const TopoDS_Face& face, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out);
+bool sectionVerticalFace(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& classifier, const SetupFrame& frame,
+                         double h, double chordTol, std::vector<std::vector<P2>>& out);
 
 }  // namespace aeronc::recognition

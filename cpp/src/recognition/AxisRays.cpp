@@ -1,0 +1,69 @@
+#include "AxisRays.h"
+
+#include <gp_Lin.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aeronc::recognition {
+
+AxisRays::AxisRays(const FaceCatalogue& faces, const SetupFrame& frame)
+    : faces_(faces), frame_(frame), lo_(faces.size()), hi_(faces.size()), hit_(faces.size()) {
+    P2 all0{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+    P2 all1{-all0.x, -all0.y};
+    for (int i = 0; i < faces.size(); ++i) {
+        const FaceInfo& f = faces[i];
+        P2 a{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()}, b{-a.x, -a.y};
+        for (int c = 0; c < 8; ++c) {
+            const P2 q = frame.project({(c & 1) ? f.boxMax[0] : f.boxMin[0], (c & 2) ? f.boxMax[1] : f.boxMin[1],
+                                        (c & 4) ? f.boxMax[2] : f.boxMin[2]});
+            a.x = std::min(a.x, q.x), a.y = std::min(a.y, q.y), b.x = std::max(b.x, q.x), b.y = std::max(b.y, q.y);
+        }
+        const double m = 1e-6 + 1e-9 * (std::fabs(a.x) + std::fabs(a.y));
+        lo_[static_cast<std::size_t>(i)] = {a.x - m, a.y - m};
+        hi_[static_cast<std::size_t>(i)] = {b.x + m, b.y + m};
+        all0.x = std::min(all0.x, a.x), all0.y = std::min(all0.y, a.y);
+        all1.x = std::max(all1.x, b.x), all1.y = std::max(all1.y, b.y);
+    }
+    // About one face per cell on average.
+    const double area = std::max((all1.x - all0.x) * (all1.y - all0.y), 1e-12);
+    cell_ = std::max(std::sqrt(area / std::max(1, faces.size())), 1e-6);
+    for (int i = 0; i < faces.size(); ++i) {
+        const P2& a = lo_[static_cast<std::size_t>(i)];
+        const P2& b = hi_[static_cast<std::size_t>(i)];
+        const long long x0 = static_cast<long long>(std::floor(a.x / cell_)), x1 = static_cast<long long>(std::floor(b.x / cell_));
+        const long long y0 = static_cast<long long>(std::floor(a.y / cell_)), y1 = static_cast<long long>(std::floor(b.y / cell_));
+        for (long long x = x0; x <= x1; ++x)
+            for (long long y = y0; y <= y1; ++y) grid_[key(x, y)].push_back(i);
+    }
+}
+
+double AxisRays::firstHit(const Vec3& p, bool up) {
+    const P2 q = frame_.project(p);
+    const auto it = grid_.find(key(static_cast<long long>(std::floor(q.x / cell_)), static_cast<long long>(std::floor(q.y / cell_))));
+    double best = std::numeric_limits<double>::infinity();
+    if (it == grid_.end()) return best;
+    const Vec3& w = frame_.w;
+    const gp_Lin ray(gp_Pnt(p[0], p[1], p[2]), up ? gp_Dir(w[0], w[1], w[2]) : gp_Dir(-w[0], -w[1], -w[2]));
+    for (int i : it->second) {
+        const P2& a = lo_[static_cast<std::size_t>(i)];
+        const P2& b = hi_[static_cast<std::size_t>(i)];
+        if (q.x < a.x || q.x > b.x || q.y < a.y || q.y > b.y) continue;
+        auto& x = hit_[static_cast<std::size_t>(i)];
+        if (!x) x = std::make_unique<IntCurvesFace_Intersector>(faces_[i].face, 1e-7);
+        x->Perform(ray, 0, best);
+        for (int k = 1; k <= x->NbPnt(); ++k)
+            if (x->State(k) != TopAbs_OUT) best = std::min(best, x->WParameter(k));
+    }
+    return best;
+}
+
+bool AxisRays::reachable(int i) {
+    const Vec3 p = faces_.interiorPoint(i);
+    const Vec3& w = frame_.w;
+    const double eps = 1e-4;  // start just off the face so it does not see itself
+    return std::isinf(firstHit({p[0] + eps * w[0], p[1] + eps * w[1], p[2] + eps * w[2]}, true));
+}
+
+}  // namespace aeronc::recognition
