@@ -1,5 +1,6 @@
 #include "AxisRays.h"
 
+#include <ElSLib.hxx>
 #include <gp_Lin.hxx>
 
 #include <algorithm>
@@ -50,8 +51,22 @@ double AxisRays::firstHit(const Vec3& p, bool up) {
         const P2& a = lo_[static_cast<std::size_t>(i)];
         const P2& b = hi_[static_cast<std::size_t>(i)];
         if (q.x < a.x || q.x > b.x || q.y < a.y || q.y > b.y) continue;
+        const FaceInfo& f = faces_[i];
+        if (f.kind == SurfaceKind::Plane) {
+            // Planes: meet the plane, then ask the face's own classifier.
+            const double c = dot(f.normal, up ? w : Vec3{-w[0], -w[1], -w[2]});
+            if (std::fabs(c) < 1e-12) continue;
+            const Vec3& o = f.planePoint;
+            const double t = dot(f.normal, Vec3{o[0] - p[0], o[1] - p[1], o[2] - p[2]}) / c;
+            if (t < 0 || t >= best) continue;
+            const gp_Pnt x(p[0] + t * ray.Direction().X(), p[1] + t * ray.Direction().Y(), p[2] + t * ray.Direction().Z());
+            double u, v;
+            ElSLib::Parameters(f.plane, x, u, v);
+            if (faces_.classifier(i).Perform(gp_Pnt2d(u, v)) != TopAbs_OUT) best = t;
+            continue;
+        }
         auto& x = hit_[static_cast<std::size_t>(i)];
-        if (!x) x = std::make_unique<IntCurvesFace_Intersector>(faces_[i].face, 1e-7);
+        if (!x) x = std::make_unique<IntCurvesFace_Intersector>(f.face, 1e-7);
         x->Perform(ray, 0, best);
         for (int k = 1; k <= x->NbPnt(); ++k)
             if (x->State(k) != TopAbs_OUT) best = std::min(best, x->WParameter(k));

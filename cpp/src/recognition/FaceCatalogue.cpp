@@ -43,6 +43,8 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) : solid_(solid) {
                 if (!pos.Direct()) n.Reverse();
                 if (reversed) n.Reverse();
                 f.normal = v3(n.XYZ());
+                f.plane = s.Plane();
+                f.planePoint = v3(pos.Location().XYZ());
                 break;
             }
             case GeomAbs_Cylinder: {
@@ -156,6 +158,21 @@ BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
     auto& c = classifiers_[static_cast<std::size_t>(i)];
     if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[static_cast<std::size_t>(i)].face, 1e-9);
     return *c;
+}
+
+const std::vector<Handle(Geom2d_TrimmedCurve)>& FaceCatalogue::boundaryUV(int i) const {
+    if (boundaries_.empty()) boundaries_.resize(faces_.size());
+    auto& b = boundaries_[static_cast<std::size_t>(i)];
+    if (!b) {
+        b = std::make_unique<std::vector<Handle(Geom2d_TrimmedCurve)>>();
+        const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
+        for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
+            double f, l;
+            Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(TopoDS::Edge(ex.Current()), face, f, l);
+            b->push_back(pc.IsNull() ? Handle(Geom2d_TrimmedCurve)() : new Geom2d_TrimmedCurve(pc, f, l));
+        }
+    }
+    return *b;
 }
 
 Vec3 FaceCatalogue::searchInterior(int i) const {

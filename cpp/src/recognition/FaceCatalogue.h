@@ -5,8 +5,10 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Pln.hxx>
 #include <TopoDS_Shape.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
 #include <IntCurvesFace_ShapeIntersector.hxx>
 #include <memory>
 #include <vector>
@@ -19,6 +21,8 @@ struct FaceInfo {
     TopoDS_Face face;
     SurfaceKind kind = SurfaceKind::Other;
     Vec3 normal{0, 0, 0};   // plane: outward normal (out of the material)
+    Vec3 planePoint{0, 0, 0};
+    gp_Pln plane;           // the plane's own frame (its (u, v) are the face's parameters)
     Vec3 axisDir{0, 0, 0};  // cylinder / cone / torus axis direction
     Vec3 axisPoint{0, 0, 0};
     double radius = 0;       // cylinder radius, torus minor radius, cone reference radius
@@ -46,6 +50,9 @@ public:
     bool reachable(int i, const Vec3& d) const;
     // Classifier of points in face i's parameter space, built once per face.
     BRepTopAdaptor_FClass2d& classifier(int i) const;
+    // The face's boundary as trimmed curves in its parameter space (null entry: an edge
+    // without one), built once per face.
+    const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV(int i) const;
     // Distance from p along unit d to the first face of the part; infinity if none.
     double firstHit(const Vec3& p, const Vec3& d) const;
 
@@ -57,6 +64,7 @@ private:
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;
     mutable std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+    mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
 };
 
 }  // namespace aeronc::recognition

@@ -75,7 +75,7 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
     int general = 0;
     for (int i : candidates) {
         std::vector<std::vector<P2>> polys;
-        if (!std::getenv("AERONC_GENERAL_SECTION") && sectionVerticalFace(faces[i].face, faces.classifier(i), frame, h, chordTol, polys)) {
+        if (!std::getenv("AERONC_GENERAL_SECTION") && sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h, chordTol, polys)) {
             for (auto& pl : polys) {
                 Piece piece;
                 piece.face = i;

@@ -19,8 +19,9 @@ namespace {
 double dotp(const gp_XYZ& a, const Vec3& b) { return a.X() * b[0] + a.Y() * b[1] + a.Z() * b[2]; }
 }  // namespace
 
-bool sectionVerticalFace(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame,
-                         double h, double chordTol, std::vector<std::vector<P2>>& out) {
+bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
+                         BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame, double h, double chordTol,
+                         std::vector<std::vector<P2>>& out) {
     BRepAdaptor_Surface s(face, false);  // already carries the face's location
     // The section in (u, v): the points where a*u + b*v = c.
     double a = 0, b = 0, c = 0;
@@ -61,12 +62,8 @@ bool sectionVerticalFace(const TopoDS_Face& face, BRepTopAdaptor_FClass2d& cls, 
     Handle(Geom2d_Line) line = new Geom2d_Line(p0, dir);
 
     std::vector<double> ts;
-    for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next()) {
-        const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
-        double f, l;
-        Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(e, face, f, l);
-        if (pc.IsNull()) return false;
-        Handle(Geom2d_TrimmedCurve) tc = new Geom2d_TrimmedCurve(pc, f, l);
+    for (const Handle(Geom2d_TrimmedCurve)& tc : boundaryUV) {
+        if (tc.IsNull()) return false;
         Geom2dAPI_InterCurveCurve inter(tc, line, 1e-9);
         for (int k = 1; k <= inter.NbPoints(); ++k) {
             const gp_Pnt2d q = inter.Point(k);
