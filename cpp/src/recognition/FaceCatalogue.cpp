@@ -12,6 +12,8 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <gp_Cone.hxx>
+#include <gp_Trsf.hxx>
+#include <TopLoc_Location.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Pln.hxx>
@@ -90,6 +92,14 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) : solid_(solid) {
         f.boxMin = {x0 + g, y0 + g, z0 + g};
         f.boxMax = {x1 - g, y1 - g, z1 - g};
     }
+    TopExp::MapShapes(solid, TopAbs_EDGE, edges_);
+    faceEdges_.resize(faces_.size());
+    for (std::size_t i = 0; i < faces_.size(); ++i)
+        for (TopExp_Explorer ex(faces_[i].face, TopAbs_EDGE); ex.More(); ex.Next()) {
+            const int e = edges_.FindIndex(ex.Current());
+            if (e > 0 && std::find(faceEdges_[i].begin(), faceEdges_[i].end(), e) == faceEdges_[i].end())
+                faceEdges_[i].push_back(e);
+        }
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
     TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
     for (int e = 1; e <= edgeFaces.Extent(); ++e) {
@@ -143,6 +153,37 @@ bool FaceCatalogue::reachable(int i, const Vec3& d) const {
     const Vec3 p = interiorPoint(i);
     const double eps = 1e-4;  // start just off the face so it does not see itself
     return std::isinf(firstHit({p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]}, d));
+}
+
+std::vector<std::pair<double, double>> FaceCatalogue::heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const {
+    gp_Trsf t;
+    t.SetValues(u[0], u[1], u[2], 0, v[0], v[1], v[2], 0, w[0], w[1], w[2], 0);
+    const TopLoc_Location loc(t);
+    std::vector<std::pair<double, double>> edge(static_cast<std::size_t>(edges_.Extent()) + 1);
+    for (int e = 1; e <= edges_.Extent(); ++e) {
+        Bnd_Box b;
+        BRepBndLib::Add(edges_(e).Moved(loc), b, false);
+        if (b.IsVoid()) {
+            edge[static_cast<std::size_t>(e)] = {0, -1};
+            continue;
+        }
+        double x0, y0, z0, x1, y1, z1;
+        b.Get(x0, y0, z0, x1, y1, z1);
+        const double g = b.GetGap();
+        edge[static_cast<std::size_t>(e)] = {z0 + g, z1 - g};
+    }
+    std::vector<std::pair<double, double>> out(faces_.size());
+    for (std::size_t i = 0; i < faces_.size(); ++i) {
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (int e : faceEdges_[i]) {
+            const auto& r = edge[static_cast<std::size_t>(e)];
+            if (r.second < r.first) continue;
+            lo = std::min(lo, r.first), hi = std::max(hi, r.second);
+        }
+        if (lo > hi) heightRange(static_cast<int>(i), w, lo, hi);  // no usable edge (closed surface)
+        out[i] = {lo, hi};
+    }
+    return out;
 }
 
 Vec3 FaceCatalogue::interiorPoint(int i) const {

@@ -43,6 +43,10 @@ public:
     double area(int i) const;
     // Height range of face i along unit direction d (conservative: from its box).
     void heightRange(int i, const Vec3& d, double& lo, double& hi) const;
+    // Height ranges of all faces along the frame's axis, from the boxes of their edges in
+    // that frame: exact for lines and arcs, so for planes and for surfaces of revolution
+    // about the axis, and rotation-independent.
+    std::vector<std::pair<double, double>> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
     // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
     // Whether the ray from inside face i along d leaves the part without meeting it:
@@ -60,6 +64,8 @@ private:
     Vec3 searchInterior(int i) const;
     std::vector<FaceInfo> faces_;
     TopTools_IndexedMapOfShape map_;
+    TopTools_IndexedMapOfShape edges_;
+    std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
     TopoDS_Shape solid_;
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;

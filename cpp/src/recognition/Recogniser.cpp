@@ -157,6 +157,7 @@ private:
     std::vector<Vec3> axes_;      // principal axes, on first use
     TopTools_IndexedMapOfShape edges_;
     std::unique_ptr<AxisRays> rays_;  // along the current setup's axis
+    Vec3 currentAxis_{0, 0, 1};
     std::vector<signed char> reach_;  // -1 unknown, 0/1
     std::unordered_map<std::string, double> widths_;  // minimum width by region shape
     double progressBase_ = 0, progressSpan_ = 1;
@@ -180,23 +181,13 @@ private:
 
     std::vector<FaceInSetup> classify(const SetupFrame& frame) const {
         const Vec3& w = frame.w;
-        // World boxes give exact heights along a world axis; otherwise bound each face in the frame.
-        const bool axial = std::fabs(w[0]) > 1 - 1e-12 || std::fabs(w[1]) > 1 - 1e-12 || std::fabs(w[2]) > 1 - 1e-12;
-        gp_Trsf t;
-        t.SetValues(frame.u[0], frame.u[1], frame.u[2], 0, frame.v[0], frame.v[1], frame.v[2], 0, w[0], w[1], w[2], 0);
-        const TopLoc_Location loc(t);
+        const auto ranges = faces_.heightRanges(frame.u, frame.v, w);
         std::vector<FaceInSetup> out(static_cast<std::size_t>(faces_.size()));
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInfo& f = faces_[i];
             FaceInSetup& s = out[static_cast<std::size_t>(i)];
-            if (axial) {
-                faces_.heightRange(i, w, s.lo, s.hi);
-            } else {
-                Bnd_Box b;
-                BRepBndLib::Add(f.face.Moved(loc), b, false);
-                double x0, y0, x1, y1;
-                b.Get(x0, y0, s.lo, x1, y1, s.hi);
-            }
+            s.lo = ranges[static_cast<std::size_t>(i)].first;
+            s.hi = ranges[static_cast<std::size_t>(i)].second;
             if (f.kind == SurfaceKind::Plane) {
                 const double c = dot(f.normal, w);
                 if (c >= cosTol()) s.att = Attitude::Up;
@@ -301,24 +292,18 @@ private:
 
     // Unclaimed floor area seen from d plus unclaimed concave cylinder area along d.
     double score(const Vec3& d, bool consume = false) {
+        const std::vector<FaceInSetup> fs = classify(SetupFrame(d));
         double s = 0;
         for (int i = 0; i < faces_.size(); ++i) {
             if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
             const double before = s;
             const FaceInfo& f = faces_[i];
-            if (f.kind == SurfaceKind::Plane && dot(f.normal, d) >= cosTol() && faces_.reachable(i, d)) {
-                double lo, hi;
-                faces_.heightRange(i, d, lo, hi);
-                const double h = 0.5 * (lo + hi);
-                for (int n : f.neighbours) {
-                    double nlo, nhi;
-                    faces_.heightRange(n, d, nlo, nhi);
-                    if (nhi > h + 10 * linTol()) {
-                        s += faces_.area(i);
-                        break;
-                    }
-                }
-            } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, d)) >= cosTol()) {
+            const FaceInSetup& fi = fs[static_cast<std::size_t>(i)];
+            if (fi.att == Attitude::Up) {
+                bool rising = false;
+                for (int n : f.neighbours) rising |= fs[static_cast<std::size_t>(n)].hi > fi.h + 10 * linTol();
+                if (rising && faces_.reachable(i, d)) s += faces_.area(i);
+            } else if (f.kind == SurfaceKind::Cylinder && f.concave && fi.att == Attitude::Vertical) {
                 s += 0.5 * faces_.area(i);
             }
             if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;
@@ -334,6 +319,7 @@ private:
     }
 
     void runSetup(const Vec3& d) {
+        currentAxis_ = d;
         reach_.assign(static_cast<std::size_t>(faces_.size()), -1);
         // Align the frame with a principal axis square to d, so the blank box fits the part.
         const Vec3* ref = nullptr;
@@ -437,6 +423,16 @@ private:
             if (!taken) {
                 remap[k] = static_cast<int>(tree_.elements.size() + kept.size());
                 kept.push_back(made[k]);
+                // Faces an earlier setup machines stay with it: one owner per face.
+                DomainElement& el = kept.back().el;
+                auto mine = [&](std::vector<int>& v) {
+                    v.erase(std::remove_if(v.begin(), v.end(),
+                                           [&](int f) { return claimed_[static_cast<std::size_t>(f - 1)]; }),
+                            v.end());
+                };
+                mine(el.contourFaces), mine(el.filletFaces), mine(el.chamferFaces), mine(el.topFaces);
+                for (auto& isl : el.islandFaces) mine(isl);
+                for (auto& a : el.attached) mine(a.faces);
             }
         }
         for (Internal& in : kept) {
@@ -502,7 +498,8 @@ private:
         const double margin = 0.5;  // boxes of spline faces can be tight; extra faces cost little
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
-            if (f.lo - margin < z && f.hi + margin > z) cands.push_back(i);
+            const double m = (f.att == Attitude::Up || f.att == Attitude::Down) ? 0.0 : margin;
+            if (f.lo - m < z && f.hi + m > z) cands.push_back(i);
         }
         const auto ts = std::chrono::steady_clock::now();
         std::vector<SectionLoop> loops =
@@ -688,6 +685,10 @@ private:
             }
             if (!c.hasSample) c.sample = c.region.interiorPoint();
             if (type == ElementType::Opening) {
+                // Bounded only by cones or chamfers: the mouth of a hole, not an opening.
+                bool wall = false;
+                for (int f : c.contourFaces) wall |= fs[static_cast<std::size_t>(f)].att == Attitude::Vertical;
+                if (!wall) continue;
                 // Capped from above (a cavity seen from the wrong side): not machinable here.
                 if (!std::isinf(rays_->firstHit(frame.world(c.sample, z), true))) continue;
             }
@@ -747,12 +748,23 @@ private:
     }
 
     // Whether face f's bottom at height h rests on a drill point (cone or sphere below it).
+    // A cone that narrows downwards is a drill point; one that widens is a countersink at
+    // the far end of a through hole.
     bool onDrillPoint(int f, double h, const std::vector<FaceInSetup>& fs) const {
-        for (int n : faces_[f].neighbours)
-            if ((faces_[n].kind == SurfaceKind::Cone || faces_[n].kind == SurfaceKind::Sphere) &&
-                fs[static_cast<std::size_t>(n)].hi <= h + 10 * linTol())
-                return true;
+        for (int n : faces_[f].neighbours) {
+            const FaceInfo& c = faces_[n];
+            const FaceInSetup& cs = fs[static_cast<std::size_t>(n)];
+            if (cs.hi > h + 10 * linTol()) continue;
+            if (c.kind == SurfaceKind::Sphere) return true;
+            if (c.kind == SurfaceKind::Cone && coneRadiusAt(c, cs.lo) < faces_[f].radius - 10 * linTol()) return true;
+        }
         return false;
+    }
+
+    double coneRadiusAt(const FaceInfo& c, double height) const {
+        const Vec3& w = currentAxis_;
+        const double sgn = dot(c.axisDir, w) > 0 ? 1 : -1;
+        return std::fabs(c.radius + std::tan(c.semiAngle) * sgn * (height - dot(c.axisPoint, w)));
     }
 
     // Regions of the same shape (repeated pockets) share one width computation.
@@ -1003,7 +1015,7 @@ private:
                     a.faces = {n + 1};
                     a.size = hi.countersinkDiameter;
                     e.attached.push_back(a);
-                } else if (cs.hi <= e.level + tol) {
+                } else if (cs.hi <= e.level + tol && coneRadiusAt(cf, cs.lo) < f0.radius - tol) {
                     pushUnique(e.floorFaces, n + 1);  // drill point is the hole's bottom
                 }
             }
@@ -1041,20 +1053,14 @@ private:
         }
         // What no element machines: the top of the part in the first setup, else stock.
         if (!tree_.setups.empty()) {
-            const Vec3 w = tree_.setups[0].direction;
+            const SetupFrame frame(tree_.setups[0].direction);
+            const std::vector<FaceInSetup> fs = classify(frame);
             double hi = -kInf;
-            for (int i = 0; i < faces_.size(); ++i) {
-                double lo, h;
-                faces_.heightRange(i, w, lo, h);
-                hi = std::max(hi, h);
-            }
+            for (const FaceInSetup& f : fs) hi = std::max(hi, f.hi);
             for (int i = 0; i < faces_.size(); ++i) {
                 if (tree_.faceRoles[static_cast<std::size_t>(i)] != FaceRole::Unclaimed) continue;
-                const FaceInfo& f = faces_[i];
-                double lo, h;
-                faces_.heightRange(i, w, lo, h);
-                const bool top = f.kind == SurfaceKind::Plane && dot(f.normal, w) >= cosTol() &&
-                                 std::fabs(h - hi) <= 10 * linTol();
+                const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
+                const bool top = f.att == Attitude::Up && std::fabs(f.hi - hi) <= 10 * linTol();
                 tree_.faceRoles[static_cast<std::size_t>(i)] = top ? FaceRole::Top : FaceRole::Stock;
             }
         }

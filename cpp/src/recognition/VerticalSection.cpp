@@ -32,7 +32,7 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
         a = dotp(pos.XDirection().XYZ(), frame.w);
         b = dotp(pos.YDirection().XYZ(), frame.w);
         c = h - dotp(pos.Location().XYZ(), frame.w);
-        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1 - 1e-9) return false;  // parallel to the slice
+        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1 - 1e-6) return false;  // (nearly) parallel to the slice
     } else if (s.GetType() == GeomAbs_Cone) {
         // P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z: height is linear in v.
         const gp_Cone cone = s.Cone();
