@@ -3,7 +3,7 @@
 # (r, g, b) per face role of the core's result.
 ROLE_COLOURS = {
     "floor": (0.20, 0.40, 0.95),             # blue
-    "counterbore_floor": (0.10, 0.25, 0.70),
+    "counterbore_floor": (0.50, 0.35, 0.90),   # violet
     "wall": (0.20, 0.75, 0.25),              # green
     "island_wall": (0.95, 0.85, 0.15),       # yellow
     "hole_wall": (0.90, 0.15, 0.15),         # red

@@ -41,9 +41,9 @@ def _rasterise(tris, colours, edges, elev, azim, size):
     normals = np.cross(tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0])
     nn = np.linalg.norm(normals, axis=1)
     nn[nn == 0] = 1
-    light = eye + 0.35 * up + 0.2 * right  # a headlight, a little above and right
+    light = eye.copy()  # a headlight: what faces the viewer is brightest
     light /= np.linalg.norm(light)
-    shade = 0.4 + 0.6 * np.abs((normals / nn[:, None]) @ light)
+    shade = 0.45 + 0.55 * np.abs((normals / nn[:, None]) @ light)
     img = np.ones((size, size, 3))
     zbuf = np.full((size, size), -np.inf)
     for t in range(len(tris)):

@@ -7,6 +7,9 @@
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <IFSelect_ReturnStatus.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -75,6 +78,7 @@ void measure(int pockets, const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));  // keep the table clean
     std::vector<int> sizes{10, 50, 100, 250, 500, 1000};
     std::string dir = (std::filesystem::temp_directory_path() / "aeronc-bench").string();
     for (int i = 1; i + 1 < argc; i += 2) {

@@ -1,12 +1,15 @@
 // aeronc: command-line entry to the AeroNC core.
 //   aeronc recognise PART.(step|brep) [--json OUT] [--directions auto|+Z,-Z|x:y:z,...]
 //                    [--allowance MM] [--tolerance MM]
-//   aeronc panel OUT.step [--pockets NXxNY] [--truth TRUTH.json] [--plain]
+//   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <Standard_Failure.hxx>
 #include <nlohmann/json.hpp>
 
@@ -22,7 +25,7 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
-    "  aeronc panel OUT.step [--pockets NXxNY] [--truth TRUTH.json] [--plain]\n";
+    "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -107,6 +110,8 @@ int panelCmd(int argc, char** argv) {
             if (std::sscanf(argv[++i], "%dx%d", &spec.pocketsX, &spec.pocketsY) != 2 || spec.pocketsX < 1 ||
                 spec.pocketsY < 1)
                 throw aeronc::inputError("--pockets wants NXxNY, e.g. 40x25");
+        } else if (a == "--floor-fillet" && i + 1 < argc) {
+            spec.floorFillet = std::stod(argv[++i]);
         } else if (a == "--truth" && i + 1 < argc) {
             truth = argv[++i];
         } else if (a == "--plain") {
@@ -122,9 +127,16 @@ int panelCmd(int argc, char** argv) {
     return 0;
 }
 
+// OCCT's STEP reader and writer print statistics on stdout, which is the JSON's channel.
+void quietOcct() {
+    const Handle(Message_Messenger)& m = Message::DefaultMessenger();
+    m->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    quietOcct();
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
         std::cerr << kUsage;
         return argc < 2 ? 2 : 0;

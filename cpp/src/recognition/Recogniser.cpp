@@ -725,7 +725,7 @@ private:
             cornerRadius(c, fs, e);
             for (int rt : c.ribTops) {
                 AttachedFeature a;
-                a.kind = "rib";
+                a.kind = "island_top";
                 a.faces = {rt + 1};
                 e.attached.push_back(a);
             }
@@ -914,6 +914,20 @@ private:
                 a.faces = e.chamferFaces;
                 e.attached.push_back(a);
             }
+            // Island tops: faces normal to the axis on top of the island walls.
+            for (auto& isl : e.islandFaces) {
+                double islTop = -kInf;
+                for (int f : isl) islTop = std::max(islTop, fs[static_cast<std::size_t>(f - 1)].hi);
+                AttachedFeature a;
+                a.kind = "island_top";
+                for (int f : isl)
+                    for (int n : faces_[f - 1].neighbours) {
+                        const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                        if (s.att == Attitude::Up && std::fabs(s.h - islTop) <= tol && islTop < e.top - tol)
+                            pushUnique(a.faces, n + 1);
+                    }
+                if (!a.faces.empty()) e.attached.push_back(a);
+            }
             // Top constraint: faces normal to the axis at the top of the walls.
             for (int w : e.contourFaces)
                 for (int n : faces_[w - 1].neighbours) {
@@ -1042,7 +1056,7 @@ private:
                 else if (a.kind == "open_corner") r = FaceRole::OpenBevel;
                 else if (a.kind == "closed_corner") r = FaceRole::ClosedBevel;
                 else if (a.kind == "countersink") r = FaceRole::Countersink;
-                else if (a.kind == "rib" && e.children.size() < 2) r = FaceRole::RibTop;
+                else if ((a.kind == "rib" && e.children.size() < 2) || a.kind == "island_top") r = FaceRole::RibTop;
                 if (r != FaceRole::Unclaimed)
                     for (int f : a.faces) set(f, r, e.id);
             }

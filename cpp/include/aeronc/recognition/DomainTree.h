@@ -34,8 +34,8 @@ enum class FaceRole {
 const char* toString(FaceRole r);
 
 struct AttachedFeature {
-    std::string kind;        // rib, flange, open_corner, closed_corner, joggle, floor_fillet,
-                             // corner_fillet, chamfer
+    std::string kind;        // rib, island_top, flange, open_corner, closed_corner, joggle, floor_fillet,
+                             // corner_fillet, chamfer, countersink
     std::vector<int> faces;  // FaceN of the faces forming it
     double radius = 0;       // fillet radius
     double size = 0;         // chamfer width, rib thickness, joggle depth, bevel angle (deg)
