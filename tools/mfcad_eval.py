@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Per-face agreement of AeroNC recognition with the MFCAD labels.
 
-Usage: mfcad_eval.py AERONC_CLI MFCAD_DIR [--out report.md]
+Usage: mfcad_eval.py AERONC_CLI MFCAD_DIR [--out report.md] [--min-binary F] [--min-class F]
+
+With --min-binary/--min-class it exits 1 when the agreement falls below the given floor
+(the test suite uses this to guard the measured figures).
 
 Each part is recognised with `aeronc recognise PART --face-names`; faces are matched to
 labels through their STEP entity names (see shared/data/README.md). Two mappings:
@@ -94,6 +97,11 @@ def main():
         with open(out + ".part", "w") as f:
             f.write(text + "\n")
         os.replace(out + ".part", out)
+    floors = {"--min-binary": okb / tot, "--min-class": okc / tot}
+    for flag, value in floors.items():
+        if flag in sys.argv and value < float(sys.argv[sys.argv.index(flag) + 1]):
+            print("agreement {} = {:.4f} is below {}".format(flag[6:], value, sys.argv[sys.argv.index(flag) + 1]))
+            sys.exit(1)
 
 
 if __name__ == "__main__":

@@ -62,7 +62,7 @@ double AxisRays::firstHit(const Vec3& p, bool up) {
             const gp_Pnt x(p[0] + t * ray.Direction().X(), p[1] + t * ray.Direction().Y(), p[2] + t * ray.Direction().Z());
             double u, v;
             ElSLib::Parameters(f.plane, x, u, v);
-            if (faces_.classifier(i).Perform(gp_Pnt2d(u, v)) != TopAbs_OUT) best = t;
+            if (faces_.classifyUV(i, u, v) != TopAbs_OUT) best = t;
             continue;
         }
         auto& x = hit_[static_cast<std::size_t>(i)];

@@ -4,6 +4,9 @@
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <TopoDS_Wire.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -199,6 +202,58 @@ BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
     auto& c = classifiers_[static_cast<std::size_t>(i)];
     if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[static_cast<std::size_t>(i)].face, 1e-9);
     return *c;
+}
+
+bool FaceCatalogue::WirePolygon::contains(double u, double v) const {
+    if (u < u0 || u > u1 || v < v0 || v > v1) return false;
+    bool in = false;
+    for (std::size_t a = 0, b = pts.size() - 1; a < pts.size(); b = a++) {
+        const auto& p = pts[a];
+        const auto& q = pts[b];
+        if ((p.second > v) != (q.second > v) && u < (q.first - p.first) * (v - p.second) / (q.second - p.second) + p.first)
+            in = !in;
+    }
+    return in;
+}
+
+TopAbs_State FaceCatalogue::classifyUV(int i, double u, double v) const {
+    const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
+    if (faceEdges_[static_cast<std::size_t>(i)].size() <= 64) return classifier(i).Perform(gp_Pnt2d(u, v));
+    if (wireIndex_.empty()) wireIndex_.resize(faces_.size());
+    auto& idx = wireIndex_[static_cast<std::size_t>(i)];
+    if (!idx) {
+        idx = std::make_unique<std::vector<WirePolygon>>();
+        const TopoDS_Wire outer = BRepTools::OuterWire(face);
+        std::vector<TopoDS_Wire> wires{outer};
+        for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next())
+            if (!w.Current().IsSame(outer)) wires.push_back(TopoDS::Wire(w.Current()));
+        for (const TopoDS_Wire& w : wires) {
+            WirePolygon poly;
+            for (BRepTools_WireExplorer ex(w, face); ex.More(); ex.Next()) {
+                double f, l;
+                Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(ex.Current(), face, f, l);
+                if (pc.IsNull()) continue;
+                const int n = Geom2dAdaptor_Curve(pc).GetType() == GeomAbs_Line ? 1 : 24;
+                const bool rev = ex.Current().Orientation() == TopAbs_REVERSED;
+                for (int k = 0; k < n; ++k) {
+                    const double t = rev ? l - (l - f) * k / n : f + (l - f) * k / n;
+                    const gp_Pnt2d q = pc->Value(t);
+                    poly.pts.push_back({q.X(), q.Y()});
+                }
+            }
+            if (poly.pts.size() < 3) continue;
+            poly.u0 = poly.u1 = poly.pts[0].first, poly.v0 = poly.v1 = poly.pts[0].second;
+            for (const auto& q : poly.pts) {
+                poly.u0 = std::min(poly.u0, q.first), poly.u1 = std::max(poly.u1, q.first);
+                poly.v0 = std::min(poly.v0, q.second), poly.v1 = std::max(poly.v1, q.second);
+            }
+            idx->push_back(std::move(poly));
+        }
+    }
+    if (idx->empty() || !(*idx)[0].contains(u, v)) return TopAbs_OUT;
+    for (std::size_t k = 1; k < idx->size(); ++k)
+        if ((*idx)[k].contains(u, v)) return TopAbs_OUT;
+    return TopAbs_IN;
 }
 
 const std::vector<Handle(Geom2d_TrimmedCurve)>& FaceCatalogue::boundaryUV(int i) const {

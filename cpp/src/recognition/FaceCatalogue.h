@@ -54,6 +54,10 @@ public:
     bool reachable(int i, const Vec3& d) const;
     // Classifier of points in face i's parameter space, built once per face.
     BRepTopAdaptor_FClass2d& classifier(int i) const;
+    // Where a point of face i's parameter space lies: IN, OUT or ON. Faces with many
+    // edges (a panel's top face with its pockets) use an index of their wires as polygons,
+    // the rest OCCT's classifier.
+    TopAbs_State classifyUV(int i, double u, double v) const;
     // The face's boundary as trimmed curves in its parameter space (null entry: an edge
     // without one), built once per face.
     const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV(int i) const;
@@ -71,6 +75,12 @@ private:
     mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;
     mutable std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
+    struct WirePolygon {
+        std::vector<std::pair<double, double>> pts;
+        double u0, v0, u1, v1;
+        bool contains(double u, double v) const;
+    };
+    mutable std::vector<std::unique_ptr<std::vector<WirePolygon>>> wireIndex_;  // [0] is the outer wire
 };
 
 }  // namespace aeronc::recognition

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The command line on bad input: a clear message on stderr and a non-zero exit, never a crash.
+# Usage: test_cli.sh AERONC_CLI
+set -u
+cli=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+expect_error() {  # name, expected message fragment, command...
+  local name=$1 want=$2
+  shift 2
+  local err code
+  err=$("$@" 2>&1 >/dev/null)
+  code=$?
+  if [ "$code" -ne 0 ] && [ "$code" -lt 128 ] && grep -q -- "$want" <<<"$err"; then
+    passed=$((passed + 1)); echo "ok   $name"
+  else
+    failed=$((failed + 1)); echo "FAIL $name (exit $code): $err"
+  fi
+}
+
+echo "just some text" > "$tmp/notes.step"
+: > "$tmp/empty.step"
+printf 'ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=GARBAGE(;\nENDSEC;\nEND-ISO-10303-21;\n' > "$tmp/broken.step"
+
+expect_error "text file" "not a STEP" "$cli" recognise "$tmp/notes.step"
+expect_error "empty file" "empty" "$cli" recognise "$tmp/empty.step"
+expect_error "missing file" "no such file" "$cli" recognise "$tmp/none.step"
+expect_error "broken STEP" "STEP" "$cli" recognise "$tmp/broken.step"
+expect_error "unknown option" "unknown option" "$cli" recognise "$tmp/empty.step" --frobnicate
+expect_error "bad direction" "bad direction" "$cli" recognise "$tmp/notes.step" --directions 1:2
+expect_error "unknown command" "unknown command" "$cli" explode
+
+# A good part still works and writes JSON.
+"$cli" panel "$tmp/p.step" --pockets 2x1 --plain 2>/dev/null
+if "$cli" recognise "$tmp/p.step" --directions +Z --json "$tmp/p.json" 2>/dev/null && grep -q '"closed_pocket"' "$tmp/p.json"; then
+  passed=$((passed + 1)); echo "ok   good part"
+else
+  failed=$((failed + 1)); echo "FAIL good part"
+fi
+expect_error "no face normal to direction" "no planar face normal" "$cli" recognise "$tmp/p.step" --directions 1:1:0
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
