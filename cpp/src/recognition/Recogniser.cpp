@@ -1044,27 +1044,44 @@ private:
             tree_.faceRoles[i] = r;
             tree_.faceElement[i] = el;
         };
-        for (const DomainElement& e : tree_.elements) {
-            const bool isHole = e.hole.has_value();
-            bool counterbore = false;
-            for (int c : e.children) counterbore |= tree_.elements[static_cast<std::size_t>(c)].hole.has_value() && isHole;
-            for (int f : e.floorFaces) set(f, counterbore ? FaceRole::CounterboreFloor : FaceRole::Floor, e.id);
-            for (const AttachedFeature& a : e.attached) {
-                FaceRole r = FaceRole::Unclaimed;
-                if (a.kind == "corner_fillet") r = isHole ? FaceRole::HoleWall : FaceRole::CornerFillet;
-                else if (a.kind == "floor_fillet") r = FaceRole::FloorFillet;
-                else if (a.kind == "open_corner") r = FaceRole::OpenBevel;
-                else if (a.kind == "closed_corner") r = FaceRole::ClosedBevel;
-                else if (a.kind == "countersink") r = FaceRole::Countersink;
-                else if ((a.kind == "rib" && e.children.size() < 2) || a.kind == "island_top") r = FaceRole::RibTop;
-                if (r != FaceRole::Unclaimed)
-                    for (int f : a.faces) set(f, r, e.id);
+        // By priority over all elements: a face that is some element's floor is a floor,
+        // whatever else touches it; then walls; then blends and chamfers; then tops.
+        auto attachedRole = [](const AttachedFeature& a, const DomainElement& e) {
+            if (a.kind == "corner_fillet") return e.hole ? FaceRole::HoleWall : FaceRole::CornerFillet;
+            if (a.kind == "floor_fillet") return FaceRole::FloorFillet;
+            if (a.kind == "open_corner") return FaceRole::OpenBevel;
+            if (a.kind == "closed_corner") return FaceRole::ClosedBevel;
+            if (a.kind == "countersink") return FaceRole::Countersink;
+            if ((a.kind == "rib" && e.children.size() < 2) || a.kind == "island_top") return FaceRole::RibTop;
+            return FaceRole::Unclaimed;
+        };
+        for (int pass = 0; pass < 4; ++pass)
+            for (const DomainElement& e : tree_.elements) {
+                const bool isHole = e.hole.has_value();
+                if (pass == 0) {
+                    bool counterbore = false;
+                    for (int c : e.children) counterbore |= isHole && tree_.elements[static_cast<std::size_t>(c)].hole.has_value();
+                    for (int f : e.floorFaces) set(f, counterbore ? FaceRole::CounterboreFloor : FaceRole::Floor, e.id);
+                } else if (pass == 1) {
+                    for (const AttachedFeature& a : e.attached)  // walls of a particular kind first
+                        if (a.kind == "corner_fillet" || a.kind == "open_corner" || a.kind == "closed_corner")
+                            for (int f : a.faces) set(f, attachedRole(a, e), e.id);
+                    for (int f : e.contourFaces) set(f, isHole ? FaceRole::HoleWall : FaceRole::Wall, e.id);
+                    for (auto& isl : e.islandFaces)
+                        for (int f : isl) set(f, FaceRole::IslandWall, e.id);
+                } else if (pass == 2) {
+                    for (const AttachedFeature& a : e.attached) {
+                        const FaceRole r = attachedRole(a, e);
+                        if (r != FaceRole::RibTop && r != FaceRole::Unclaimed)
+                            for (int f : a.faces) set(f, r, e.id);
+                    }
+                    for (int f : e.chamferFaces) set(f, FaceRole::Chamfer, e.id);
+                } else {
+                    for (const AttachedFeature& a : e.attached)
+                        if (attachedRole(a, e) == FaceRole::RibTop)
+                            for (int f : a.faces) set(f, FaceRole::RibTop, e.id);
+                }
             }
-            for (int f : e.contourFaces) set(f, isHole ? FaceRole::HoleWall : FaceRole::Wall, e.id);
-            for (auto& isl : e.islandFaces)
-                for (int f : isl) set(f, FaceRole::IslandWall, e.id);
-            for (int f : e.chamferFaces) set(f, FaceRole::Chamfer, e.id);
-        }
         // What no element machines: the top of the part in the first setup, else stock.
         if (!tree_.setups.empty()) {
             const SetupFrame frame(tree_.setups[0].direction);
