@@ -33,7 +33,7 @@ def main():
         for e in r["elements"]:
             count[e["type"]] = count.get(e["type"], 0) + 1
         picture.render(shape, r, os.path.join(out, name + ".png"),
-                       title="{}: {}".format(name, ", ".join(s["name"] for s in r["setups"])))
+                       title="{}: {} setup directions, {} elements".format(name, len(r["setups"]), len(r["elements"])))
         rows.append("| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} |".format(
             name, r["faceCount"], len(r["setups"]), count.get("closed_pocket", 0), count.get("open_pocket", 0),
             count.get("opening", 0), count.get("hole", 0), sum(1 for x in r["faceRoles"] if x in ("stock", "unclaimed")),
