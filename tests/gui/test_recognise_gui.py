@@ -259,6 +259,24 @@ def run():
     want = set(el.Faces[0][1])
     check("element selection highlights its faces", sel and set(sel[0].SubElementNames) == want,
           [s.SubElementNames for s in sel])
+    # What a person sees: the tree opened on the machining-domain tree, an element selected.
+    for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
+        tree_view.expandAll()
+    pump(0.5)
+    window = os.path.join(ARTIFACTS, "aeronc_main_window.png")
+    mw = Gui.getMainWindow()
+    shot_all = mw.grab()
+    # A window grab leaves the OpenGL view blank under Xvfb: paint the view's own image in.
+    subs = [w for w in mw.findChild(QtGui.QMdiArea).subWindowList() if doc.Name in w.windowTitle()]
+    view_widget = subs[-1].widget()
+    view_png = os.path.join(ARTIFACTS, "aeronc_view.png")
+    Gui.activeDocument().activeView().saveImage(view_png, view_widget.width(), view_widget.height(), "Current")
+    painter = QtGui.QPainter(shot_all)
+    painter.drawImage(view_widget.mapTo(mw, QtCore.QPoint(0, 0)), QtGui.QImage(view_png))
+    painter.end()
+    shot_all.save(window)
+    check("main window screenshot saved", os.path.getsize(window) > 20000, window)
+    print("screenshot:", window)
     Gui.Selection.clearSelection()
 
     # double-click: the panel edits the group; OK recognises again into it
