@@ -8,7 +8,9 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp.hxx>
@@ -175,6 +177,22 @@ TEST(BadInput, OpenShellAndSeveralSolids) {
         EXPECT_NE(std::string(e.what()).find("2 solids"), std::string::npos);
     }
     EXPECT_THROW(partFromBrepText("not brep"), Error);
+}
+
+TEST(BadInput, SelfIntersectingBrep) {
+    // A prism over a figure-eight outline: a closed shell whose faces cross themselves.
+    BRepBuilderAPI_MakePolygon eight;
+    for (auto [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {10, 10}, {10, 0}, {0, 10}})
+        eight.Add(gp_Pnt(x, y, 0));
+    eight.Close();
+    const TopoDS_Face base = BRepBuilderAPI_MakeFace(eight.Wire(), true);
+    const TopoDS_Shape prism = BRepPrimAPI_MakePrism(base, gp_Vec(0, 0, 5)).Shape();
+    try {
+        validatedSolid(prism, "figure eight");
+        FAIL() << "a self-intersecting B-rep was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("invalid"), std::string::npos) << e.what();
+    }
 }
 
 TEST(BadInput, NoFaceNormalToDirection) {
