@@ -12,9 +12,7 @@ AERONC_PART=<file.step> runs the same on another part. Exit code 0 on success.
 """
 import json
 import os
-import sys
 import time
-import traceback
 
 
 def main():
@@ -52,7 +50,7 @@ def main():
     png = picture.render(part.Shape, result, os.path.join(out, name + "_features.png"),
                          title="{}: machining features".format(name))
 
-    print("{}: {} faces recognised in {:.2f} s".format(part_path, result["faceCount"], seconds))
+    print("{}: {} faces recognised into the document in {:.2f} s".format(part_path, result["faceCount"], seconds))
     for setup in result["setups"]:
         mine = [e for e in result["elements"] if e["setup"] == setup["id"]]
         counts = {}
@@ -65,11 +63,6 @@ def main():
     print("wrote {}, {}, {}".format(os.path.join(out, name + ".FCStd"), os.path.join(out, "recognition.json"), png))
 
 
-try:
-    main()
-    code = 0
-except Exception:
-    traceback.print_exc()
-    code = 1
-sys.stdout.flush()
-os._exit(code)
+from aeronc.script import run  # noqa: E402
+
+run(main)

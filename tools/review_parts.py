@@ -6,9 +6,7 @@ Writes <name>.png per part and summary.md (elements per type and setup, faces pe
 time). Runs headless against the installed addon.
 """
 import os
-import sys
 import time
-import traceback
 
 
 def main():
@@ -44,11 +42,6 @@ def main():
     os.replace(os.path.join(out, "summary.md.part"), os.path.join(out, "summary.md"))
 
 
-try:
-    main()
-    code = 0
-except Exception:
-    traceback.print_exc()
-    code = 1
-sys.stdout.flush()
-os._exit(code)
+from aeronc.script import run  # noqa: E402
+
+run(main)
