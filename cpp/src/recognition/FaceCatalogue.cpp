@@ -158,7 +158,7 @@ bool FaceCatalogue::reachable(int i, const Vec3& d) const {
     return std::isinf(firstHit({p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]}, d));
 }
 
-std::vector<std::pair<double, double>> FaceCatalogue::heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const {
+std::vector<FaceCatalogue::HeightRange> FaceCatalogue::heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const {
     gp_Trsf t;
     t.SetValues(u[0], u[1], u[2], 0, v[0], v[1], v[2], 0, w[0], w[1], w[2], 0);
     const TopLoc_Location loc(t);
@@ -175,7 +175,7 @@ std::vector<std::pair<double, double>> FaceCatalogue::heightRanges(const Vec3& u
         const double g = b.GetGap();
         edge[static_cast<std::size_t>(e)] = {z0 + g, z1 - g};
     }
-    std::vector<std::pair<double, double>> out(faces_.size());
+    std::vector<HeightRange> out(faces_.size());
     for (std::size_t i = 0; i < faces_.size(); ++i) {
         double lo = std::numeric_limits<double>::max(), hi = -lo;
         for (int e : faceEdges_[i]) {
@@ -184,7 +184,14 @@ std::vector<std::pair<double, double>> FaceCatalogue::heightRanges(const Vec3& u
             lo = std::min(lo, r.first), hi = std::max(hi, r.second);
         }
         if (lo > hi) heightRange(static_cast<int>(i), w, lo, hi);  // no usable edge (closed surface)
-        out[i] = {lo, hi};
+        // Edges that do not reach the top bound the face from below.
+        double base = lo;
+        const double tol = 1e-6 * (1 + std::fabs(hi));
+        for (int e : faceEdges_[i]) {
+            const auto& r = edge[static_cast<std::size_t>(e)];
+            if (r.second >= r.first && r.second < hi - tol) base = std::max(base, r.second);
+        }
+        out[i] = {lo, hi, base};
     }
     return out;
 }

@@ -46,7 +46,12 @@ public:
     // Height ranges of all faces along the frame's axis, from the boxes of their edges in
     // that frame: exact for lines and arcs, so for planes and for surfaces of revolution
     // about the axis, and rotation-independent.
-    std::vector<std::pair<double, double>> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
+    // `base` is where the face's lower boundary ends at the top: its lowest height for a
+    // flat bottom edge, the top of the saddle where a hole breaks into a transverse bore.
+    struct HeightRange {
+        double lo, hi, base;
+    };
+    std::vector<HeightRange> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
     // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
     // Whether the ray from inside face i along d leaves the part without meeting it:

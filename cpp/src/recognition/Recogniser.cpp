@@ -73,6 +73,7 @@ enum class Attitude { Up, Down, Vertical, Inclined, Curved };
 struct FaceInSetup {
     Attitude att = Attitude::Curved;
     double lo = 0, hi = 0;  // height range
+    double base = 0;        // top of its lower boundary (see FaceCatalogue::HeightRange)
     double h = 0;           // planes normal to the axis: their height
 };
 
@@ -186,8 +187,9 @@ private:
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInfo& f = faces_[i];
             FaceInSetup& s = out[static_cast<std::size_t>(i)];
-            s.lo = ranges[static_cast<std::size_t>(i)].first;
-            s.hi = ranges[static_cast<std::size_t>(i)].second;
+            s.lo = ranges[static_cast<std::size_t>(i)].lo;
+            s.hi = ranges[static_cast<std::size_t>(i)].hi;
+            s.base = ranges[static_cast<std::size_t>(i)].base;
             if (f.kind == SurfaceKind::Plane) {
                 const double c = dot(f.normal, w);
                 if (c >= cosTol()) s.att = Attitude::Up;
@@ -375,6 +377,9 @@ private:
             else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
                      onDrillPoint(i, s.lo, fs))
                 levels.push_back(s.lo), holeBottom.push_back(true);
+            else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
+                     s.base > s.lo + 10 * linTol())
+                levels.push_back(s.base), holeBottom.push_back(true);  // a hole breaking into a bore
         }
         std::vector<std::pair<double, bool>> lv;
         for (std::size_t k = 0; k < levels.size(); ++k) lv.push_back({levels[k], holeBottom[k]});
@@ -739,7 +744,7 @@ private:
     bool leavesPart(Candidate& c, const std::vector<FaceInSetup>& fs, const SetupFrame& frame, double h, double z) {
         if (c.contourFaces.empty()) return false;
         for (int f : c.contourFaces)
-            if (std::fabs(fs[static_cast<std::size_t>(f)].lo - h) > 10 * linTol()) return false;
+            if (std::fabs(fs[static_cast<std::size_t>(f)].base - h) > 10 * linTol()) return false;
         if (!c.hasSample) c.sample = c.region.interiorPoint(), c.hasSample = true;
         // Looking down from the slice: material right under the level means a floor, not an exit.
         const Vec3 q = frame.world(c.sample, z);
