@@ -369,30 +369,18 @@ private:
 
         // Slicing levels: floors, hole bottoms, and the faces openings leave the part by.
         std::vector<double> levels{h0};
-        std::vector<bool> holeBottom{false};
         for (int i = 0; i < faces_.size(); ++i) {
             const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-            if (s.att == Attitude::Up && reachableNow(i)) levels.push_back(s.h), holeBottom.push_back(false);
-            else if (s.att == Attitude::Down) levels.push_back(s.h), holeBottom.push_back(false);  // openings exit here
-            else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
-                     onDrillPoint(i, s.lo, fs))
-                levels.push_back(s.lo), holeBottom.push_back(true);
-            else if (s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave &&
-                     s.base > s.lo + 10 * linTol())
-                levels.push_back(s.base), holeBottom.push_back(true);  // a hole breaking into a bore
+            const bool holeWall = s.att == Attitude::Vertical && faces_[i].kind == SurfaceKind::Cylinder && faces_[i].concave;
+            if (s.att == Attitude::Up && reachableNow(i)) levels.push_back(s.h);
+            else if (s.att == Attitude::Down) levels.push_back(s.h);  // openings leave here
+            else if (holeWall && onDrillPoint(i, s.lo, fs)) levels.push_back(s.lo);
+            else if (holeWall && s.base > s.lo + 10 * linTol()) levels.push_back(s.base);  // breaks into a bore
         }
-        std::vector<std::pair<double, bool>> lv;
-        for (std::size_t k = 0; k < levels.size(); ++k) lv.push_back({levels[k], holeBottom[k]});
-        std::sort(lv.begin(), lv.end());
-        std::vector<std::pair<double, bool>> uniq;  // bool: only hole bottoms at this level
-        for (auto& p : lv) {
-            if (p.first >= h1 - 10 * linTol()) continue;
-            if (!uniq.empty() && p.first - uniq.back().first <= 10 * linTol()) {
-                uniq.back().second = uniq.back().second && p.second;
-            } else {
-                uniq.push_back(p);
-            }
-        }
+        std::sort(levels.begin(), levels.end());
+        std::vector<double> uniq;
+        for (double l : levels)
+            if (l < h1 - 10 * linTol() && (uniq.empty() || l - uniq.back() > 10 * linTol())) uniq.push_back(l);
 
         std::vector<double> critical;  // heights where faces start or end
         for (const FaceInSetup& f : fs) critical.push_back(f.lo), critical.push_back(f.hi);
@@ -401,8 +389,8 @@ private:
         const auto t0 = std::chrono::steady_clock::now();
         for (std::size_t li = 0; li < uniq.size(); ++li) {
             progress(double(li) / uniq.size(), "slicing " + setup.name);
-            const double h = uniq[li].first;
-            const double hn = li + 1 < uniq.size() ? uniq[li + 1].first : h1;
+            const double h = uniq[li];
+            const double hn = li + 1 < uniq.size() ? uniq[li + 1] : h1;
             sliceLevel(frame, fs, critical, h, hn, h0, h1, blo, bhi, li == 0, setup.id, made);
         }
         if (std::getenv("AERONC_TRACE"))
