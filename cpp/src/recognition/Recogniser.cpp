@@ -391,7 +391,7 @@ private:
             progress(double(li) / uniq.size(), "slicing " + setup.name);
             const double h = uniq[li];
             const double hn = li + 1 < uniq.size() ? uniq[li + 1] : h1;
-            sliceLevel(frame, fs, critical, h, hn, h0, h1, blo, bhi, li == 0, setup.id, made);
+            sliceLevel(frame, fs, critical, h, hn, h1, blo, bhi, li == 0, setup.id, made);
         }
         if (std::getenv("AERONC_TRACE"))
             std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(), uniq.size(),
@@ -459,7 +459,7 @@ private:
     }
 
     void sliceLevel(const SetupFrame& frame, const std::vector<FaceInSetup>& fs, const std::vector<double>& critical,
-                    double h, double hn, double h0, double h1, const P2& blo, const P2& bhi, bool bottom, int setupId,
+                    double h, double hn, double h1, const P2& blo, const P2& bhi, bool bottom, int setupId,
                     std::vector<Internal>& made) {
         const double tol = 10 * linTol();
         // Slice above floor fillets and bottom chamfers so the loops run on the walls.
