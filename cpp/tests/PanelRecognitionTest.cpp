@@ -4,7 +4,9 @@
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <gtest/gtest.h>
+#include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
+#include <set>
 
 #include <cstdlib>
 
@@ -146,4 +148,25 @@ TEST(PanelRecognition, FastSectionAgreesWithGeneralSection) {
         EXPECT_EQ(fast.elements[k].contourFaces.size(), general.elements[k].contourFaces.size());
     }
     EXPECT_EQ(fast.faceRoles, general.faceRoles);
+}
+
+// Any direction the user gives: the panel turned in space, recognised along its own turned
+// axes, gives the same elements as the upright panel along ±Z.
+TEST(PanelRecognition, GivenTiltedDirections) {
+    const Panel panel = makePanel(PanelSpec{});
+    gp_Trsf turn;
+    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, -2, 0.5)), 0.6);
+    const gp_Dir up = gp_Dir(0, 0, 1).Transformed(turn);
+    RecogniseOptions upright, tilted;
+    upright.directions = {{0, 0, 1}, {0, 0, -1}};
+    tilted.directions = {{up.X(), up.Y(), up.Z()}, {-up.X(), -up.Y(), -up.Z()}};
+    const DomainTree a = recognise(validatedSolid(panel.shape, "panel"), upright);
+    const DomainTree b = recognise(validatedSolid(panel.shape.Moved(TopLoc_Location(turn)), "turned"), tilted);
+    ASSERT_EQ(a.elements.size(), panel.truth.size());
+    ASSERT_EQ(b.elements.size(), a.elements.size());
+    std::multiset<std::string> ta, tb;
+    for (const DomainElement& e : a.elements) ta.insert(std::string(toString(e.type)) + "@" + std::to_string(std::lround(e.depth * 1000)));
+    for (const DomainElement& e : b.elements) tb.insert(std::string(toString(e.type)) + "@" + std::to_string(std::lround(e.depth * 1000)));
+    EXPECT_EQ(ta, tb);
+    EXPECT_EQ(a.faceRoles, b.faceRoles);
 }
