@@ -31,7 +31,7 @@ namespace {
 Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 }  // namespace
 
-FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) : solid_(solid) {
+FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
     TopExp::MapShapes(solid, TopAbs_FACE, map_);
     interior_.assign(static_cast<std::size_t>(map_.Extent()), {false, Vec3{0, 0, 0}});
     faces_.resize(static_cast<std::size_t>(map_.Extent()));
@@ -140,22 +140,6 @@ void FaceCatalogue::heightRange(int i, const Vec3& d, double& lo, double& hi) co
         lo = std::min(lo, h);
         hi = std::max(hi, h);
     }
-}
-
-double FaceCatalogue::firstHit(const Vec3& p, const Vec3& d) const {
-    if (!rays_) {
-        rays_ = std::make_unique<IntCurvesFace_ShapeIntersector>();
-        rays_->Load(solid_, 1e-7);
-    }
-    rays_->PerformNearest(gp_Lin(gp_Pnt(p[0], p[1], p[2]), gp_Dir(d[0], d[1], d[2])), 0, 1e100);
-    if (!rays_->IsDone() || rays_->NbPnt() == 0) return std::numeric_limits<double>::infinity();
-    return rays_->WParameter(1);
-}
-
-bool FaceCatalogue::reachable(int i, const Vec3& d) const {
-    const Vec3 p = interiorPoint(i);
-    const double eps = 1e-4;  // start just off the face so it does not see itself
-    return std::isinf(firstHit({p[0] + eps * d[0], p[1] + eps * d[1], p[2] + eps * d[2]}, d));
 }
 
 std::vector<FaceCatalogue::HeightRange> FaceCatalogue::heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const {

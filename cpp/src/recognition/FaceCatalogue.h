@@ -9,7 +9,6 @@
 #include <TopoDS_Shape.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
-#include <IntCurvesFace_ShapeIntersector.hxx>
 #include <memory>
 #include <vector>
 
@@ -54,9 +53,6 @@ public:
     std::vector<HeightRange> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
     // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
-    // Whether the ray from inside face i along d leaves the part without meeting it:
-    // the tool can reach the face from d.
-    bool reachable(int i, const Vec3& d) const;
     // Classifier of points in face i's parameter space, built once per face.
     BRepTopAdaptor_FClass2d& classifier(int i) const;
     // Where a point of face i's parameter space lies: IN, OUT or ON. Faces with many
@@ -66,8 +62,6 @@ public:
     // The face's boundary as trimmed curves in its parameter space (null entry: an edge
     // without one), built once per face.
     const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV(int i) const;
-    // Distance from p along unit d to the first face of the part; infinity if none.
-    double firstHit(const Vec3& p, const Vec3& d) const;
 
 private:
     Vec3 searchInterior(int i) const;
@@ -75,9 +69,7 @@ private:
     TopTools_IndexedMapOfShape map_;
     TopTools_IndexedMapOfShape edges_;
     std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
-    TopoDS_Shape solid_;
     mutable std::vector<std::pair<bool, Vec3>> interior_;
-    mutable std::unique_ptr<IntCurvesFace_ShapeIntersector> rays_;
     mutable std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
     struct WirePolygon {

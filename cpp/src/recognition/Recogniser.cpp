@@ -294,7 +294,9 @@ private:
 
     // Unclaimed floor area seen from d plus unclaimed concave cylinder area along d.
     double score(const Vec3& d, bool consume = false) {
-        const std::vector<FaceInSetup> fs = classify(SetupFrame(d));
+        const SetupFrame frame(d);
+        const std::vector<FaceInSetup> fs = classify(frame);
+        std::unique_ptr<AxisRays> rays;  // built on the first floor that needs it
         double s = 0;
         for (int i = 0; i < faces_.size(); ++i) {
             if (claimed_[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
@@ -304,7 +306,8 @@ private:
             if (fi.att == Attitude::Up) {
                 bool rising = false;
                 for (int n : f.neighbours) rising |= fs[static_cast<std::size_t>(n)].hi > fi.h + 10 * linTol();
-                if (rising && faces_.reachable(i, d)) s += faces_.area(i);
+                if (rising && !rays) rays = std::make_unique<AxisRays>(faces_, frame);
+                if (rising && rays->reachable(i)) s += faces_.area(i);
             } else if (f.kind == SurfaceKind::Cylinder && f.concave && fi.att == Attitude::Vertical) {
                 s += 0.5 * faces_.area(i);
             }
