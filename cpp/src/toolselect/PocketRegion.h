@@ -1,0 +1,36 @@
+#pragma once
+// The pocket as a Clipper region (outers CCW, holes CW), shared by the selectors.
+#include <aeronc/toolselect/PocketGeometry.h>
+
+#include <polyclipping/clipper.hpp>
+
+namespace aeronc::toolselect {
+
+constexpr double kScale = 1e4;  // 0.1 µm, as recognition's kClipperScale
+
+struct PocketRegion {
+    ClipperLib::Paths paths;
+    double area = 0;  // mm²
+};
+
+// Outer minus the union of the islands. Throws aeronc::inputError when degenerate.
+PocketRegion makeRegion(const PocketGeometry& pocket);
+
+double areaOf(const ClipperLib::Paths& ps);  // mm², holes subtracted
+
+// Round-join offset of a whole region; negative delta erodes.
+ClipperLib::Paths offsetRegion(const ClipperLib::Paths& ps, double delta, double arcTolerance);
+
+// Chord error (sagitta) of the round joins. Coarser is faster; with the equal-area
+// correction in openRegion, 2e-3·r keeps eta within ~1e-4.
+double arcToleranceFor(double radius);
+
+// eta only (erode, dilate, clip), the part the roughing search repeats. `eroded` is the
+// erosion by r, cleaned.
+struct Opening {
+    ClipperLib::Paths eroded;
+    double machinableArea = 0;
+};
+Opening openRegion(const PocketRegion& region, double radius);
+
+}  // namespace aeronc::toolselect
