@@ -1,0 +1,97 @@
+#pragma once
+// The machining knowledge base: resource facts (machines, materials, tools, cutting data)
+// and rule knowledge (thresholds, process templates, sequencing rules) in one SQLite file.
+//
+// The layout is the reviewable SQL text in resources/kb/schema.sql, the shipped rows are
+// resources/kb/default_data.sql. Every write is one transaction; every failure a caller can
+// cause or fix (missing folder, corrupt or locked file, unknown material, impossible tool)
+// is an aeronc::inputError with a message that says which.
+#include <aeronc/toolselect/Tool.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct sqlite3;
+
+namespace aeronc::kb {
+
+// Cutting data for one workpiece material x tool material x operation, with the
+// coefficients of F_c = 9.81*C_F*a_p^x_F*f_z^y_F*a_e^u_F*Z/(d_0^q_F*n^w_F)*K_Fc and of the
+// Taylor tool life v_c*T^m = C.
+struct CuttingCondition {
+    std::string workpieceMaterial;
+    std::string toolMaterial;
+    std::string operation;
+    double vc = 0;       // m/min
+    double fz = 0;       // mm per tooth
+    double ap = 0;       // mm
+    double aeRatio = 0;  // a_e / tool diameter
+    double cF = 0, xF = 0, yF = 0, uF = 0, qF = 0, wF = 0, kFc = 1;
+    double taylorC = 0, taylorM = 0;
+};
+
+struct Machine {
+    std::string name;
+    std::string type;
+    std::string kinematics;
+    double travelX = 0, travelY = 0, travelZ = 0;  // mm
+    std::optional<double> aMin, aMax, cMin, cMax;  // degrees; empty: no such axis
+    double maxSpindleRpm = 0;
+    double powerKw = 0;
+    double maxFeedMmMin = 0;
+    double maxForceN = 0;
+    double efficiency = 1;
+    double toolChangeS = 0;
+};
+
+class KnowledgeBase {
+public:
+    // The schema version this build writes and reads; older files are migrated on open.
+    static constexpr int kSchemaVersion = 1;
+
+    // Opens the knowledge base at `path`. A missing file is built from the two SQL texts
+    // (under a temporary name, then renamed, so a half-built file is never left at `path`).
+    // An existing file from an older schema version is migrated in one transaction, keeping
+    // the user's rows; a copy of the old file is kept next to it as `<path>.v<N>.bak`.
+    static KnowledgeBase open(const std::string& path, const std::string& schemaSql,
+                              const std::string& defaultDataSql);
+
+    KnowledgeBase(KnowledgeBase&&) noexcept;
+    KnowledgeBase& operator=(KnowledgeBase&&) noexcept;
+    ~KnowledgeBase();
+
+    const std::string& path() const { return path_; }
+    int schemaVersion() const;
+
+    // All tools, largest diameter first (ties by id).
+    std::vector<toolselect::Tool> tools() const;
+    // Validates and inserts one tool; `cost` is optional. Throws inputError naming the tool for
+    // impossible dimensions, a duplicate id or an unknown tool material; the database is unchanged.
+    void addTool(const toolselect::Tool& tool, std::optional<double> cost = std::nullopt);
+    // Inserts all tools or none: one bad tool leaves the database as it was.
+    void importTools(const std::vector<toolselect::Tool>& tools);
+
+    // A rule threshold such as "eta_min" or "mu_merge"; throws inputError if unknown.
+    double threshold(const std::string& name) const;
+    // Throws inputError for an unknown workpiece or tool material, or a missing combination.
+    CuttingCondition cuttingCondition(const std::string& workpieceMaterial, const std::string& toolMaterial,
+                                      const std::string& operation) const;
+    Machine machine(const std::string& name) const;
+    std::vector<std::string> workpieceMaterials() const;
+    std::vector<std::string> machineNames() const;
+
+    struct Closer {
+        void operator()(sqlite3* db) const;
+    };
+
+private:
+    KnowledgeBase(std::unique_ptr<sqlite3, Closer> db, std::string path);
+    void insertTools(const std::vector<toolselect::Tool>& tools, const std::vector<std::optional<double>>& costs);
+
+    std::unique_ptr<sqlite3, Closer> db_;
+    std::string path_;
+};
+
+}  // namespace aeronc::kb

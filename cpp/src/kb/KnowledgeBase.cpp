@@ -1,0 +1,465 @@
+#include <aeronc/core/Error.h>
+#include <aeronc/kb/KnowledgeBase.h>
+
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <system_error>
+#include <utility>
+
+namespace fs = std::filesystem;
+
+namespace aeronc::kb {
+
+using toolselect::Tool;
+
+namespace {
+
+// Wait this long for another connection's lock before reporting "locked".
+constexpr int kBusyTimeoutMs = 250;
+
+// One migration step per old version: the SQL that turns a version-N database into a
+// version-(N+1) one. All steps from the file's version up run in one transaction, then
+// schema_version is set to KnowledgeBase::kSchemaVersion. Steps must keep user rows.
+//
+// Version 0 is the layout before versioning: no schema_version table and no tool.cost
+// column. The step adds both, and creates the rule tables a version-0 file may lack,
+// seeding the two thresholds the selector needs when they are absent.
+const std::map<int, const char*> kMigrations = {
+    {0, R"sql(
+ALTER TABLE tool ADD COLUMN cost REAL CHECK (cost IS NULL OR cost >= 0);
+CREATE TABLE schema_version (version INTEGER NOT NULL);
+INSERT INTO schema_version (version) VALUES (0);
+CREATE TABLE IF NOT EXISTS threshold (
+    name TEXT PRIMARY KEY NOT NULL, value REAL NOT NULL, description TEXT);
+INSERT OR IGNORE INTO threshold (name, value, description) VALUES
+    ('eta_min', 0.85, 'least machinable ratio A_m/A for a roughing tool'),
+    ('mu_merge', 0.70, 'merge two tool groups onto the smaller tool when mu exceeds this');
+CREATE TABLE IF NOT EXISTS process_template (
+    id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, steps TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS sequencing_rule (
+    id INTEGER PRIMARY KEY, priority INTEGER NOT NULL UNIQUE, rule TEXT NOT NULL);
+)sql"},
+};
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+// The one place sqlite result codes become messages.
+[[noreturn]] void fail(sqlite3* db, int rc, const std::string& path, const std::string& what) {
+    const std::string detail = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    const int primary = rc & 0xff;
+    std::ostringstream m;
+    m << "knowledge base " << quoted(path) << ": ";
+    if (primary == SQLITE_BUSY || primary == SQLITE_LOCKED)
+        m << "the database is locked by another program or session (" << detail << ") while " << what
+          << "; close the other program and retry";
+    else if (primary == SQLITE_NOTADB)
+        m << "file is not a database; it is corrupt or some other kind of file (sqlite: " << detail << ")";
+    else if (primary == SQLITE_CORRUPT)
+        m << "the database file is corrupt (" << detail << ")";
+    else if (primary == SQLITE_CANTOPEN)
+        m << "cannot open the file (" << detail << ")";
+    else if (primary == SQLITE_READONLY || primary == SQLITE_PERM)
+        m << "the file is read-only (" << detail << ") while " << what;
+    else
+        m << what << " failed: " << detail;
+    throw inputError(m.str());
+}
+
+class Statement {
+public:
+    Statement(sqlite3* db, const std::string& path, const char* sql) : db_(db), path_(path) {
+        const int rc = sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr);
+        if (rc != SQLITE_OK) fail(db_, rc, path_, "preparing a query");
+    }
+    Statement(const Statement&) = delete;
+    Statement& operator=(const Statement&) = delete;
+    ~Statement() { sqlite3_finalize(stmt_); }
+
+    Statement& bind(int i, const std::string& v) {
+        check(sqlite3_bind_text(stmt_, i, v.c_str(), static_cast<int>(v.size()), SQLITE_TRANSIENT));
+        return *this;
+    }
+    Statement& bind(int i, double v) { check(sqlite3_bind_double(stmt_, i, v)); return *this; }
+    Statement& bind(int i, int v) { check(sqlite3_bind_int(stmt_, i, v)); return *this; }
+    Statement& bind(int i, std::optional<double> v) {
+        check(v ? sqlite3_bind_double(stmt_, i, *v) : sqlite3_bind_null(stmt_, i));
+        return *this;
+    }
+    // Returns true while there is a row; throws on an error with `what` in the message.
+    bool step(const std::string& what = "reading") {
+        const int rc = sqlite3_step(stmt_);
+        if (rc == SQLITE_ROW) return true;
+        if (rc == SQLITE_DONE) return false;
+        lastError_ = sqlite3_extended_errcode(db_);
+        fail(db_, lastError_, path_, what);
+    }
+    // Like step() but returns the result code instead of throwing (for constraint mapping).
+    int tryStep() { return sqlite3_step(stmt_); }
+    void reset() { sqlite3_reset(stmt_); sqlite3_clear_bindings(stmt_); }
+
+    std::string text(int c) const {
+        const unsigned char* p = sqlite3_column_text(stmt_, c);
+        return p ? reinterpret_cast<const char*>(p) : std::string();
+    }
+    double real(int c) const { return sqlite3_column_double(stmt_, c); }
+    int integer(int c) const { return sqlite3_column_int(stmt_, c); }
+    std::optional<double> optReal(int c) const {
+        if (sqlite3_column_type(stmt_, c) == SQLITE_NULL) return std::nullopt;
+        return real(c);
+    }
+
+private:
+    void check(int rc) { if (rc != SQLITE_OK) fail(db_, rc, path_, "binding a value"); }
+    sqlite3* db_;
+    const std::string& path_;
+    sqlite3_stmt* stmt_ = nullptr;
+    int lastError_ = 0;
+};
+
+void exec(sqlite3* db, const std::string& path, const std::string& sql, const std::string& what) {
+    char* err = nullptr;
+    const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err);
+    if (rc == SQLITE_OK) return;
+    std::string detail = err ? err : sqlite3_errmsg(db);
+    sqlite3_free(err);
+    const int primary = rc & 0xff;
+    if (primary == SQLITE_BUSY || primary == SQLITE_LOCKED || primary == SQLITE_NOTADB ||
+        primary == SQLITE_CORRUPT || primary == SQLITE_READONLY)
+        fail(db, rc, path, what);
+    throw inputError("knowledge base " + quoted(path) + ": " + what + " failed: " + detail);
+}
+
+// BEGIN IMMEDIATE takes the write lock up front, so a locked file is reported before any
+// change; the destructor rolls back unless commit() ran.
+class Transaction {
+public:
+    Transaction(sqlite3* db, const std::string& path, const std::string& what) : db_(db), path_(path), what_(what) {
+        exec(db_, path_, "BEGIN IMMEDIATE", what_);
+    }
+    Transaction(const Transaction&) = delete;
+    Transaction& operator=(const Transaction&) = delete;
+    ~Transaction() {
+        if (!done_) sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    }
+    void commit() {
+        exec(db_, path_, "COMMIT", what_);
+        done_ = true;
+    }
+
+private:
+    sqlite3* db_;
+    const std::string& path_;
+    std::string what_;
+    bool done_ = false;
+};
+
+std::unique_ptr<sqlite3, KnowledgeBase::Closer> openConnection(const std::string& path, int flags) {
+    sqlite3* raw = nullptr;
+    const int rc = sqlite3_open_v2(path.c_str(), &raw, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+    std::unique_ptr<sqlite3, KnowledgeBase::Closer> db(raw);
+    if (rc != SQLITE_OK) fail(raw, rc, path, "opening");
+    sqlite3_extended_result_codes(raw, 1);
+    sqlite3_busy_timeout(raw, kBusyTimeoutMs);
+    exec(raw, path, "PRAGMA foreign_keys = ON", "enabling foreign keys");
+    return db;
+}
+
+bool hasTable(sqlite3* db, const std::string& path, const char* name) {
+    Statement s(db, path, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?");
+    s.bind(1, std::string(name));
+    return s.step("reading the schema");
+}
+
+// -1: an empty database (no tables at all).
+int detectVersion(sqlite3* db, const std::string& path) {
+    // The first read: a corrupt, foreign or locked file fails here.
+    Statement count(db, path, "SELECT count(*) FROM sqlite_master");
+    count.step("reading the schema");
+    if (count.integer(0) == 0) return -1;
+    if (hasTable(db, path, "schema_version")) {
+        Statement s(db, path, "SELECT max(version) FROM schema_version");
+        if (!s.step("reading the schema version") || s.optReal(0) == std::nullopt)
+            throw inputError("knowledge base " + quoted(path) + ": the schema_version table is empty");
+        return s.integer(0);
+    }
+    if (hasTable(db, path, "tool")) return 0;
+    throw inputError("knowledge base " + quoted(path) +
+                     ": the file is an SQLite database but not an AeroNC knowledge base (no tool table)");
+}
+
+void populate(sqlite3* db, const std::string& path, const std::string& schemaSql, const std::string& dataSql) {
+    Transaction t(db, path, "creating the knowledge base");
+    exec(db, path, schemaSql, "running the schema SQL");
+    exec(db, path, dataSql, "running the default data SQL");
+    t.commit();
+}
+
+void migrate(sqlite3* db, const std::string& path, int from) {
+    Transaction t(db, path, "migrating from schema version " + std::to_string(from));
+    for (int v = from; v < KnowledgeBase::kSchemaVersion; ++v) {
+        const auto step = kMigrations.find(v);
+        if (step == kMigrations.end())
+            throw inputError("knowledge base " + quoted(path) + ": no migration from schema version " +
+                             std::to_string(v));
+        exec(db, path, step->second,
+             "migrating from schema version " + std::to_string(v) + " to " + std::to_string(v + 1));
+    }
+    exec(db, path, "UPDATE schema_version SET version = " + std::to_string(KnowledgeBase::kSchemaVersion),
+         "recording the schema version");
+    // A migration must leave the references intact.
+    Statement fk(db, path, "PRAGMA foreign_key_check");
+    if (fk.step("checking foreign keys"))
+        throw inputError("knowledge base " + quoted(path) + ": migration left a broken reference in table '" +
+                         fk.text(0) + "'");
+    t.commit();
+}
+
+Tool toolFromRow(const Statement& s) {
+    Tool t;
+    t.id = s.text(0);
+    t.type = s.text(1);
+    t.material = s.text(2);
+    t.diameter = s.real(3);
+    t.cornerRadius = s.real(4);
+    t.flutes = s.integer(5);
+    t.fluteLength = s.real(6);
+    t.reach = s.real(7);
+    return t;
+}
+
+std::vector<std::string> names(sqlite3* db, const std::string& path, const char* sql) {
+    Statement s(db, path, sql);
+    std::vector<std::string> out;
+    while (s.step()) out.push_back(s.text(0));
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+    return out;
+}
+
+}  // namespace
+
+void KnowledgeBase::Closer::operator()(sqlite3* db) const { sqlite3_close_v2(db); }
+
+KnowledgeBase::KnowledgeBase(std::unique_ptr<sqlite3, Closer> db, std::string path)
+    : db_(std::move(db)), path_(std::move(path)) {}
+KnowledgeBase::KnowledgeBase(KnowledgeBase&&) noexcept = default;
+KnowledgeBase& KnowledgeBase::operator=(KnowledgeBase&&) noexcept = default;
+KnowledgeBase::~KnowledgeBase() = default;
+
+KnowledgeBase KnowledgeBase::open(const std::string& path, const std::string& schemaSql,
+                                  const std::string& defaultDataSql) {
+    const fs::path file(path);
+    const fs::path dir = file.has_parent_path() ? file.parent_path() : fs::path(".");
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        throw inputError("knowledge base " + quoted(path) + ": the directory " + quoted(dir.string()) +
+                         " does not exist");
+    if (fs::is_directory(file, ec))
+        throw inputError("knowledge base " + quoted(path) + ": is a directory, not a database file");
+
+    if (!fs::exists(file, ec)) {
+        // Build under a temporary name and rename, so `path` is either complete or absent.
+        const std::string tmp = path + ".creating";
+        fs::remove(tmp, ec);
+        fs::remove(tmp + "-journal", ec);
+        try {
+            auto db = openConnection(tmp, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+            populate(db.get(), tmp, schemaSql, defaultDataSql);
+        } catch (...) {
+            fs::remove(tmp, ec);
+            fs::remove(tmp + "-journal", ec);
+            throw;
+        }
+        fs::rename(tmp, file, ec);
+        if (ec) {
+            fs::remove(tmp, ec);
+            throw inputError("knowledge base " + quoted(path) + ": cannot create the file (" + ec.message() + ")");
+        }
+    }
+
+    auto db = openConnection(path, SQLITE_OPEN_READWRITE);
+    const int version = detectVersion(db.get(), path);
+    if (version == -1) {
+        // An empty file (zero bytes, or a database without tables): fill it in place.
+        populate(db.get(), path, schemaSql, defaultDataSql);
+    } else if (version > kSchemaVersion) {
+        throw inputError("knowledge base " + quoted(path) + ": schema version " + std::to_string(version) +
+                         " is newer than this AeroNC understands (" + std::to_string(kSchemaVersion) +
+                         "); update AeroNC");
+    } else if (version < kSchemaVersion) {
+        // Keep the old file: a migration is the one write a user cannot redo by hand.
+        const std::string backup = path + ".v" + std::to_string(version) + ".bak";
+        fs::copy_file(file, backup, fs::copy_options::overwrite_existing, ec);
+        migrate(db.get(), path, version);
+    }
+    return KnowledgeBase(std::move(db), path);
+}
+
+int KnowledgeBase::schemaVersion() const {
+    Statement s(db_.get(), path_, "SELECT max(version) FROM schema_version");
+    s.step("reading the schema version");
+    return s.integer(0);
+}
+
+std::vector<Tool> KnowledgeBase::tools() const {
+    Statement s(db_.get(), path_,
+                "SELECT id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach "
+                "FROM tool ORDER BY diameter DESC, id");
+    std::vector<Tool> out;
+    while (s.step("reading the tools")) out.push_back(toolFromRow(s));
+    return out;
+}
+
+void KnowledgeBase::addTool(const Tool& tool, std::optional<double> cost) {
+    insertTools({tool}, {cost});
+}
+
+void KnowledgeBase::importTools(const std::vector<Tool>& tools) {
+    insertTools(tools, std::vector<std::optional<double>>(tools.size()));
+}
+
+void KnowledgeBase::insertTools(const std::vector<Tool>& tools, const std::vector<std::optional<double>>& costs) {
+    // Check everything before touching the file.
+    for (const Tool& t : tools) t.validate();
+    for (const auto& c : costs)
+        if (c && !(*c >= 0)) throw inputError("tool cost must not be negative");
+
+    sqlite3* db = db_.get();
+    Transaction tx(db, path_, tools.size() == 1 ? "adding tool " + quoted(tools[0].id) : "importing tools");
+    Statement s(db, path_,
+                "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach, cost) "
+                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    for (std::size_t i = 0; i < tools.size(); ++i) {
+        const Tool& t = tools[i];
+        s.reset();
+        s.bind(1, t.id).bind(2, t.type).bind(3, t.material).bind(4, t.diameter).bind(5, t.cornerRadius);
+        s.bind(6, t.flutes).bind(7, t.fluteLength).bind(8, t.reach).bind(9, costs[i]);
+        const int rc = s.tryStep();
+        if (rc == SQLITE_DONE) continue;
+        const int ext = sqlite3_extended_errcode(db);
+        const std::string who = "tool " + quoted(t.id) + ": ";
+        const std::string detail = sqlite3_errmsg(db);
+        const std::string batch = tools.size() > 1 ? " (nothing was imported)" : "";
+        switch (ext) {
+        case SQLITE_CONSTRAINT_CHECK:
+            throw inputError(who + "impossible dimensions rejected by the knowledge base (" + detail + ")" + batch);
+        case SQLITE_CONSTRAINT_PRIMARYKEY:
+        case SQLITE_CONSTRAINT_UNIQUE:
+            throw inputError(who + "a tool with this id already exists" + batch);
+        case SQLITE_CONSTRAINT_FOREIGNKEY:
+            throw inputError(who + "unknown tool material " + quoted(t.material) + " (known: " +
+                             joined(names(db, path_, "SELECT name FROM tool_material ORDER BY name")) + ")" +
+                             batch);
+        default:
+            fail(db, ext, path_, "adding tool " + quoted(t.id));
+        }
+    }
+    tx.commit();
+}
+
+double KnowledgeBase::threshold(const std::string& name) const {
+    Statement s(db_.get(), path_, "SELECT value FROM threshold WHERE name = ?");
+    s.bind(1, name);
+    if (!s.step("reading a threshold"))
+        throw inputError("knowledge base " + quoted(path_) + ": unknown threshold " + quoted(name) + " (known: " +
+                         joined(names(db_.get(), path_, "SELECT name FROM threshold ORDER BY name")) + ")");
+    return s.real(0);
+}
+
+CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMaterial,
+                                                 const std::string& toolMaterial,
+                                                 const std::string& operation) const {
+    sqlite3* db = db_.get();
+    {
+        Statement s(db, path_, "SELECT 1 FROM workpiece_material WHERE name = ?");
+        s.bind(1, workpieceMaterial);
+        if (!s.step())
+            throw inputError("unknown workpiece material " + quoted(workpieceMaterial) + " (known: " +
+                             joined(workpieceMaterials()) + ")");
+    }
+    {
+        Statement s(db, path_, "SELECT 1 FROM tool_material WHERE name = ?");
+        s.bind(1, toolMaterial);
+        if (!s.step())
+            throw inputError("unknown tool material " + quoted(toolMaterial) + " (known: " +
+                             joined(names(db, path_, "SELECT name FROM tool_material ORDER BY name")) + ")");
+    }
+    Statement s(db, path_,
+                "SELECT vc_m_min, fz_mm, ap_mm, ae_ratio, c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m "
+                "FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? AND operation = ?");
+    s.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
+    if (!s.step("reading cutting conditions")) {
+        Statement ops(db, path_,
+                      "SELECT operation FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
+                      "ORDER BY operation");
+        ops.bind(1, workpieceMaterial).bind(2, toolMaterial);
+        std::vector<std::string> known;
+        while (ops.step()) known.push_back(ops.text(0));
+        throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " + quoted(toolMaterial) +
+                         " tools and operation " + quoted(operation) + " (operations known for this pair: " +
+                         (known.empty() ? std::string("none") : joined(known)) + ")");
+    }
+    CuttingCondition c;
+    c.workpieceMaterial = workpieceMaterial;
+    c.toolMaterial = toolMaterial;
+    c.operation = operation;
+    c.vc = s.real(0);
+    c.fz = s.real(1);
+    c.ap = s.real(2);
+    c.aeRatio = s.real(3);
+    c.cF = s.real(4);
+    c.xF = s.real(5);
+    c.yF = s.real(6);
+    c.uF = s.real(7);
+    c.qF = s.real(8);
+    c.wF = s.real(9);
+    c.kFc = s.real(10);
+    c.taylorC = s.real(11);
+    c.taylorM = s.real(12);
+    return c;
+}
+
+Machine KnowledgeBase::machine(const std::string& name) const {
+    Statement s(db_.get(), path_,
+                "SELECT name, type, kinematics, travel_x, travel_y, travel_z, a_min, a_max, c_min, c_max, "
+                "max_spindle_rpm, power_kw, max_feed_mm_min, max_force_n, efficiency, tool_change_s "
+                "FROM machine WHERE name = ?");
+    s.bind(1, name);
+    if (!s.step("reading a machine"))
+        throw inputError("unknown machine " + quoted(name) + " (known: " + joined(machineNames()) + ")");
+    Machine m;
+    m.name = s.text(0);
+    m.type = s.text(1);
+    m.kinematics = s.text(2);
+    m.travelX = s.real(3);
+    m.travelY = s.real(4);
+    m.travelZ = s.real(5);
+    m.aMin = s.optReal(6);
+    m.aMax = s.optReal(7);
+    m.cMin = s.optReal(8);
+    m.cMax = s.optReal(9);
+    m.maxSpindleRpm = s.real(10);
+    m.powerKw = s.real(11);
+    m.maxFeedMmMin = s.real(12);
+    m.maxForceN = s.real(13);
+    m.efficiency = s.real(14);
+    m.toolChangeS = s.real(15);
+    return m;
+}
+
+std::vector<std::string> KnowledgeBase::workpieceMaterials() const {
+    return names(db_.get(), path_, "SELECT name FROM workpiece_material ORDER BY name");
+}
+
+std::vector<std::string> KnowledgeBase::machineNames() const {
+    return names(db_.get(), path_, "SELECT name FROM machine ORDER BY name");
+}
+
+}  // namespace aeronc::kb

@@ -1,0 +1,341 @@
+// The machining knowledge base: built from the shipped SQL, migrated from version 0, and
+// every bad input (impossible tool, bad import, corrupt or locked file, unknown material)
+// reported clearly with the database left as it was.
+#include <aeronc/core/Error.h>
+#include <aeronc/kb/KnowledgeBase.h>
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using aeronc::Error;
+using aeronc::kb::KnowledgeBase;
+using aeronc::toolselect::Tool;
+
+namespace {
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    EXPECT_TRUE(in) << "cannot read " << p;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+const std::string& schemaSql() {
+    static const std::string s = readText(fs::path(AERONC_RESOURCES) / "kb" / "schema.sql");
+    return s;
+}
+const std::string& dataSql() {
+    static const std::string s = readText(fs::path(AERONC_RESOURCES) / "kb" / "default_data.sql");
+    return s;
+}
+
+// Runs SQL on a plain connection, outside KnowledgeBase.
+void rawExec(const fs::path& file, const std::string& sql) {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(file.c_str(), &db), SQLITE_OK);
+    char* err = nullptr;
+    const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err);
+    const std::string msg = err ? err : "";
+    sqlite3_free(err);
+    sqlite3_close(db);
+    ASSERT_EQ(rc, SQLITE_OK) << msg;
+}
+
+Tool tool(const std::string& id, double d, double r = 0, const std::string& type = "flat") {
+    Tool t;
+    t.id = id;
+    t.type = type;
+    t.material = "carbide";
+    t.diameter = d;
+    t.cornerRadius = r;
+    t.flutes = 3;
+    t.fluteLength = 2 * d;
+    t.reach = 3 * d;
+    return t;
+}
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), Error::Kind::Input) << e.what();
+        return e.what();
+    }
+    ADD_FAILURE() << "expected an aeronc::Error";
+    return {};
+}
+
+class KnowledgeBaseTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() /
+               ("aeronc_kb_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path file(const std::string& name = "kb.sqlite") const { return dir_ / name; }
+    KnowledgeBase openDefault(const fs::path& p) { return KnowledgeBase::open(p.string(), schemaSql(), dataSql()); }
+
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
+    const fs::path p = file();
+    {
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+        const auto tools = kb.tools();
+        EXPECT_EQ(tools.size(), 29u);
+        for (const Tool& t : tools) EXPECT_NO_THROW(t.validate()) << t.id;
+        EXPECT_EQ(tools.front().id, "FM-125");  // largest first
+        EXPECT_EQ(tools.front().flutes, 4);
+        EXPECT_EQ(kb.workpieceMaterials().size(), 4u);
+        EXPECT_EQ(kb.machineNames().size(), 2u);
+
+        const auto mill = kb.machine("XA5032");
+        EXPECT_DOUBLE_EQ(mill.maxSpindleRpm, 1800);
+        EXPECT_DOUBLE_EQ(mill.powerKw, 7.5);
+        EXPECT_DOUBLE_EQ(mill.maxFeedMmMin, 980);
+        EXPECT_DOUBLE_EQ(mill.maxForceN, 15000);
+        EXPECT_DOUBLE_EQ(mill.efficiency, 0.75);
+        EXPECT_FALSE(mill.aMin.has_value());
+        EXPECT_TRUE(kb.machine("AC-5AX").cMax.has_value());
+
+        const auto cc = kb.cuttingCondition("45 steel", "carbide", "roughing");
+        EXPECT_DOUBLE_EQ(cc.cF, 825);
+        EXPECT_GT(cc.vc, 0);
+        EXPECT_GT(cc.taylorM, 0);
+        for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+            for (const std::string tm : {"HSS", "carbide"})
+                for (const std::string op : {"roughing", "finishing", "drilling"})
+                    EXPECT_NO_THROW(kb.cuttingCondition(m, tm, op)) << m << " " << tm << " " << op;
+    }
+    EXPECT_FALSE(fs::exists(p.string() + ".creating"));
+    // Opening again keeps the rows (no second insert of the defaults).
+    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+}
+
+TEST_F(KnowledgeBaseTest, Thresholds) {
+    KnowledgeBase kb = openDefault(file());
+    EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.85);
+    EXPECT_DOUBLE_EQ(kb.threshold("mu_merge"), 0.7);
+    const std::string e = errorOf([&] { kb.threshold("no_such"); });
+    EXPECT_NE(e.find("unknown threshold 'no_such'"), std::string::npos) << e;
+    EXPECT_NE(e.find("eta_min"), std::string::npos) << e;
+}
+
+TEST_F(KnowledgeBaseTest, AddToolPersists) {
+    const fs::path p = file();
+    openDefault(p).addTool(tool("USER-7", 7, 0.5, "bull"), 33.0);
+    const auto tools = openDefault(p).tools();
+    ASSERT_EQ(tools.size(), 30u);
+    const auto it = std::find_if(tools.begin(), tools.end(), [](const Tool& t) { return t.id == "USER-7"; });
+    ASSERT_NE(it, tools.end());
+    EXPECT_DOUBLE_EQ(it->cornerRadius, 0.5);
+    EXPECT_EQ(it->type, "bull");
+}
+
+TEST_F(KnowledgeBaseTest, ImpossibleToolRejectedAndDatabaseUnchanged) {
+    KnowledgeBase kb = openDefault(file());
+    Tool bad = tool("BAD-1", 10, 6, "bull");  // corner radius larger than the radius
+    std::string e = errorOf([&] { kb.addTool(bad); });
+    EXPECT_NE(e.find("BAD-1"), std::string::npos) << e;
+    Tool negative = tool("BAD-2", -4);
+    e = errorOf([&] { kb.addTool(negative); });
+    EXPECT_NE(e.find("BAD-2"), std::string::npos) << e;
+    Tool shortReach = tool("BAD-3", 10);
+    shortReach.reach = 5;
+    e = errorOf([&] { kb.addTool(shortReach); });
+    EXPECT_NE(e.find("BAD-3"), std::string::npos) << e;
+    EXPECT_EQ(kb.tools().size(), 29u);
+
+    // A duplicate id and an unknown tool material are named too.
+    e = errorOf([&] { kb.addTool(tool("EM-F10", 10)); });
+    EXPECT_NE(e.find("already exists"), std::string::npos) << e;
+    Tool ceramic = tool("CER-1", 10);
+    ceramic.material = "ceramic";
+    e = errorOf([&] { kb.addTool(ceramic); });
+    EXPECT_NE(e.find("unknown tool material 'ceramic'"), std::string::npos) << e;
+    EXPECT_EQ(kb.tools().size(), 29u);
+}
+
+TEST_F(KnowledgeBaseTest, DatabaseCheckConstraintsRefuseImpossibleTools) {
+    // The schema itself refuses what validate() refuses, for hand edits.
+    const fs::path p = file();
+    openDefault(p);
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(p.c_str(), &db), SQLITE_OK);
+    const char* bad[] = {
+        "INSERT INTO tool (id,type,tool_material,diameter,corner_radius,flutes,flute_length,reach) "
+        "VALUES ('X1','flat','carbide',0,0,2,10,20)",
+        "INSERT INTO tool (id,type,tool_material,diameter,corner_radius,flutes,flute_length,reach) "
+        "VALUES ('X2','bull','carbide',10,5.5,2,10,20)",
+        "INSERT INTO tool (id,type,tool_material,diameter,corner_radius,flutes,flute_length,reach) "
+        "VALUES ('X3','flat','carbide',10,0,0,10,20)",
+        "INSERT INTO tool (id,type,tool_material,diameter,corner_radius,flutes,flute_length,reach) "
+        "VALUES ('X4','flat','carbide',10,0,2,30,20)",
+        "INSERT INTO tool (id,type,tool_material,diameter,corner_radius,flutes,flute_length,reach) "
+        "VALUES ('X5','flat','carbide',10,-1,2,10,20)",
+    };
+    for (const char* sql : bad) EXPECT_NE(sqlite3_exec(db, sql, nullptr, nullptr, nullptr), SQLITE_OK) << sql;
+    sqlite3_close(db);
+    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+}
+
+TEST_F(KnowledgeBaseTest, ImportIsAllOrNothing) {
+    KnowledgeBase kb = openDefault(file());
+    std::vector<Tool> batch = {tool("IMP-1", 5), tool("IMP-2", 7), tool("IMP-3", 9, 10, "bull"), tool("IMP-4", 11)};
+    const std::string e = errorOf([&] { kb.importTools(batch); });
+    EXPECT_NE(e.find("IMP-3"), std::string::npos) << e;
+    EXPECT_EQ(kb.tools().size(), 29u);
+
+    // A batch that fails inside the database (a duplicate in the middle) is rolled back too.
+    batch = {tool("IMP-1", 5), tool("EM-F6", 6), tool("IMP-4", 11)};
+    const std::string dup = errorOf([&] { kb.importTools(batch); });
+    EXPECT_NE(dup.find("EM-F6"), std::string::npos) << dup;
+    EXPECT_NE(dup.find("nothing was imported"), std::string::npos) << dup;
+    EXPECT_EQ(kb.tools().size(), 29u);
+
+    batch = {tool("IMP-1", 5), tool("IMP-4", 11)};
+    kb.importTools(batch);
+    EXPECT_EQ(kb.tools().size(), 31u);
+}
+
+TEST_F(KnowledgeBaseTest, MigratesVersionZeroKeepingUserRows) {
+    const fs::path p = file();
+    // Version 0: no schema_version table, no tool.cost column, a user's own tool and threshold.
+    rawExec(p, R"sql(
+        CREATE TABLE tool_material (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, kind TEXT NOT NULL);
+        CREATE TABLE tool (
+            id TEXT PRIMARY KEY NOT NULL,
+            type TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face')),
+            tool_material TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+            diameter REAL NOT NULL CHECK (diameter > 0),
+            corner_radius REAL NOT NULL DEFAULT 0 CHECK (corner_radius >= 0 AND corner_radius <= diameter / 2.0),
+            flutes INTEGER NOT NULL CHECK (flutes > 0),
+            flute_length REAL NOT NULL CHECK (flute_length > 0),
+            overall_length REAL,
+            reach REAL NOT NULL CHECK (reach >= flute_length));
+        CREATE TABLE threshold (name TEXT PRIMARY KEY NOT NULL, value REAL NOT NULL, description TEXT);
+        INSERT INTO tool_material (name, kind) VALUES ('carbide', 'carbide');
+        INSERT INTO tool VALUES ('MY-TOOL-14', 'bull', 'carbide', 14, 1.5, 4, 30, 90, 40);
+        INSERT INTO threshold (name, value) VALUES ('eta_min', 0.9);
+    )sql");
+
+    {
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), 1);
+        const auto tools = kb.tools();
+        ASSERT_EQ(tools.size(), 1u);
+        EXPECT_EQ(tools[0].id, "MY-TOOL-14");
+        EXPECT_DOUBLE_EQ(tools[0].diameter, 14);
+        EXPECT_DOUBLE_EQ(tools[0].cornerRadius, 1.5);
+        EXPECT_DOUBLE_EQ(tools[0].reach, 40);
+        EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.9);  // the user's value, not the default
+        EXPECT_DOUBLE_EQ(kb.threshold("mu_merge"), 0.7);  // seeded by the migration
+        // The new column works.
+        kb.addTool(tool("NEW-6", 6), 25.0);
+        EXPECT_EQ(kb.tools().size(), 2u);
+    }
+    EXPECT_TRUE(fs::exists(p.string() + ".v0.bak"));
+    // Reopening a migrated file does nothing more.
+    EXPECT_EQ(openDefault(p).tools().size(), 2u);
+}
+
+TEST_F(KnowledgeBaseTest, NewerSchemaVersionRefused) {
+    const fs::path p = file();
+    openDefault(p);
+    rawExec(p, "UPDATE schema_version SET version = 99");
+    const std::string e = errorOf([&] { openDefault(p); });
+    EXPECT_NE(e.find("newer"), std::string::npos) << e;
+}
+
+TEST_F(KnowledgeBaseTest, MissingDirectory) {
+    const fs::path p = dir_ / "no" / "such" / "kb.sqlite";
+    const std::string e = errorOf([&] { openDefault(p); });
+    EXPECT_NE(e.find("does not exist"), std::string::npos) << e;
+    EXPECT_FALSE(fs::exists(dir_ / "no"));
+}
+
+TEST_F(KnowledgeBaseTest, CorruptFile) {
+    const fs::path p = file();
+    {
+        std::mt19937 rng(7);
+        std::ofstream out(p, std::ios::binary);
+        for (int i = 0; i < 8192; ++i) out.put(static_cast<char>(rng() & 0xff));
+    }
+    const auto sizeBefore = fs::file_size(p);
+    const std::string e = errorOf([&] { openDefault(p); });
+    EXPECT_NE(e.find("file is not a database"), std::string::npos) << e;
+    EXPECT_NE(e.find(p.string()), std::string::npos) << e;
+    EXPECT_EQ(fs::file_size(p), sizeBefore);  // not overwritten
+}
+
+TEST_F(KnowledgeBaseTest, NotAKnowledgeBase) {
+    const fs::path p = file();
+    rawExec(p, "CREATE TABLE other (x INTEGER)");
+    const std::string e = errorOf([&] { openDefault(p); });
+    EXPECT_NE(e.find("not an AeroNC knowledge base"), std::string::npos) << e;
+}
+
+TEST_F(KnowledgeBaseTest, LockedDatabase) {
+    const fs::path p = file();
+    KnowledgeBase kb = openDefault(p);
+
+    sqlite3* other = nullptr;
+    ASSERT_EQ(sqlite3_open(p.c_str(), &other), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(other, "BEGIN EXCLUSIVE", nullptr, nullptr, nullptr), SQLITE_OK);
+
+    std::string e = errorOf([&] { openDefault(p); });
+    EXPECT_NE(e.find("locked"), std::string::npos) << e;
+    e = errorOf([&] { kb.addTool(tool("LOCK-1", 5)); });
+    EXPECT_NE(e.find("locked"), std::string::npos) << e;
+    e = errorOf([&] { kb.tools(); });
+    EXPECT_NE(e.find("locked"), std::string::npos) << e;
+
+    sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
+    sqlite3_close(other);
+    kb.addTool(tool("LOCK-1", 5));
+    EXPECT_EQ(kb.tools().size(), 30u);
+}
+
+TEST_F(KnowledgeBaseTest, UnknownMaterial) {
+    KnowledgeBase kb = openDefault(file());
+    std::string e = errorOf([&] { kb.cuttingCondition("unobtainium", "carbide", "roughing"); });
+    EXPECT_NE(e.find("unknown workpiece material 'unobtainium'"), std::string::npos) << e;
+    EXPECT_NE(e.find("Ti-6Al-4V"), std::string::npos) << e;  // lists the known ones
+    e = errorOf([&] { kb.cuttingCondition("45 steel", "diamond", "roughing"); });
+    EXPECT_NE(e.find("unknown tool material 'diamond'"), std::string::npos) << e;
+    e = errorOf([&] { kb.cuttingCondition("45 steel", "carbide", "threading"); });
+    EXPECT_NE(e.find("no cutting condition"), std::string::npos) << e;
+    e = errorOf([&] { kb.machine("Unknown mill"); });
+    EXPECT_NE(e.find("unknown machine"), std::string::npos) << e;
+}
+
+TEST_F(KnowledgeBaseTest, EmptyFileIsFilledInPlace) {
+    const fs::path p = file();
+    std::ofstream(p).close();
+    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+}
+
+TEST_F(KnowledgeBaseTest, BadShippedSqlLeavesNoFile) {
+    const fs::path p = file();
+    const std::string e = errorOf([&] { KnowledgeBase::open(p.string(), schemaSql(), "INSERT INTO nowhere VALUES (1);"); });
+    EXPECT_NE(e.find("default data"), std::string::npos) << e;
+    EXPECT_FALSE(fs::exists(p));
+    EXPECT_FALSE(fs::exists(p.string() + ".creating"));
+}

@@ -1,0 +1,114 @@
+-- AeroNC machining knowledge base, schema version 1.
+--
+-- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
+-- empty database and then resources/kb/default_data.sql. A database made by an older
+-- version is upgraded by the migration steps in cpp/src/kb/KnowledgeBase.cpp; when this
+-- file changes, bump the version below and add a step there.
+--
+-- Units: lengths in mm, angles in degrees, speeds in r/min, feeds in mm/min,
+-- power in kW, force in N, time in s (tool change) or min (tool life), cost in currency units.
+
+PRAGMA foreign_keys = ON;
+
+CREATE TABLE schema_version (
+    version INTEGER NOT NULL
+);
+INSERT INTO schema_version (version) VALUES (1);
+
+-- Resource facts -----------------------------------------------------------------------
+
+CREATE TABLE machine (
+    id              INTEGER PRIMARY KEY,
+    name            TEXT NOT NULL UNIQUE,
+    type            TEXT NOT NULL,                -- 'vertical mill', '5-axis', ...
+    kinematics      TEXT NOT NULL,                -- 'XYZ', 'AC table-table', ...
+    travel_x        REAL NOT NULL CHECK (travel_x > 0),
+    travel_y        REAL NOT NULL CHECK (travel_y > 0),
+    travel_z        REAL NOT NULL CHECK (travel_z > 0),
+    a_min           REAL,                         -- NULL: no such rotary axis
+    a_max           REAL,
+    c_min           REAL,
+    c_max           REAL,
+    max_spindle_rpm REAL NOT NULL CHECK (max_spindle_rpm > 0),
+    power_kw        REAL NOT NULL CHECK (power_kw > 0),
+    max_feed_mm_min REAL NOT NULL CHECK (max_feed_mm_min > 0),
+    max_force_n     REAL NOT NULL CHECK (max_force_n > 0),
+    efficiency      REAL NOT NULL CHECK (efficiency > 0 AND efficiency <= 1),
+    tool_change_s   REAL NOT NULL CHECK (tool_change_s >= 0),
+    CHECK (a_min IS NULL OR a_max IS NULL OR a_min <= a_max),
+    CHECK (c_min IS NULL OR c_max IS NULL OR c_min <= c_max)
+);
+
+CREATE TABLE workpiece_material (
+    id          INTEGER PRIMARY KEY,
+    name        TEXT NOT NULL UNIQUE,
+    family      TEXT NOT NULL,                    -- 'aluminium', 'titanium', 'steel', ...
+    hardness_hb REAL CHECK (hardness_hb IS NULL OR hardness_hb > 0)
+);
+
+CREATE TABLE tool_material (
+    id   INTEGER PRIMARY KEY,
+    name TEXT NOT NULL UNIQUE,
+    kind TEXT NOT NULL                            -- 'HSS', 'carbide', 'ceramic', 'PCD', ...
+);
+
+-- A tool the selector may choose. Impossible dimensions are refused by the database too,
+-- not only by toolselect::Tool::validate(), so a hand edit cannot store them.
+CREATE TABLE tool (
+    id             TEXT PRIMARY KEY NOT NULL,
+    type           TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face')),
+    tool_material  TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    diameter       REAL NOT NULL CHECK (diameter > 0),
+    corner_radius  REAL NOT NULL DEFAULT 0 CHECK (corner_radius >= 0 AND corner_radius <= diameter / 2.0),
+    flutes         INTEGER NOT NULL CHECK (flutes > 0),
+    flute_length   REAL NOT NULL CHECK (flute_length > 0),
+    overall_length REAL CHECK (overall_length IS NULL OR overall_length >= reach),
+    reach          REAL NOT NULL CHECK (reach >= flute_length),
+    cost           REAL CHECK (cost IS NULL OR cost >= 0)
+);
+
+-- Material x tool material x operation -> cutting data and the empirical coefficients of
+--   F_c = 9.81 * c_f * ap^x_f * fz^y_f * ae^u_f * Z / (d0^q_f * n^w_f) * k_fc   [N]
+--   Taylor: v_c * T^taylor_m = taylor_c                                          [T in min]
+CREATE TABLE cutting_condition (
+    id                 INTEGER PRIMARY KEY,
+    workpiece_material TEXT NOT NULL REFERENCES workpiece_material (name) ON UPDATE CASCADE,
+    tool_material      TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    operation          TEXT NOT NULL,             -- 'roughing', 'finishing', 'drilling', ...
+    vc_m_min           REAL NOT NULL CHECK (vc_m_min > 0),
+    fz_mm              REAL NOT NULL CHECK (fz_mm > 0),
+    ap_mm              REAL NOT NULL CHECK (ap_mm > 0),
+    ae_ratio           REAL NOT NULL CHECK (ae_ratio > 0 AND ae_ratio <= 1),  -- a_e / tool diameter
+    c_f                REAL NOT NULL,
+    x_f                REAL NOT NULL,
+    y_f                REAL NOT NULL,
+    u_f                REAL NOT NULL,
+    q_f                REAL NOT NULL,
+    w_f                REAL NOT NULL,
+    k_fc               REAL NOT NULL DEFAULT 1,
+    taylor_c           REAL NOT NULL CHECK (taylor_c > 0),
+    taylor_m           REAL NOT NULL CHECK (taylor_m > 0),
+    UNIQUE (workpiece_material, tool_material, operation)
+);
+
+-- Rule knowledge -----------------------------------------------------------------------
+
+CREATE TABLE threshold (
+    name        TEXT PRIMARY KEY NOT NULL,        -- 'eta_min', 'mu_merge', ...
+    value       REAL NOT NULL,
+    description TEXT
+);
+
+-- steps: the step codes in order, space separated, e.g. 'r w c ss sf fs ff'.
+CREATE TABLE process_template (
+    id    INTEGER PRIMARY KEY,
+    name  TEXT NOT NULL UNIQUE,
+    steps TEXT NOT NULL
+);
+
+-- Sequencing rules, applied in ascending priority; rule is a reviewable text key.
+CREATE TABLE sequencing_rule (
+    id       INTEGER PRIMARY KEY,
+    priority INTEGER NOT NULL UNIQUE,
+    rule     TEXT NOT NULL
+);
