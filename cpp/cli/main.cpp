@@ -2,10 +2,14 @@
 //   aeronc recognise PART.(step|brep) [--json OUT] [--directions auto|+Z,-Z|x:y:z,...]
 //                    [--allowance MM] [--tolerance MM]
 //   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
+//   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
+//                       [--resources DIR]
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
+#include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
+#include <aeronc/toolselect/ElementPlanning.h>
 
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -19,13 +23,17 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <algorithm>
 
 namespace {
 
 const char* kUsage =
     "usage:\n"
     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
-    "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n";
+    "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
+    "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
+    "                      [--json OUT] [--resources DIR]\n"
+    "      (a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -127,6 +135,109 @@ int panelCmd(int argc, char** argv) {
     return 0;
 }
 
+std::string readText(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) throw aeronc::inputError(p.string() + ": cannot be read");
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::filesystem::path executableDir(const char* argv0) {
+    std::error_code ec;
+    auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec || self.empty()) self = std::filesystem::absolute(argv0, ec);
+    return self.parent_path();
+}
+
+// The folder holding schema.sql and default_data.sql: --resources, else the install layout
+// (<prefix>/AeroNC/bin/aeronc next to <prefix>/AeroNC/aeronc/resources/kb), else the source tree.
+std::filesystem::path kbResources(const std::string& given, const char* argv0) {
+    namespace fs = std::filesystem;
+    auto has = [](const fs::path& d) {
+        std::error_code ec;
+        return fs::is_regular_file(d / "schema.sql", ec) && fs::is_regular_file(d / "default_data.sql", ec);
+    };
+    if (!given.empty()) {
+        if (!has(given))
+            throw aeronc::inputError("--resources " + given + ": no schema.sql and default_data.sql there");
+        return given;
+    }
+    std::vector<fs::path> tried{executableDir(argv0) / ".." / "aeronc" / "resources" / "kb"};
+#ifdef AERONC_SOURCE_RESOURCES
+    tried.emplace_back(AERONC_SOURCE_RESOURCES);
+#endif
+    std::string list;
+    for (const fs::path& d : tried) {
+        if (has(d)) return d;
+        list += (list.empty() ? "" : ", ") + d.lexically_normal().string();
+    }
+    throw aeronc::inputError("cannot find the knowledge-base SQL (schema.sql, default_data.sql); tried " + list +
+                             "; pass --resources DIR");
+}
+
+int selectToolsCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("select-tools needs a part file");
+    std::string part = argv[2], jsonOut, kbPath, material, resources;
+    aeronc::recognition::RecogniseOptions opt;
+    for (int i = 3; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
+            return argv[++i];
+        };
+        if (a == "--json") jsonOut = next();
+        else if (a == "--kb") kbPath = next();
+        else if (a == "--material") material = next();
+        else if (a == "--directions") opt.directions = parseDirections(next());
+        else if (a == "--resources") resources = next();
+        else throw aeronc::inputError("unknown option " + a);
+    }
+    if (kbPath.empty()) throw aeronc::inputError("select-tools needs --kb KB.sqlite (created when missing)");
+    if (material.empty()) throw aeronc::inputError("select-tools needs --material NAME, e.g. 7050-T7451");
+
+    // The SQL texts are needed only to build a missing or empty database.
+    std::string schema, data;
+    std::error_code ec;
+    const bool build = !std::filesystem::exists(kbPath, ec) ||
+                       (std::filesystem::is_regular_file(kbPath, ec) && std::filesystem::file_size(kbPath, ec) == 0);
+    if (build) {
+        const auto dir = kbResources(resources, argv[0]);
+        schema = readText(dir / "schema.sql");
+        data = readText(dir / "default_data.sql");
+    }
+    const auto kb = aeronc::kb::KnowledgeBase::open(kbPath, schema, data);
+    // Check the material before the (slow) recognition.
+    const auto known = kb.workpieceMaterials();
+    if (std::find(known.begin(), known.end(), material) == known.end()) {
+        std::string list;
+        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
+        throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list +
+                                 ")");
+    }
+
+    const TopoDS_Shape solid = aeronc::loadPart(part);
+    const auto tree = aeronc::recognition::recognise(solid, opt);
+    const auto plan = aeronc::toolselect::planTools(tree, kb, material);
+    const std::string text = aeronc::toolselect::toJson(plan, material);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+
+    int failed = 0;
+    for (const auto& c : plan.elements) failed += !c.error.empty();
+    for (const auto& h : plan.holes) failed += !h.error.empty();
+    std::cerr << part << ": " << plan.elements.size() << " milled element(s), " << plan.holes.size()
+              << " hole(s), " << failed << " without a tool; tool changes " << plan.merge.toolChangesBefore << " -> "
+              << plan.merge.toolChangesAfter << ", roughing time " << plan.merge.timeBefore << " -> "
+              << plan.merge.timeAfter << " min\n";
+    for (const auto& c : plan.elements)
+        if (!c.error.empty()) std::cerr << "warning: " << c.error << "\n";
+    for (const auto& h : plan.holes)
+        if (!h.error.empty()) std::cerr << "warning: " << h.error << "\n";
+    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
+    return 0;
+}
+
 // OCCT's STEP reader and writer print statistics on stdout, which is the JSON's channel.
 void quietOcct() {
     const Handle(Message_Messenger)& m = Message::DefaultMessenger();
@@ -145,6 +256,7 @@ int main(int argc, char** argv) {
     try {
         if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
         if (cmd == "panel") return panelCmd(argc, argv);
+        if (cmd == "select-tools") return selectToolsCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {

@@ -42,5 +42,14 @@ else
 fi
 expect_error "no face normal to direction" "no planar face normal" "$cli" recognise "$tmp/p.step" --directions 1:1:0
 
+# Tool selection: an unknown material is refused, a good part gets tools and JSON.
+expect_error "select-tools unknown material" "material" "$cli" select-tools "$tmp/p.step" --kb "$tmp/kb.sqlite" --material unobtainium
+if "$cli" select-tools "$tmp/p.step" --kb "$tmp/kb.sqlite" --material 7050-T7451 --directions +Z --json "$tmp/tools.json" 2>/dev/null &&
+   grep -q '"roughingTool"' "$tmp/tools.json" && [ -s "$tmp/kb.sqlite" ]; then
+  passed=$((passed + 1)); echo "ok   select-tools writes JSON"
+else
+  failed=$((failed + 1)); echo "FAIL select-tools writes JSON"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,90 @@
+#pragma once
+// Tool selection for a whole recognised part (DESIGN.md §3): every pocket, open pocket and
+// opening of a machining-domain tree gets a finishing and a roughing tool, every hole a
+// drill; the roughing-tool groups are then merged to save tool changes.
+//
+// The planner never stops at the first element it cannot serve: each element carries its
+// own error text and the rest are still planned.
+#include <aeronc/recognition/DomainTree.h>
+#include <aeronc/toolselect/PocketGeometry.h>
+#include <aeronc/toolselect/Selection.h>
+#include <aeronc/toolselect/Tool.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace aeronc::kb {
+class KnowledgeBase;
+}
+
+namespace aeronc::toolselect {
+
+// The element's drive loops projected onto its setup plane (frame built from the setup
+// direction as recognition does), with its depth, corner and floor-fillet radii and the name
+// "element <id>". Throws aeronc::inputError for a zero setup direction.
+PocketGeometry pocketGeometry(const recognition::DomainElement& element, const Vec3& setupDirection);
+
+// A pocket, open pocket or opening: the elements that are milled.
+bool isMilled(recognition::ElementType type);
+
+struct ElementChoice {
+    int element = -1;
+    recognition::ElementType type = recognition::ElementType::ClosedPocket;
+    int finishingTool = -1;  // index into the tool list; -1: none (see error)
+    int roughingTool = -1;   // index into the tool list; -1: none (see error)
+    MachinableRatio ratio;   // of the roughing tool, when there is one
+    double depth = 0;
+    std::string error;       // empty when both tools were found; else one line per failure
+};
+
+struct HoleChoice {
+    int element = -1;
+    double diameter = 0;
+    double depth = 0;
+    int drill = -1;  // index into the tool list; -1: none (see error)
+    std::string error;
+};
+
+struct GroupElements {
+    int tool = -1;              // index into the tool list
+    std::vector<int> elements;  // element ids roughed with it
+};
+
+struct PlanSettings {
+    double etaMin = 0.85;
+    double muMerge = 0.70;
+    // Roughing cutting data of a tool (index into the tool list), for the time model.
+    CuttingDataOf roughingData;
+    // Optional filters: may this tool finish / rough / drill this part? Empty: every tool may.
+    std::function<bool(const Tool&)> mayFinish, mayRough, mayDrill;
+};
+
+struct ToolPlan {
+    std::vector<Tool> tools;  // the list the indices refer to
+    std::vector<ElementChoice> elements;
+    std::vector<HoleChoice> holes;
+    std::vector<GroupElements> groupsBefore, groupsAfter;  // roughing groups, before/after merging
+    MergeReport merge;
+};
+
+// Plans every element of `tree` with `tools`. Elements without a roughing tool take no part
+// in the grouping. Throws only for bad settings (an empty roughingData with groups to time).
+ToolPlan planTools(const recognition::DomainTree& tree, const std::vector<Tool>& tools,
+                   const PlanSettings& settings);
+
+// The same with everything from the knowledge base: its tools, the thresholds eta_min and
+// mu_merge, layer_delta_mm as delta (0.2 mm when absent), and the roughing cutting data
+// of (material, tool material): a_e = ae_ratio·D, feed = f_z·Z·n, n = 1000·v_c/(π·D), a_p.
+// A tool suits the workpiece when the knowledge base has cutting data for its material and
+// the operation (finishing, roughing or drilling). Throws aeronc::inputError for an unknown
+// workpiece material.
+ToolPlan planTools(const recognition::DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material);
+
+// Roughing cutting data of one tool from a knowledge-base cutting condition.
+CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta);
+
+// JSON text of a plan (the CLI's select-tools output).
+std::string toJson(const ToolPlan& plan, const std::string& material, int indent = 1);
+
+}  // namespace aeronc::toolselect

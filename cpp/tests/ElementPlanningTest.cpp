@@ -1,0 +1,289 @@
+// Tool planning for a recognised part: generated panels whose pockets and holes are known by
+// construction, planned with the shipped knowledge base, checked against hand computation.
+#include <aeronc/core/Error.h>
+#include <aeronc/core/PartIO.h>
+#include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+#include <aeronc/toolselect/ElementPlanning.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace aeronc;
+using namespace aeronc::toolselect;
+using aeronc::recognition::DomainTree;
+using aeronc::recognition::ElementType;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    EXPECT_TRUE(in) << "cannot read " << p;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A plain panel: pockets only, vertical corner radius 6, floor fillet 2.
+testparts::PanelSpec plainSpec() {
+    testparts::PanelSpec s;
+    s.pocketsX = 2;
+    s.pocketsY = 1;
+    s.pitch = 30;  // pocket 26 x 26: small enough that the largest tools do not qualify
+    s.cornerRadius = 6;
+    s.floorFillet = 2;
+    s.lowerRibs = s.islands = s.openings = s.lighteningHoles = s.boltHoles = false;
+    s.joggles = s.flange = s.bottomPockets = false;
+    return s;
+}
+
+DomainTree recogniseUp(const testparts::PanelSpec& spec) {
+    const auto panel = testparts::makePanel(spec);
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    return recognition::recognise(validatedSolid(panel.shape, "panel"), o);
+}
+
+class ElementPlanningTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("aeronc_plan_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    kb::KnowledgeBase openDefault() {
+        const fs::path res = fs::path(AERONC_RESOURCES) / "kb";
+        return kb::KnowledgeBase::open((dir_ / "kb.sqlite").string(), readText(res / "schema.sql"),
+                                       readText(res / "default_data.sql"));
+    }
+    fs::path dir_;
+};
+
+}  // namespace
+
+TEST(ElementPlanning, PocketGeometryProjectsOntoTheSetupPlane) {
+    // A 40 x 10 rectangle at z = 5 seen from -Z: the projection keeps its size and area.
+    recognition::DomainElement e;
+    e.id = 7;
+    e.setup = 0;
+    e.depth = 4;
+    e.minCornerRadius = -1;
+    e.floorFilletRadius = 1.5;
+    e.contour = {{0, 0, 5}, {40, 0, 5}, {40, 10, 5}, {0, 10, 5}};
+    e.islands = {{{10, 2, 5}, {12, 2, 5}, {12, 4, 5}, {10, 4, 5}}};
+    const PocketGeometry g = pocketGeometry(e, {0, 0, -2});
+    EXPECT_EQ(g.name, "element 7");
+    EXPECT_DOUBLE_EQ(g.depth, 4);
+    EXPECT_DOUBLE_EQ(g.minCornerRadius, -1);
+    EXPECT_DOUBLE_EQ(g.floorFilletRadius, 1.5);
+    ASSERT_EQ(g.outer.size(), 4u);
+    ASSERT_EQ(g.islands.size(), 1u);
+    double area2 = 0;
+    for (std::size_t i = 0, j = 3; i < 4; j = i++)
+        area2 += g.outer[j][0] * g.outer[i][1] - g.outer[i][0] * g.outer[j][1];
+    EXPECT_NEAR(std::fabs(area2) / 2, 400, 1e-9);
+    EXPECT_NEAR(std::hypot(g.outer[1][0] - g.outer[0][0], g.outer[1][1] - g.outer[0][1]), 40, 1e-9);
+
+    // A tilted direction: the loop lies in the plane square to it, so its area is kept too.
+    const double c = std::cos(0.3), s = std::sin(0.3);
+    recognition::DomainElement t = e;
+    t.contour.clear();
+    for (const auto& p : e.contour) t.contour.push_back({p[0], c * p[1] - s * p[2], s * p[1] + c * p[2]});
+    const PocketGeometry gt = pocketGeometry(t, {0, -s, c});
+    area2 = 0;
+    for (std::size_t i = 0, j = 3; i < 4; j = i++)
+        area2 += gt.outer[j][0] * gt.outer[i][1] - gt.outer[i][0] * gt.outer[j][1];
+    EXPECT_NEAR(std::fabs(area2) / 2, 400, 1e-9);
+    EXPECT_THROW(pocketGeometry(e, {0, 0, 0}), Error);
+}
+
+TEST(ElementPlanning, AnElementWithoutAToolIsReportedAndTheOthersStillPlanned) {
+    DomainTree tree;
+    tree.setups.push_back({0, {0, 0, 1}, "+Z", {0, 1}});
+    auto square = [](int id, double side, double corner) {
+        recognition::DomainElement e;
+        e.id = id;
+        e.setup = 0;
+        e.depth = 10;
+        e.minCornerRadius = corner;
+        e.contour = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
+        return e;
+    };
+    tree.elements = {square(0, 50, 5), square(1, 50, 0)};  // element 1: sharp corners
+    Tool t;
+    t.id = "F10";
+    t.type = "flat";
+    t.material = "carbide";
+    t.diameter = 10;
+    t.flutes = 3;
+    t.fluteLength = 30;
+    t.reach = 40;
+    PlanSettings s;
+    s.etaMin = 0.5;
+    s.roughingData = [&](std::size_t i) { return roughingCuttingData(t, 600, 0.1, 4, 0.5, 0.2); };
+    const ToolPlan plan = planTools(tree, {t}, s);
+    ASSERT_EQ(plan.elements.size(), 2u);
+    EXPECT_EQ(plan.elements[0].finishingTool, 0);
+    EXPECT_EQ(plan.elements[0].error, "");
+    EXPECT_EQ(plan.elements[1].finishingTool, -1);
+    EXPECT_EQ(plan.elements[1].roughingTool, 0);  // roughing does not need the corner radius
+    EXPECT_NE(plan.elements[1].error.find("element 1"), std::string::npos) << plan.elements[1].error;
+    EXPECT_NE(plan.elements[1].error.find("radius <= 0"), std::string::npos) << plan.elements[1].error;
+    ASSERT_EQ(plan.groupsBefore.size(), 1u);
+    EXPECT_EQ(plan.groupsBefore[0].elements, (std::vector<int>{0, 1}));
+    EXPECT_EQ(plan.merge.toolChangesBefore, 0);
+}
+
+TEST_F(ElementPlanningTest, PanelToolsMatchHandComputation) {
+    const testparts::PanelSpec spec = plainSpec();
+    const DomainTree tree = recogniseUp(spec);
+    auto kb = openDefault();
+    const std::string material = "7050-T7451";
+    const ToolPlan plan = planTools(tree, kb, material);
+    const std::vector<Tool> tools = kb.tools();
+
+    // Hand geometry: the pocket is the pitch-minus-rib square with rounded vertical corners.
+    const double side = spec.pitch - spec.ribThickness;  // 26
+    const double rc = spec.cornerRadius;                 // 6
+    const double depth = spec.thickness - spec.webZ;     // 12
+    const double A = side * side - (4 - kPi) * rc * rc;
+    // A disc of radius r >= rc sweeps the square minus (4 - pi) r^2 at its corners, while
+    // the disc fits (2r <= side); a larger disc does not enter at all.
+    auto etaByHand = [&](double r) {
+        if (2 * r > side) return 0.0;
+        const double rr = std::max(r, rc);
+        return (side * side - (4 - kPi) * rr * rr) / A;
+    };
+    const double etaMin = kb.threshold("eta_min");
+
+    // Finishing by hand: the largest end mill with radius <= 6, corner radius equal to the
+    // floor fillet 2 and reach >= 12 mm: EM-B12R2 in default_data.sql.
+    const Tool* finisher = nullptr;
+    for (const Tool& t : tools)
+        if (t.isEndMill() && t.radius() <= rc + 1e-9 && std::fabs(t.cornerRadius - spec.floorFillet) < 1e-9 &&
+            t.usableLength() >= depth && (!finisher || t.diameter > finisher->diameter))
+            finisher = &t;
+    ASSERT_TRUE(finisher);
+    EXPECT_EQ(finisher->id, "EM-B12R2");
+
+    // Roughing by hand: from the largest end mill reaching the depth down, the first whose
+    // eta meets the threshold: D25 gives 0.840, D20 gives 0.915, so EM-B20R3 (ties by id).
+    const Tool* rougher = nullptr;
+    for (const Tool& t : tools)  // largest diameter first, ties by id
+        if (t.isEndMill() && t.usableLength() >= depth && etaByHand(t.radius()) >= etaMin) {
+            rougher = &t;
+            break;
+        }
+    ASSERT_TRUE(rougher);
+    EXPECT_EQ(rougher->id, "EM-B20R3");
+    EXPECT_LT(etaByHand(12.5), etaMin);
+
+    int pockets = 0;
+    for (const ElementChoice& c : plan.elements) {
+        ASSERT_EQ(c.type, ElementType::ClosedPocket) << "element " << c.element;
+        ++pockets;
+        EXPECT_EQ(c.error, "") << "element " << c.element;
+        ASSERT_GE(c.finishingTool, 0);
+        ASSERT_GE(c.roughingTool, 0);
+        EXPECT_EQ(plan.tools[c.finishingTool].id, finisher->id) << "element " << c.element;
+        EXPECT_EQ(plan.tools[c.roughingTool].id, rougher->id) << "element " << c.element;
+        EXPECT_NEAR(c.ratio.area, A, 1e-3 * A) << "element " << c.element;
+        EXPECT_NEAR(c.ratio.eta, etaByHand(rougher->radius()), 1e-3) << "element " << c.element;
+        EXPECT_EQ(c.ratio.narrowPassages, 0);
+
+        // Every end mill that fits in the pocket: eta against the hand value.
+        const auto& e = tree.elements[static_cast<std::size_t>(c.element)];
+        const PocketGeometry g = pocketGeometry(e, tree.setups[0].direction);
+        EXPECT_NEAR(g.minCornerRadius, rc, 1e-3);
+        EXPECT_NEAR(g.floorFilletRadius, spec.floorFillet, 1e-3);
+        EXPECT_NEAR(g.depth, depth, 1e-6);
+        for (double r : {1.0, 3.0, 6.0, 8.0, 10.0, 12.5})
+            EXPECT_NEAR(machinableRatio(g, r).eta, etaByHand(r), 1e-3) << "r " << r;
+    }
+    EXPECT_EQ(pockets, spec.pocketsX * spec.pocketsY);
+    EXPECT_TRUE(plan.holes.empty());
+
+    // One roughing group, no merging; its time by hand: t = A / (a_e * f * n), N layers.
+    ASSERT_EQ(plan.groupsBefore.size(), 1u);
+    ASSERT_EQ(plan.groupsAfter.size(), 1u);
+    EXPECT_EQ(plan.groupsAfter[0].elements.size(), 2u);
+    EXPECT_EQ(plan.merge.toolChangesBefore, 0);
+    EXPECT_EQ(plan.merge.toolChangesAfter, 0);
+    const auto cc = kb.cuttingCondition(material, rougher->material, "roughing");
+    const double n = 1000 * cc.vc / (kPi * rougher->diameter);
+    const double feed = cc.fz * rougher->flutes * n;
+    const double ae = cc.aeRatio * rougher->diameter;
+    const double nn = std::floor(depth / cc.ap + 1e-9);
+    const double layers = depth - nn * cc.ap < kb.threshold("layer_delta_mm") ? nn : nn + 1;
+    EXPECT_NEAR(plan.merge.timeBefore, 2 * A / (ae * feed) * layers, 2e-3 * plan.merge.timeBefore);
+    EXPECT_DOUBLE_EQ(plan.merge.timeAfter, plan.merge.timeBefore);
+
+    const std::string json = toJson(plan, material);
+    EXPECT_NE(json.find("\"roughingTool\": \"EM-B20R3\""), std::string::npos) << json;
+}
+
+TEST_F(ElementPlanningTest, HoleGetsTheDrillOfItsDiameter) {
+    testparts::PanelSpec spec = plainSpec();
+    spec.boltHoles = true;  // through holes of 6.6 mm, some under an 11 mm counterbore
+    const DomainTree tree = recogniseUp(spec);
+    auto kb = openDefault();
+
+    // The shipped drills are 5, 6.8, 8.5 and 10.2 mm: no 6.6, and 6.8 is not close enough.
+    ToolPlan plan = planTools(tree, kb, "7050-T7451");
+    int bolts = 0;
+    for (const HoleChoice& h : plan.holes) {
+        if (std::fabs(h.diameter - 6.6) > 1e-3) continue;
+        ++bolts;
+        EXPECT_EQ(h.drill, -1);
+        EXPECT_NE(h.error.find("no drill of diameter 6.6"), std::string::npos) << h.error;
+        EXPECT_NE(h.error.find("hole element " + std::to_string(h.element)), std::string::npos) << h.error;
+    }
+    EXPECT_GT(bolts, 0);
+
+    Tool d;
+    d.id = "DR-6.6";
+    d.type = "drill";
+    d.material = "HSS";
+    d.diameter = 6.6;
+    d.flutes = 2;
+    d.fluteLength = 63;
+    d.reach = 70;
+    kb.addTool(d);
+    plan = planTools(tree, kb, "7050-T7451");
+    int drilled = 0;
+    for (const HoleChoice& h : plan.holes) {
+        if (std::fabs(h.diameter - 6.6) > 1e-3) continue;
+        ASSERT_GE(h.drill, 0) << h.error;
+        EXPECT_EQ(plan.tools[h.drill].id, "DR-6.6");
+        EXPECT_EQ(h.error, "");
+        ++drilled;
+    }
+    EXPECT_EQ(drilled, bolts);
+    // The pockets are planned as before.
+    for (const ElementChoice& c : plan.elements) EXPECT_EQ(c.error, "") << c.element;
+}
+
+TEST_F(ElementPlanningTest, UnknownMaterialIsAnInputError) {
+    auto kb = openDefault();
+    DomainTree tree;
+    try {
+        planTools(tree, kb, "unobtainium");
+        ADD_FAILURE() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), Error::Kind::Input);
+        EXPECT_NE(std::string(e.what()).find("material 'unobtainium'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("7050-T7451"), std::string::npos) << e.what();
+    }
+}
