@@ -3,7 +3,7 @@
 //                    [--allowance MM] [--tolerance MM]
 //   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
 //   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
-//                       [--resources DIR]
+//                       [--machine NAME] [--resources DIR]
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
@@ -32,7 +32,7 @@ const char* kUsage =
     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
-    "                      [--json OUT] [--resources DIR]\n"
+    "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
     "      (a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
@@ -178,7 +178,7 @@ std::filesystem::path kbResources(const std::string& given, const char* argv0) {
 
 int selectToolsCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("select-tools needs a part file");
-    std::string part = argv[2], jsonOut, kbPath, material, resources;
+    std::string part = argv[2], jsonOut, kbPath, material, resources, machine;
     aeronc::recognition::RecogniseOptions opt;
     for (int i = 3; i < argc; ++i) {
         const std::string a = argv[i];
@@ -189,6 +189,7 @@ int selectToolsCmd(int argc, char** argv) {
         if (a == "--json") jsonOut = next();
         else if (a == "--kb") kbPath = next();
         else if (a == "--material") material = next();
+        else if (a == "--machine") machine = next();
         else if (a == "--directions") opt.directions = parseDirections(next());
         else if (a == "--resources") resources = next();
         else throw aeronc::inputError("unknown option " + a);
@@ -218,7 +219,7 @@ int selectToolsCmd(int argc, char** argv) {
 
     const TopoDS_Shape solid = aeronc::loadPart(part);
     const auto tree = aeronc::recognition::recognise(solid, opt);
-    const auto plan = aeronc::toolselect::planTools(tree, kb, material);
+    const auto plan = aeronc::toolselect::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
     else writeText(jsonOut, text);

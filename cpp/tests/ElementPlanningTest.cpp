@@ -287,3 +287,20 @@ TEST_F(ElementPlanningTest, UnknownMaterialIsAnInputError) {
         EXPECT_NE(std::string(e.what()).find("7050-T7451"), std::string::npos) << e.what();
     }
 }
+
+// The machine's spindle limit caps n, so small tools cut slower than the formula alone says.
+TEST(ElementPlanning, SpindleSpeedCappedByMachine) {
+    Tool t;
+    t.id = "D6";
+    t.type = "flat";
+    t.material = "carbide";
+    t.diameter = 6, t.flutes = 3, t.fluteLength = 18, t.reach = 30;
+    // v_c 900 m/min on D6: n = 1000·900/(π·6) ≈ 47,746 r/min.
+    const CuttingData free = roughingCuttingData(t, 900, 0.1, 2, 0.5, 0.2);
+    EXPECT_NEAR(free.feedPerMinute, 0.1 * 3 * 1000 * 900 / (M_PI * 6), 1e-6);
+    const CuttingData capped = roughingCuttingData(t, 900, 0.1, 2, 0.5, 0.2, 18000);
+    EXPECT_NEAR(capped.feedPerMinute, 0.1 * 3 * 18000, 1e-9);
+    EXPECT_NEAR(capped.ae, 3, 1e-12);
+    // A cap above n changes nothing.
+    EXPECT_NEAR(roughingCuttingData(t, 900, 0.1, 2, 0.5, 0.2, 60000).feedPerMinute, free.feedPerMinute, 1e-9);
+}

@@ -77,9 +77,11 @@ PocketGeometry pocketGeometry(const DomainElement& e, const Vec3& setupDirection
     return g;
 }
 
-CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta) {
+CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta,
+                                double maxSpindleRpm) {
     CuttingData d;
-    const double n = 1000.0 * vc / (kPi * tool.diameter);  // r/min
+    double n = 1000.0 * vc / (kPi * tool.diameter);  // r/min
+    if (maxSpindleRpm > 0) n = std::min(n, maxSpindleRpm);
     d.ae = aeRatio * tool.diameter;
     d.feedPerMinute = fz * tool.flutes * n;
     d.ap = ap;
@@ -195,12 +197,20 @@ ToolPlan planTools(const DomainTree& tree, const std::vector<Tool>& tools, const
     return plan;
 }
 
-ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material) {
+ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material,
+                   const std::string& machine) {
     const auto known = kb.workpieceMaterials();
     if (std::find(known.begin(), known.end(), material) == known.end()) {
         std::string list;
         for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
         throw inputError("unknown workpiece material '" + material + "' (known: " + list + ")");
+    }
+    double maxRpm = 0;
+    if (!machine.empty()) {
+        maxRpm = kb.machine(machine).maxSpindleRpm;
+    } else {
+        const auto names = kb.machineNames();
+        if (!names.empty()) maxRpm = kb.machine(names.front()).maxSpindleRpm;
     }
     PlanSettings s;
     s.etaMin = kb.threshold("eta_min");
@@ -237,7 +247,7 @@ ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const st
         if (!c)
             throw inputError("tool " + t.id + ": no roughing cutting data for '" + material + "' with '" +
                              t.material + "'");
-        return roughingCuttingData(t, c->vc, c->fz, c->ap, c->aeRatio, delta);
+        return roughingCuttingData(t, c->vc, c->fz, c->ap, c->aeRatio, delta, maxRpm);
     };
     return planTools(tree, tools, s);
 }

@@ -78,11 +78,16 @@ ToolPlan planTools(const recognition::DomainTree& tree, const std::vector<Tool>&
 // of (material, tool material): a_e = ae_ratio·D, feed = f_z·Z·n, n = 1000·v_c/(π·D), a_p.
 // A tool suits the workpiece when the knowledge base has cutting data for its material and
 // the operation (finishing, roughing or drilling). Throws aeronc::inputError for an unknown
-// workpiece material.
-ToolPlan planTools(const recognition::DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material);
+// workpiece material. The spindle speed is capped at the machine's maximum (the named
+// machine, or the knowledge base's first one when `machine` is empty): without the cap a
+// layer takes the same time with any diameter and every pair of groups would merge.
+ToolPlan planTools(const recognition::DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material,
+                   const std::string& machine = "");
 
-// Roughing cutting data of one tool from a knowledge-base cutting condition.
-CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta);
+// Roughing cutting data of one tool from a knowledge-base cutting condition; n is capped at
+// maxSpindleRpm when that is positive.
+CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta,
+                                double maxSpindleRpm = 0);
 
 // JSON text of a plan (the CLI's select-tools output).
 std::string toJson(const ToolPlan& plan, const std::string& material, int indent = 1);
