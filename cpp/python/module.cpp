@@ -3,7 +3,9 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
+#include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/testparts/PanelGenerator.h>
+#include <aeronc/toolselect/ElementPlanning.h>
 
 #include <BRepTools.hxx>
 #include <Standard_Failure.hxx>
@@ -109,6 +111,25 @@ PYBIND11_MODULE(_core, m) {
         py::arg("blank") = py::none(), py::arg("linear_tolerance") = 1e-3, py::arg("angular_tolerance") = 1e-3,
         py::arg("chord_tolerance") = 0.01, py::arg("progress") = py::none(),
         "Recognise the machining features of a STEP or BREP file; returns JSON text.");
+
+    m.def(
+        "select_tools_brep",
+        [](const std::string& brep, const std::string& kbPath, const std::string& material, const std::string& schemaSql,
+           const std::string& defaultSql, const std::vector<std::array<double, 3>>& directions,
+           const std::string& machine) {
+            return guarded([&] {
+                const auto o = makeOptions(directions, 0.0, py::none(), 1e-3, 1e-3, 0.01, py::none());
+                const TopoDS_Shape solid = partFromBrepText(brep);
+                py::gil_scoped_release nogil;
+                const auto kb = kb::KnowledgeBase::open(kbPath, schemaSql, defaultSql);
+                const auto tree = recognition::recognise(solid, o);
+                return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
+            });
+        },
+        py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("schema_sql"), py::arg("default_sql"),
+        py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("machine") = std::string(),
+        "Recognise a solid and plan its tools from the knowledge base at kb_path (built from the two SQL texts "
+        "when missing); returns JSON text.");
 
     m.def(
         "make_panel",

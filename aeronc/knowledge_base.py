@@ -1,0 +1,47 @@
+"""App-side access to the machining knowledge base and the tool planner of the core.
+
+The user's knowledge base lives in FreeCAD's user data folder (AeroNC/knowledge.sqlite);
+it is built from the SQL shipped in resources/kb the first time it is needed, and migrated
+by the core when an older version is opened, so a user's edits survive an upgrade.
+"""
+import json
+import os
+
+import FreeCAD
+
+from aeronc.recognition import RecognitionError, check_solid, shape_of
+
+
+class KnowledgeBaseError(RecognitionError):
+    """The knowledge base or the tool planning failed; the message says why."""
+
+
+def user_kb_path():
+    return os.path.join(FreeCAD.getUserAppDataDir(), "AeroNC", "knowledge.sqlite")
+
+
+def _sql_texts():
+    import aeronc
+    folder = os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
+    with open(os.path.join(folder, "schema.sql")) as f:
+        schema = f.read()
+    with open(os.path.join(folder, "default_data.sql")) as f:
+        data = f.read()
+    return schema, data
+
+
+def select_tools(source, material, directions=None, machine="", kb_path=None):
+    """Recognise `source` (shape or document object) and plan finishing and roughing tools,
+    drills and merged tool groups from the knowledge base; returns the plan as a dict."""
+    from aeronc import _core
+    shape, label = shape_of(source)
+    check_solid(shape, label)
+    path = kb_path or user_kb_path()
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    schema, data = _sql_texts()
+    try:
+        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, schema, data,
+                                       [tuple(float(c) for c in d) for d in (directions or [])], machine)
+    except RuntimeError as e:
+        raise KnowledgeBaseError("{}: {}".format(label, e))
+    return json.loads(text)
