@@ -20,14 +20,9 @@ def user_kb_path():
     return os.path.join(FreeCAD.getUserAppDataDir(), "AeroNC", "knowledge.sqlite")
 
 
-def _sql_texts():
+def _sql_folder():
     import aeronc
-    folder = os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
-    with open(os.path.join(folder, "schema.sql")) as f:
-        schema = f.read()
-    with open(os.path.join(folder, "default_data.sql")) as f:
-        data = f.read()
-    return schema, data
+    return os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
 
 
 def select_tools(source, material, directions=None, machine="", kb_path=None):
@@ -38,9 +33,8 @@ def select_tools(source, material, directions=None, machine="", kb_path=None):
     check_solid(shape, label)
     path = kb_path or user_kb_path()
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    schema, data = _sql_texts()
     try:
-        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, schema, data,
+        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, _sql_folder(),
                                        [tuple(float(c) for c in d) for d in (directions or [])], machine)
     except RuntimeError as e:
         raise KnowledgeBaseError("{}: {}".format(label, e))

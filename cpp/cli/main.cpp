@@ -19,6 +19,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -69,25 +70,37 @@ void writeText(const std::string& path, const std::string& text) {
     std::filesystem::rename(tmp, path);
 }
 
+using Next = std::function<std::string()>;
+
+// Calls handle(option, next) for every option after the part argument; `next` takes the
+// option's value. An option handle() does not know is an error.
+template <class Handle>
+void forEachOption(int argc, char** argv, Handle handle) {
+    for (int i = 3; i < argc; ++i) {
+        const std::string a = argv[i];
+        const Next next = [&]() -> std::string {
+            if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
+            return argv[++i];
+        };
+        if (!handle(a, next)) throw aeronc::inputError("unknown option " + a);
+    }
+}
+
 int recogniseCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("recognise needs a part file");
     std::string part = argv[2], jsonOut;
     bool faceNames = false;
     std::vector<std::string> names;
     aeronc::recognition::RecogniseOptions opt;
-    for (int i = 3; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
-            return argv[++i];
-        };
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
         if (a == "--json") jsonOut = next();
         else if (a == "--directions") opt.directions = parseDirections(next());
         else if (a == "--allowance") opt.blankAllowance = std::stod(next());
         else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
         else if (a == "--face-names") faceNames = true;
-        else throw aeronc::inputError("unknown option " + a);
-    }
+        else return false;
+        return true;
+    });
     const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
     const auto tree = aeronc::recognition::recognise(solid, opt);
     std::string text = aeronc::recognition::toJson(tree);
@@ -135,14 +148,6 @@ int panelCmd(int argc, char** argv) {
     return 0;
 }
 
-std::string readText(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) throw aeronc::inputError(p.string() + ": cannot be read");
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::filesystem::path executableDir(const char* argv0) {
     std::error_code ec;
     auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -180,34 +185,21 @@ int selectToolsCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("select-tools needs a part file");
     std::string part = argv[2], jsonOut, kbPath, material, resources, machine;
     aeronc::recognition::RecogniseOptions opt;
-    for (int i = 3; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto next = [&]() -> std::string {
-            if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
-            return argv[++i];
-        };
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
         if (a == "--json") jsonOut = next();
         else if (a == "--kb") kbPath = next();
         else if (a == "--material") material = next();
         else if (a == "--machine") machine = next();
         else if (a == "--directions") opt.directions = parseDirections(next());
         else if (a == "--resources") resources = next();
-        else throw aeronc::inputError("unknown option " + a);
-    }
+        else return false;
+        return true;
+    });
     if (kbPath.empty()) throw aeronc::inputError("select-tools needs --kb KB.sqlite (created when missing)");
     if (material.empty()) throw aeronc::inputError("select-tools needs --material NAME, e.g. 7050-T7451");
 
-    // The SQL texts are needed only to build a missing or empty database.
-    std::string schema, data;
-    std::error_code ec;
-    const bool build = !std::filesystem::exists(kbPath, ec) ||
-                       (std::filesystem::is_regular_file(kbPath, ec) && std::filesystem::file_size(kbPath, ec) == 0);
-    if (build) {
-        const auto dir = kbResources(resources, argv[0]);
-        schema = readText(dir / "schema.sql");
-        data = readText(dir / "default_data.sql");
-    }
-    const auto kb = aeronc::kb::KnowledgeBase::open(kbPath, schema, data);
+    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
+        kbPath, [&] { return kbResources(resources, argv[0]).string(); });
     // Check the material before the (slow) recognition.
     const auto known = kb.workpieceMaterials();
     if (std::find(known.begin(), known.end(), material) == known.end()) {

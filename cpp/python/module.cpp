@@ -114,22 +114,22 @@ PYBIND11_MODULE(_core, m) {
 
     m.def(
         "select_tools_brep",
-        [](const std::string& brep, const std::string& kbPath, const std::string& material, const std::string& schemaSql,
-           const std::string& defaultSql, const std::vector<std::array<double, 3>>& directions,
+        [](const std::string& brep, const std::string& kbPath, const std::string& material, const std::string& sqlFolder,
+           const std::vector<std::array<double, 3>>& directions,
            const std::string& machine) {
             return guarded([&] {
                 const auto o = makeOptions(directions, 0.0, py::none(), 1e-3, 1e-3, 0.01, py::none());
                 const TopoDS_Shape solid = partFromBrepText(brep);
                 py::gil_scoped_release nogil;
-                const auto kb = kb::KnowledgeBase::open(kbPath, schemaSql, defaultSql);
+                const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
                 const auto tree = recognition::recognise(solid, o);
                 return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
             });
         },
-        py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("schema_sql"), py::arg("default_sql"),
+        py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),
         py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("machine") = std::string(),
-        "Recognise a solid and plan its tools from the knowledge base at kb_path (built from the two SQL texts "
-        "when missing); returns JSON text.");
+        "Recognise a solid and plan its tools from the knowledge base at kb_path (built from sql_folder's "
+        "schema.sql and default_data.sql when missing); returns JSON text.");
 
     m.def(
         "make_panel",

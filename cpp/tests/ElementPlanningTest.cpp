@@ -26,14 +26,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    EXPECT_TRUE(in) << "cannot read " << p;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // A plain panel: pockets only, vertical corner radius 6, floor fillet 2.
 testparts::PanelSpec plainSpec() {
     testparts::PanelSpec s;
@@ -64,9 +56,8 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
     kb::KnowledgeBase openDefault() {
-        const fs::path res = fs::path(AERONC_RESOURCES) / "kb";
-        return kb::KnowledgeBase::open((dir_ / "kb.sqlite").string(), readText(res / "schema.sql"),
-                                       readText(res / "default_data.sql"));
+        return kb::KnowledgeBase::openWithSqlFolder((dir_ / "kb.sqlite").string(),
+                                                    [] { return (fs::path(AERONC_RESOURCES) / "kb").string(); });
     }
     fs::path dir_;
 };

@@ -129,6 +129,28 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
     EXPECT_EQ(openDefault(p).tools().size(), 29u);
 }
 
+// The SQL folder is needed, and asked for, only when the file has to be built.
+TEST_F(KnowledgeBaseTest, SqlFolderAskedOnlyToBuild) {
+    const fs::path p = file();
+    int asked = 0;
+    const auto folder = [&] {
+        ++asked;
+        return (fs::path(AERONC_RESOURCES) / "kb").string();
+    };
+    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), 29u);
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), 29u);
+    EXPECT_EQ(asked, 1);
+    const fs::path other = p.parent_path() / "other.sqlite";
+    try {
+        KnowledgeBase::openWithSqlFolder(other.string(), [] { return std::string("/nonexistent"); });
+        FAIL() << "built without SQL";
+    } catch (const aeronc::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("schema.sql"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(other));
+}
+
 TEST_F(KnowledgeBaseTest, Thresholds) {
     KnowledgeBase kb = openDefault(file());
     EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.85);

@@ -4,6 +4,7 @@
 #include <sqlite3.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <system_error>
@@ -252,6 +253,24 @@ KnowledgeBase::KnowledgeBase(std::unique_ptr<sqlite3, Closer> db, std::string pa
 KnowledgeBase::KnowledgeBase(KnowledgeBase&&) noexcept = default;
 KnowledgeBase& KnowledgeBase::operator=(KnowledgeBase&&) noexcept = default;
 KnowledgeBase::~KnowledgeBase() = default;
+
+KnowledgeBase KnowledgeBase::openWithSqlFolder(const std::string& path,
+                                               const std::function<std::string()>& sqlFolder) {
+    std::error_code ec;
+    const bool build = !fs::exists(path, ec) || (fs::is_regular_file(path, ec) && fs::file_size(path, ec) == 0);
+    if (!build) return open(path, "", "");
+    const fs::path folder = sqlFolder();
+    auto read = [&](const char* name) {
+        const fs::path p = folder / name;
+        std::ifstream in(p, std::ios::binary);
+        if (!in) throw inputError("knowledge-base SQL " + p.string() + " cannot be read");
+        std::ostringstream text;
+        text << in.rdbuf();
+        return text.str();
+    };
+    const std::string schema = read("schema.sql");
+    return open(path, schema, read("default_data.sql"));
+}
 
 KnowledgeBase KnowledgeBase::open(const std::string& path, const std::string& schemaSql,
                                   const std::string& defaultDataSql) {

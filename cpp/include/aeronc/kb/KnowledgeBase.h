@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ public:
     // the user's rows; a copy of the old file is kept next to it as `<path>.v<N>.bak`.
     static KnowledgeBase open(const std::string& path, const std::string& schemaSql,
                               const std::string& defaultDataSql);
+
+    // The same, reading schema.sql and default_data.sql from the folder sqlFolder() names,
+    // asked only when the file has to be built (missing or empty).
+    static KnowledgeBase openWithSqlFolder(const std::string& path, const std::function<std::string()>& sqlFolder);
 
     KnowledgeBase(KnowledgeBase&&) noexcept;
     KnowledgeBase& operator=(KnowledgeBase&&) noexcept;
