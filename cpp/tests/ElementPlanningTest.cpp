@@ -212,7 +212,7 @@ TEST_F(ElementPlanningTest, PanelToolsMatchHandComputation) {
     EXPECT_EQ(plan.groupsAfter[0].elements.size(), 2u);
     EXPECT_EQ(plan.merge.toolChangesBefore, 0);
     EXPECT_EQ(plan.merge.toolChangesAfter, 0);
-    const auto cc = kb.cuttingCondition(material, rougher->material, "roughing");
+    const auto cc = kb.cuttingCondition(material, rougher->material, "roughing", rougher->diameter);
     const double n = 1000 * cc.vc / (kPi * rougher->diameter);
     const double feed = cc.fz * rougher->flutes * n;
     const double ae = cc.aeRatio * rougher->diameter;

@@ -122,7 +122,7 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
         for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
             for (const std::string tm : {"HSS", "carbide"})
                 for (const std::string op : {"roughing", "finishing", "drilling"})
-                    EXPECT_NO_THROW(kb.cuttingCondition(m, tm, op)) << m << " " << tm << " " << op;
+                    EXPECT_NO_THROW(kb.cuttingCondition(m, tm, op, 10.0)) << m << " " << tm << " " << op;
     }
     EXPECT_FALSE(fs::exists(p.string() + ".creating"));
     // Opening again keeps the rows (no second insert of the defaults).
@@ -260,7 +260,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionZeroKeepingUserRows) {
 
     {
         KnowledgeBase kb = openDefault(p);
-        EXPECT_EQ(kb.schemaVersion(), 1);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
         const auto tools = kb.tools();
         ASSERT_EQ(tools.size(), 1u);
         EXPECT_EQ(tools[0].id, "MY-TOOL-14");
@@ -276,6 +276,86 @@ TEST_F(KnowledgeBaseTest, MigratesVersionZeroKeepingUserRows) {
     EXPECT_TRUE(fs::exists(p.string() + ".v0.bak"));
     // Reopening a migrated file does nothing more.
     EXPECT_EQ(openDefault(p).tools().size(), 2u);
+}
+
+TEST_F(KnowledgeBaseTest, MigratesVersionOneKeepingUserRows) {
+    const fs::path p = file();
+    // The version-1 layout: tool types without 'other', cutting data without diameter ranges,
+    // no FreeCAD tables; with a user's tool, cutting data and changed threshold.
+    rawExec(p, R"sql(
+        PRAGMA foreign_keys = ON;
+        CREATE TABLE schema_version (version INTEGER NOT NULL);
+        INSERT INTO schema_version VALUES (1);
+        CREATE TABLE workpiece_material (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, family TEXT NOT NULL,
+                                         hardness_hb REAL);
+        CREATE TABLE tool_material (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, kind TEXT NOT NULL);
+        CREATE TABLE machine (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, type TEXT NOT NULL,
+            kinematics TEXT NOT NULL, travel_x REAL NOT NULL, travel_y REAL NOT NULL, travel_z REAL NOT NULL,
+            a_min REAL, a_max REAL, c_min REAL, c_max REAL, max_spindle_rpm REAL NOT NULL, power_kw REAL NOT NULL,
+            max_feed_mm_min REAL NOT NULL, max_force_n REAL NOT NULL, efficiency REAL NOT NULL,
+            tool_change_s REAL NOT NULL);
+        CREATE TABLE tool (
+            id TEXT PRIMARY KEY NOT NULL,
+            type TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face')),
+            tool_material TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+            diameter REAL NOT NULL, corner_radius REAL NOT NULL DEFAULT 0, flutes INTEGER NOT NULL,
+            flute_length REAL NOT NULL, overall_length REAL, reach REAL NOT NULL, cost REAL);
+        CREATE TABLE cutting_condition (id INTEGER PRIMARY KEY,
+            workpiece_material TEXT NOT NULL REFERENCES workpiece_material (name) ON UPDATE CASCADE,
+            tool_material TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+            operation TEXT NOT NULL, vc_m_min REAL NOT NULL, fz_mm REAL NOT NULL, ap_mm REAL NOT NULL,
+            ae_ratio REAL NOT NULL, c_f REAL NOT NULL, x_f REAL NOT NULL, y_f REAL NOT NULL, u_f REAL NOT NULL,
+            q_f REAL NOT NULL, w_f REAL NOT NULL, k_fc REAL NOT NULL DEFAULT 1, taylor_c REAL NOT NULL,
+            taylor_m REAL NOT NULL, UNIQUE (workpiece_material, tool_material, operation));
+        CREATE TABLE threshold (name TEXT PRIMARY KEY NOT NULL, value REAL NOT NULL, description TEXT);
+        CREATE TABLE process_template (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, steps TEXT NOT NULL);
+        CREATE TABLE sequencing_rule (id INTEGER PRIMARY KEY, priority INTEGER NOT NULL UNIQUE, rule TEXT NOT NULL);
+        INSERT INTO workpiece_material (name, family) VALUES ('7075-T6', 'aluminium');
+        INSERT INTO tool_material (name, kind) VALUES ('carbide', 'carbide');
+        INSERT INTO tool VALUES ('SHOP-EM-14', 'bull', 'carbide', 14, 1.5, 4, 30, 90, 40, 77);
+        INSERT INTO cutting_condition (workpiece_material, tool_material, operation, vc_m_min, fz_mm, ap_mm,
+            ae_ratio, c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m)
+            VALUES ('7075-T6', 'carbide', 'roughing', 444, 0.07, 3.5, 0.4, 200, 1, 0.75, 1.1, 1.3, 0.2, 1, 1400, 0.3);
+        INSERT INTO threshold (name, value) VALUES ('eta_min', 0.8), ('mu_merge', 0.7);
+    )sql");
+
+    {
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), 2);
+        const auto tools = kb.tools();
+        ASSERT_EQ(tools.size(), 1u);
+        EXPECT_EQ(tools[0].id, "SHOP-EM-14");
+        EXPECT_DOUBLE_EQ(tools[0].cornerRadius, 1.5);
+        EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.8);
+        EXPECT_DOUBLE_EQ(kb.threshold("plunge_feed_ratio"), 0.3);  // added by the migration
+        // The user's cutting data, for any diameter (the row has no range).
+        const auto cc = kb.cuttingCondition("7075-T6", "carbide", "roughing", 14.0);
+        EXPECT_DOUBLE_EQ(cc.vc, 444);
+        EXPECT_FALSE(cc.dMin.has_value());
+        EXPECT_DOUBLE_EQ(kb.cuttingCondition("7075-T6", "carbide", "roughing").fz, 0.07);
+        // What version 2 allows: a tool kept for FreeCAD only.
+        Tool probe = tool("PROBE-2", 2, 0, "other");
+        kb.addTool(probe);
+        EXPECT_EQ(kb.tools().size(), 2u);
+        // The old constraint still holds in the rebuilt table.
+        EXPECT_NE(errorOf([&] { kb.addTool(tool("BAD", 4, 3, "bull")); }), "");
+    }
+    EXPECT_TRUE(fs::exists(p.string() + ".v1.bak"));
+}
+
+TEST_F(KnowledgeBaseTest, CuttingDataByDiameterRange) {
+    KnowledgeBase kb = openDefault(file());
+    // Shipped rows for 7050-T7451 carbide roughing: [0,6) f_z 0.04, [6,10) 0.06, [10,16) 0.08,
+    // [16,25) 0.10 with a_p 5, [25,inf) 0.12.
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 4.0).fz, 0.04);
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 10.0).fz, 0.08);  // lower bound in
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 15.99).fz, 0.08);
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 16.0).ap, 5.0);
+    EXPECT_DOUBLE_EQ(*kb.cuttingCondition("7050-T7451", "carbide", "roughing", 40.0).dMin, 25.0);
+    // Unranged rows serve any diameter; without a diameter, ranged rows cannot be chosen.
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "finishing", 6.0).fz, 0.06);
+    const std::string e = errorOf([&] { kb.cuttingCondition("7050-T7451", "carbide", "roughing"); });
+    EXPECT_NE(e.find("diameter"), std::string::npos) << e;
 }
 
 TEST_F(KnowledgeBaseTest, NewerSchemaVersionRefused) {

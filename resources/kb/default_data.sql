@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 1 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 2 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -74,43 +74,55 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
 
 -- Cutting conditions -------------------------------------------------------------------
 -- ae_ratio is a_e / tool diameter; drilling rows use a_p = hole-depth step (peck), ae_ratio 1.
+-- Rows with a diameter range [d_min, d_max) take precedence over a row without one. Handbook
+-- tables raise f_z and a_p with the diameter (a stiffer tool carries a thicker chip); without
+-- that every diameter would take the same time per layer and tool groups would always merge.
 INSERT INTO cutting_condition (workpiece_material, tool_material, operation, vc_m_min, fz_mm, ap_mm, ae_ratio,
-                               c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m) VALUES
+                               c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m, d_min, d_max) VALUES
   -- 7050-T7451
-  ('7050-T7451', 'carbide', 'roughing',  600, 0.10, 4.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30),
-  ('7050-T7451', 'carbide', 'finishing', 800, 0.06, 1.0, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30),
-  ('7050-T7451', 'carbide', 'drilling',  150, 0.08, 5.0, 1.00, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30),
-  ('7050-T7451', 'HSS',     'roughing',  150, 0.08, 3.0, 0.50,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15),
-  ('7050-T7451', 'HSS',     'finishing', 200, 0.05, 0.8, 0.10,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15),
-  ('7050-T7451', 'HSS',     'drilling',   60, 0.10, 5.0, 1.00,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15),
+  ('7050-T7451', 'carbide', 'roughing', 600, 0.04, 1.5, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, NULL, 6),
+  ('7050-T7451', 'carbide', 'roughing', 600, 0.06, 3.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 6, 10),
+  ('7050-T7451', 'carbide', 'roughing', 600, 0.08, 4.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 10, 16),
+  ('7050-T7451', 'carbide', 'roughing', 600, 0.10, 5.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 16, 25),
+  ('7050-T7451', 'carbide', 'roughing', 600, 0.12, 6.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 25, NULL),
+  ('7050-T7451', 'carbide', 'finishing', 800, 0.06, 1.0, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, NULL, NULL),
+  ('7050-T7451', 'carbide', 'drilling',  150, 0.08, 5.0, 1.00, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, NULL, NULL),
+  ('7050-T7451', 'HSS',     'roughing',  150, 0.08, 3.0, 0.50,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15, NULL, NULL),
+  ('7050-T7451', 'HSS',     'finishing', 200, 0.05, 0.8, 0.10,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15, NULL, NULL),
+  ('7050-T7451', 'HSS',     'drilling',   60, 0.10, 5.0, 1.00,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  400, 0.15, NULL, NULL),
   -- 2024-T351
-  ('2024-T351',  'carbide', 'roughing',  550, 0.10, 4.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30),
-  ('2024-T351',  'carbide', 'finishing', 750, 0.06, 1.0, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30),
-  ('2024-T351',  'carbide', 'drilling',  140, 0.08, 5.0, 1.00, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30),
-  ('2024-T351',  'HSS',     'roughing',  140, 0.08, 3.0, 0.50,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15),
-  ('2024-T351',  'HSS',     'finishing', 180, 0.05, 0.8, 0.10,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15),
-  ('2024-T351',  'HSS',     'drilling',   55, 0.10, 5.0, 1.00,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15),
+  ('2024-T351', 'carbide', 'roughing', 550, 0.04, 1.5, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, NULL, 6),
+  ('2024-T351', 'carbide', 'roughing', 550, 0.06, 3.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 6, 10),
+  ('2024-T351', 'carbide', 'roughing', 550, 0.08, 4.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 10, 16),
+  ('2024-T351', 'carbide', 'roughing', 550, 0.10, 5.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 16, 25),
+  ('2024-T351', 'carbide', 'roughing', 550, 0.12, 6.0, 0.50, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 25, NULL),
+  ('2024-T351',  'carbide', 'finishing', 750, 0.06, 1.0, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, NULL, NULL),
+  ('2024-T351',  'carbide', 'drilling',  140, 0.08, 5.0, 1.00, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, NULL, NULL),
+  ('2024-T351',  'HSS',     'roughing',  140, 0.08, 3.0, 0.50,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15, NULL, NULL),
+  ('2024-T351',  'HSS',     'finishing', 180, 0.05, 0.8, 0.10,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15, NULL, NULL),
+  ('2024-T351',  'HSS',     'drilling',   55, 0.10, 5.0, 1.00,  17, 0.86,0.72, 1.0, 0.86,0.0, 1.0,  380, 0.15, NULL, NULL),
   -- Ti-6Al-4V
-  ('Ti-6Al-4V',  'carbide', 'roughing',   50, 0.06, 2.0, 0.30, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20),
-  ('Ti-6Al-4V',  'carbide', 'finishing',  70, 0.04, 0.5, 0.08, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20),
-  ('Ti-6Al-4V',  'carbide', 'drilling',   30, 0.05, 2.0, 1.00, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20),
-  ('Ti-6Al-4V',  'HSS',     'roughing',   15, 0.04, 1.5, 0.30,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10),
-  ('Ti-6Al-4V',  'HSS',     'finishing',  20, 0.03, 0.4, 0.08,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10),
-  ('Ti-6Al-4V',  'HSS',     'drilling',   10, 0.04, 2.0, 1.00,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10),
+  ('Ti-6Al-4V',  'carbide', 'roughing',   50, 0.06, 2.0, 0.30, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, NULL, NULL),
+  ('Ti-6Al-4V',  'carbide', 'finishing',  70, 0.04, 0.5, 0.08, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, NULL, NULL),
+  ('Ti-6Al-4V',  'carbide', 'drilling',   30, 0.05, 2.0, 1.00, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, NULL, NULL),
+  ('Ti-6Al-4V',  'HSS',     'roughing',   15, 0.04, 1.5, 0.30,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10, NULL, NULL),
+  ('Ti-6Al-4V',  'HSS',     'finishing',  20, 0.03, 0.4, 0.08,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10, NULL, NULL),
+  ('Ti-6Al-4V',  'HSS',     'drilling',   10, 0.04, 2.0, 1.00,  75, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   25, 0.10, NULL, NULL),
   -- 45 steel
-  ('45 steel',   'carbide', 'roughing',  120, 0.15, 3.0, 0.50, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25),
-  ('45 steel',   'carbide', 'finishing', 160, 0.08, 0.5, 0.10, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25),
-  ('45 steel',   'carbide', 'drilling',   70, 0.10, 3.0, 1.00, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25),
-  ('45 steel',   'HSS',     'roughing',   25, 0.10, 3.0, 0.50,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125),
-  ('45 steel',   'HSS',     'finishing',  35, 0.06, 0.5, 0.10,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125),
-  ('45 steel',   'HSS',     'drilling',   20, 0.12, 3.0, 1.00,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125);
+  ('45 steel',   'carbide', 'roughing',  120, 0.15, 3.0, 0.50, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, NULL, NULL),
+  ('45 steel',   'carbide', 'finishing', 160, 0.08, 0.5, 0.10, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, NULL, NULL),
+  ('45 steel',   'carbide', 'drilling',   70, 0.10, 3.0, 1.00, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, NULL, NULL),
+  ('45 steel',   'HSS',     'roughing',   25, 0.10, 3.0, 0.50,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125, NULL, NULL),
+  ('45 steel',   'HSS',     'finishing',  35, 0.06, 0.5, 0.10,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125, NULL, NULL),
+  ('45 steel',   'HSS',     'drilling',   20, 0.12, 3.0, 1.00,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125, NULL, NULL);
 
 -- Rule knowledge -----------------------------------------------------------------------
 INSERT INTO threshold (name, value, description) VALUES
   ('eta_min',        0.85, 'least machinable ratio A_m/A for a roughing tool'),
   ('mu_merge',       0.70, 'merge two tool groups onto the smaller tool when mu exceeds this'),
   ('layer_delta_mm', 0.50, 'delta: a last layer thinner than this is folded into the one above'),
-  ('ra_max_um',      3.20, 'default roughness limit R_a for finishing');
+  ('ra_max_um',      3.20, 'default roughness limit R_a for finishing'),
+  ('plunge_feed_ratio', 0.30, 'vertical (plunge and ramp) feed as a fraction of the horizontal feed');
 
 -- Step codes (DESIGN.md section 3): r rough, w webs, c corners, ss/sf semi-finish walls/flanges,
 -- fs/ff finish walls/flanges, t cut off.

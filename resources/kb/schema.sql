@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 1.
+-- AeroNC machining knowledge base, schema version 2.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
@@ -13,7 +13,7 @@ PRAGMA foreign_keys = ON;
 CREATE TABLE schema_version (
     version INTEGER NOT NULL
 );
-INSERT INTO schema_version (version) VALUES (1);
+INSERT INTO schema_version (version) VALUES (2);
 
 -- Resource facts -----------------------------------------------------------------------
 
@@ -54,9 +54,10 @@ CREATE TABLE tool_material (
 
 -- A tool the selector may choose. Impossible dimensions are refused by the database too,
 -- not only by toolselect::Tool::validate(), so a hand edit cannot store them.
+-- 'other' is a tool kept for FreeCAD (chamfer, v-bit, probe, ...) that the selector never picks.
 CREATE TABLE tool (
     id             TEXT PRIMARY KEY NOT NULL,
-    type           TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face')),
+    type           TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face', 'other')),
     tool_material  TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
     diameter       REAL NOT NULL CHECK (diameter > 0),
     corner_radius  REAL NOT NULL DEFAULT 0 CHECK (corner_radius >= 0 AND corner_radius <= diameter / 2.0),
@@ -67,7 +68,8 @@ CREATE TABLE tool (
     cost           REAL CHECK (cost IS NULL OR cost >= 0)
 );
 
--- Material x tool material x operation -> cutting data and the empirical coefficients of
+-- Material x tool material x operation [x tool diameter range] -> cutting data and the
+-- empirical coefficients of
 --   F_c = 9.81 * c_f * ap^x_f * fz^y_f * ae^u_f * Z / (d0^q_f * n^w_f) * k_fc   [N]
 --   Taylor: v_c * T^taylor_m = taylor_c                                          [T in min]
 CREATE TABLE cutting_condition (
@@ -75,6 +77,8 @@ CREATE TABLE cutting_condition (
     workpiece_material TEXT NOT NULL REFERENCES workpiece_material (name) ON UPDATE CASCADE,
     tool_material      TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
     operation          TEXT NOT NULL,             -- 'roughing', 'finishing', 'drilling', ...
+    d_min              REAL CHECK (d_min IS NULL OR d_min >= 0),  -- tool diameter range [d_min, d_max);
+    d_max              REAL CHECK (d_max IS NULL OR d_max > 0),   -- NULL: open on that side
     vc_m_min           REAL NOT NULL CHECK (vc_m_min > 0),
     fz_mm              REAL NOT NULL CHECK (fz_mm > 0),
     ap_mm              REAL NOT NULL CHECK (ap_mm > 0),
@@ -88,7 +92,31 @@ CREATE TABLE cutting_condition (
     k_fc               REAL NOT NULL DEFAULT 1,
     taylor_c           REAL NOT NULL CHECK (taylor_c > 0),
     taylor_m           REAL NOT NULL CHECK (taylor_m > 0),
-    UNIQUE (workpiece_material, tool_material, operation)
+    CHECK (d_min IS NULL OR d_max IS NULL OR d_min < d_max),
+    UNIQUE (workpiece_material, tool_material, operation, d_min)
+);
+
+-- FreeCAD tool bridge ------------------------------------------------------------------
+-- The tool-bit document (.fctb JSON) a tool came from, kept whole so that exporting gives
+-- back what was imported; the dimensions in `tool` are the ones that count, and an export
+-- writes them back into the document's parameters when they were edited.
+CREATE TABLE freecad_tool_bit (
+    tool_id   TEXT PRIMARY KEY NOT NULL REFERENCES tool (id) ON UPDATE CASCADE ON DELETE CASCADE,
+    file_name TEXT NOT NULL,                      -- e.g. '5mm_Endmill.fctb'
+    document  TEXT NOT NULL                       -- the .fctb JSON text
+);
+
+-- A FreeCAD tool library (.fctl): numbered tools.
+CREATE TABLE freecad_tool_library (
+    name    TEXT PRIMARY KEY NOT NULL,            -- the .fctl file name without extension
+    version INTEGER NOT NULL DEFAULT 1
+);
+
+CREATE TABLE freecad_tool_library_entry (
+    library TEXT NOT NULL REFERENCES freecad_tool_library (name) ON UPDATE CASCADE ON DELETE CASCADE,
+    nr      INTEGER NOT NULL CHECK (nr >= 0),     -- FreeCAD's tool number
+    tool_id TEXT NOT NULL REFERENCES tool (id) ON UPDATE CASCADE ON DELETE CASCADE,
+    PRIMARY KEY (library, nr)
 );
 
 -- Rule knowledge -----------------------------------------------------------------------

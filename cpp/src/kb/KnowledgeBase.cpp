@@ -26,7 +26,7 @@ constexpr int kBusyTimeoutMs = 250;
 // schema_version is set to KnowledgeBase::kSchemaVersion. Steps must keep user rows.
 //
 // Version 0 is the layout before versioning: no schema_version table and no tool.cost
-// column. The step adds both, and creates the rule tables a version-0 file may lack,
+// column. The step adds both, and creates the version-1 tables a version-0 file may lack,
 // seeding the two thresholds the selector needs when they are absent.
 const std::map<int, const char*> kMigrations = {
     {0, R"sql(
@@ -38,10 +38,91 @@ CREATE TABLE IF NOT EXISTS threshold (
 INSERT OR IGNORE INTO threshold (name, value, description) VALUES
     ('eta_min', 0.85, 'least machinable ratio A_m/A for a roughing tool'),
     ('mu_merge', 0.70, 'merge two tool groups onto the smaller tool when mu exceeds this');
+CREATE TABLE IF NOT EXISTS machine (
+    id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, type TEXT NOT NULL, kinematics TEXT NOT NULL,
+    travel_x REAL NOT NULL CHECK (travel_x > 0), travel_y REAL NOT NULL CHECK (travel_y > 0),
+    travel_z REAL NOT NULL CHECK (travel_z > 0), a_min REAL, a_max REAL, c_min REAL, c_max REAL,
+    max_spindle_rpm REAL NOT NULL CHECK (max_spindle_rpm > 0), power_kw REAL NOT NULL CHECK (power_kw > 0),
+    max_feed_mm_min REAL NOT NULL CHECK (max_feed_mm_min > 0), max_force_n REAL NOT NULL CHECK (max_force_n > 0),
+    efficiency REAL NOT NULL CHECK (efficiency > 0 AND efficiency <= 1),
+    tool_change_s REAL NOT NULL CHECK (tool_change_s >= 0));
+CREATE TABLE IF NOT EXISTS workpiece_material (
+    id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, family TEXT NOT NULL,
+    hardness_hb REAL CHECK (hardness_hb IS NULL OR hardness_hb > 0));
+CREATE TABLE IF NOT EXISTS cutting_condition (
+    id INTEGER PRIMARY KEY,
+    workpiece_material TEXT NOT NULL REFERENCES workpiece_material (name) ON UPDATE CASCADE,
+    tool_material TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    operation TEXT NOT NULL, vc_m_min REAL NOT NULL, fz_mm REAL NOT NULL, ap_mm REAL NOT NULL,
+    ae_ratio REAL NOT NULL, c_f REAL NOT NULL, x_f REAL NOT NULL, y_f REAL NOT NULL, u_f REAL NOT NULL,
+    q_f REAL NOT NULL, w_f REAL NOT NULL, k_fc REAL NOT NULL DEFAULT 1, taylor_c REAL NOT NULL,
+    taylor_m REAL NOT NULL, UNIQUE (workpiece_material, tool_material, operation));
 CREATE TABLE IF NOT EXISTS process_template (
     id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, steps TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS sequencing_rule (
     id INTEGER PRIMARY KEY, priority INTEGER NOT NULL UNIQUE, rule TEXT NOT NULL);
+)sql"},
+    // Version 1 -> 2: tool type 'other' (tools kept for FreeCAD only), cutting data by tool
+    // diameter range, the FreeCAD tool-bridge tables, and the plunge-feed ratio. SQLite cannot
+    // alter a CHECK or UNIQUE constraint, so tool and cutting_condition are rebuilt.
+    {1, R"sql(
+CREATE TABLE tool_v2 (
+    id             TEXT PRIMARY KEY NOT NULL,
+    type           TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face', 'other')),
+    tool_material  TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    diameter       REAL NOT NULL CHECK (diameter > 0),
+    corner_radius  REAL NOT NULL DEFAULT 0 CHECK (corner_radius >= 0 AND corner_radius <= diameter / 2.0),
+    flutes         INTEGER NOT NULL CHECK (flutes > 0),
+    flute_length   REAL NOT NULL CHECK (flute_length > 0),
+    overall_length REAL CHECK (overall_length IS NULL OR overall_length >= reach),
+    reach          REAL NOT NULL CHECK (reach >= flute_length),
+    cost           REAL CHECK (cost IS NULL OR cost >= 0)
+);
+INSERT INTO tool_v2 (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost)
+    SELECT id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost FROM tool;
+DROP TABLE tool;
+ALTER TABLE tool_v2 RENAME TO tool;
+CREATE TABLE cutting_condition_v2 (
+    id                 INTEGER PRIMARY KEY,
+    workpiece_material TEXT NOT NULL REFERENCES workpiece_material (name) ON UPDATE CASCADE,
+    tool_material      TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    operation          TEXT NOT NULL,
+    d_min              REAL CHECK (d_min IS NULL OR d_min >= 0),
+    d_max              REAL CHECK (d_max IS NULL OR d_max > 0),
+    vc_m_min           REAL NOT NULL CHECK (vc_m_min > 0),
+    fz_mm              REAL NOT NULL CHECK (fz_mm > 0),
+    ap_mm              REAL NOT NULL CHECK (ap_mm > 0),
+    ae_ratio           REAL NOT NULL CHECK (ae_ratio > 0 AND ae_ratio <= 1),
+    c_f REAL NOT NULL, x_f REAL NOT NULL, y_f REAL NOT NULL, u_f REAL NOT NULL, q_f REAL NOT NULL, w_f REAL NOT NULL,
+    k_fc               REAL NOT NULL DEFAULT 1,
+    taylor_c           REAL NOT NULL CHECK (taylor_c > 0),
+    taylor_m           REAL NOT NULL CHECK (taylor_m > 0),
+    CHECK (d_min IS NULL OR d_max IS NULL OR d_min < d_max),
+    UNIQUE (workpiece_material, tool_material, operation, d_min)
+);
+INSERT INTO cutting_condition_v2 (id, workpiece_material, tool_material, operation, vc_m_min, fz_mm, ap_mm, ae_ratio,
+                                  c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m)
+    SELECT id, workpiece_material, tool_material, operation, vc_m_min, fz_mm, ap_mm, ae_ratio,
+           c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m FROM cutting_condition;
+DROP TABLE cutting_condition;
+ALTER TABLE cutting_condition_v2 RENAME TO cutting_condition;
+CREATE TABLE freecad_tool_bit (
+    tool_id   TEXT PRIMARY KEY NOT NULL REFERENCES tool (id) ON UPDATE CASCADE ON DELETE CASCADE,
+    file_name TEXT NOT NULL,
+    document  TEXT NOT NULL
+);
+CREATE TABLE freecad_tool_library (
+    name    TEXT PRIMARY KEY NOT NULL,
+    version INTEGER NOT NULL DEFAULT 1
+);
+CREATE TABLE freecad_tool_library_entry (
+    library TEXT NOT NULL REFERENCES freecad_tool_library (name) ON UPDATE CASCADE ON DELETE CASCADE,
+    nr      INTEGER NOT NULL CHECK (nr >= 0),
+    tool_id TEXT NOT NULL REFERENCES tool (id) ON UPDATE CASCADE ON DELETE CASCADE,
+    PRIMARY KEY (library, nr)
+);
+INSERT OR IGNORE INTO threshold (name, value, description) VALUES
+    ('plunge_feed_ratio', 0.30, 'vertical (plunge and ramp) feed as a fraction of the horizontal feed');
 )sql"},
 };
 
@@ -393,8 +474,8 @@ double KnowledgeBase::threshold(const std::string& name) const {
 }
 
 CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMaterial,
-                                                 const std::string& toolMaterial,
-                                                 const std::string& operation) const {
+                                                 const std::string& toolMaterial, const std::string& operation,
+                                                 std::optional<double> toolDiameter) const {
     sqlite3* db = db_.get();
     {
         Statement s(db, path_, "SELECT 1 FROM workpiece_material WHERE name = ?");
@@ -410,11 +491,28 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
             throw inputError("unknown tool material " + quoted(toolMaterial) + " (known: " +
                              joined(names(db, path_, "SELECT name FROM tool_material ORDER BY name")) + ")");
     }
+    // ?4 NULL (no diameter) matches only rows without a range; ranged rows sort first.
     Statement s(db, path_,
-                "SELECT vc_m_min, fz_mm, ap_mm, ae_ratio, c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m "
-                "FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? AND operation = ?");
-    s.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
+                "SELECT vc_m_min, fz_mm, ap_mm, ae_ratio, c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m, "
+                "d_min, d_max FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
+                "AND operation = ? AND ((d_min IS NULL AND d_max IS NULL) OR (?4 IS NOT NULL "
+                "AND (d_min IS NULL OR d_min <= ?4) AND (d_max IS NULL OR ?4 < d_max))) "
+                "ORDER BY (d_min IS NULL AND d_max IS NULL), d_min DESC LIMIT 1");
+    s.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation).bind(4, toolDiameter);
     if (!s.step("reading cutting conditions")) {
+        Statement ranged(db, path_,
+                         "SELECT count(*) FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
+                         "AND operation = ?");
+        ranged.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
+        ranged.step();
+        if (ranged.integer(0) > 0) {
+            std::ostringstream d;
+            if (toolDiameter) d << "a " << *toolDiameter << " mm tool";
+            else d << "a tool of unknown diameter (the rows are by diameter range)";
+            throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " +
+                             quoted(toolMaterial) + " tools and operation " + quoted(operation) + " covers " +
+                             d.str());
+        }
         Statement ops(db, path_,
                       "SELECT operation FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
                       "ORDER BY operation");
@@ -442,6 +540,8 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
     c.kFc = s.real(10);
     c.taylorC = s.real(11);
     c.taylorM = s.real(12);
+    c.dMin = s.optReal(13);
+    c.dMax = s.optReal(14);
     return c;
 }
 

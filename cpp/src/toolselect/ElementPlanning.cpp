@@ -221,16 +221,16 @@ ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const st
     } catch (const Error&) {
     }
 
-    // Cutting data per (tool material, operation); absent: the tool does not suit the part.
-    std::map<std::pair<std::string, std::string>, std::optional<kb::CuttingCondition>> cache;
-    auto condition = [&kb, &cache, material](const std::string& toolMaterial,
+    // Cutting data per (tool material, operation, diameter); absent: the tool does not suit the part.
+    std::map<std::tuple<std::string, std::string, double>, std::optional<kb::CuttingCondition>> cache;
+    auto condition = [&kb, &cache, material](const Tool& tool,
                                              const std::string& op) -> const std::optional<kb::CuttingCondition>& {
-        auto key = std::make_pair(toolMaterial, op);
+        auto key = std::make_tuple(tool.material, op, tool.diameter);
         auto it = cache.find(key);
         if (it == cache.end()) {
             std::optional<kb::CuttingCondition> c;
             try {
-                c = kb.cuttingCondition(material, toolMaterial, op);
+                c = kb.cuttingCondition(material, tool.material, op, tool.diameter);
             } catch (const Error&) {
             }
             it = cache.emplace(key, c).first;
@@ -238,12 +238,12 @@ ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const st
         return it->second;
     };
     const std::vector<Tool> tools = kb.tools();
-    s.mayFinish = [&](const Tool& t) { return condition(t.material, "finishing").has_value(); };
-    s.mayRough = [&](const Tool& t) { return condition(t.material, "roughing").has_value(); };
-    s.mayDrill = [&](const Tool& t) { return condition(t.material, "drilling").has_value(); };
+    s.mayFinish = [&](const Tool& t) { return t.isEndMill() && condition(t, "finishing").has_value(); };
+    s.mayRough = [&](const Tool& t) { return t.isEndMill() && condition(t, "roughing").has_value(); };
+    s.mayDrill = [&](const Tool& t) { return t.type == "drill" && condition(t, "drilling").has_value(); };
     s.roughingData = [&](std::size_t i) {
         const Tool& t = tools.at(i);
-        const auto& c = condition(t.material, "roughing");
+        const auto& c = condition(t, "roughing");
         if (!c)
             throw inputError("tool " + t.id + ": no roughing cutting data for '" + material + "' with '" +
                              t.material + "'");

@@ -9,8 +9,8 @@ namespace aeronc::toolselect {
 void Tool::validate() const {
     const std::string who = "tool '" + id + "': ";
     auto fail = [&](const std::string& what) { throw inputError(who + what); };
-    if (!isEndMill() && type != "drill" && type != "face")
-        fail("unknown type '" + type + "' (expected flat, bull, ball, drill or face)");
+    if (!isEndMill() && type != "drill" && type != "face" && type != "other")
+        fail("unknown type '" + type + "' (expected flat, bull, ball, drill, face or other)");
     const double dims[] = {diameter, cornerRadius, fluteLength, reach};
     for (double d : dims)
         if (!std::isfinite(d)) fail("dimensions must be finite numbers");

@@ -25,6 +25,7 @@ struct CuttingCondition {
     std::string workpieceMaterial;
     std::string toolMaterial;
     std::string operation;
+    std::optional<double> dMin, dMax;  // the tool diameter range of the row; empty: open
     double vc = 0;       // m/min
     double fz = 0;       // mm per tooth
     double ap = 0;       // mm
@@ -50,7 +51,7 @@ struct Machine {
 class KnowledgeBase {
 public:
     // The schema version this build writes and reads; older files are migrated on open.
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2;
 
     // Opens the knowledge base at `path`. A missing file is built from the two SQL texts
     // (under a temporary name, then renamed, so a half-built file is never left at `path`).
@@ -80,9 +81,12 @@ public:
 
     // A rule threshold such as "eta_min" or "mu_merge"; throws inputError if unknown.
     double threshold(const std::string& name) const;
+    // The cutting data for a tool of `toolDiameter` (mm): a row whose diameter range holds it
+    // wins over a row without a range. Without a diameter only rows without a range count.
     // Throws inputError for an unknown workpiece or tool material, or a missing combination.
     CuttingCondition cuttingCondition(const std::string& workpieceMaterial, const std::string& toolMaterial,
-                                      const std::string& operation) const;
+                                      const std::string& operation,
+                                      std::optional<double> toolDiameter = std::nullopt) const;
     Machine machine(const std::string& name) const;
     std::vector<std::string> workpieceMaterials() const;
     std::vector<std::string> machineNames() const;

@@ -6,7 +6,7 @@ namespace aeronc::toolselect {
 
 struct Tool {
     std::string id;
-    std::string type;  // "flat", "bull", "ball", "drill", "face"
+    std::string type;  // "flat", "bull", "ball", "drill", "face"; "other": kept for FreeCAD, never chosen
     std::string material;
     double diameter = 0;
     double cornerRadius = 0;  // a ball's is its radius
