@@ -108,8 +108,9 @@ CREATE TABLE freecad_tool_bit (
 
 -- A FreeCAD tool library (.fctl): numbered tools.
 CREATE TABLE freecad_tool_library (
-    name    TEXT PRIMARY KEY NOT NULL,            -- the .fctl file name without extension
-    version INTEGER NOT NULL DEFAULT 1
+    name     TEXT PRIMARY KEY NOT NULL,           -- the .fctl file name without extension
+    version  INTEGER NOT NULL DEFAULT 1,
+    document TEXT                                 -- the .fctl JSON text as imported; NULL if made here
 );
 
 CREATE TABLE freecad_tool_library_entry (

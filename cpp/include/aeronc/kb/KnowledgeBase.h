@@ -6,6 +6,7 @@
 // resources/kb/default_data.sql. Every write is one transaction; every failure a caller can
 // cause or fix (missing folder, corrupt or locked file, unknown material, impossible tool)
 // is an aeronc::inputError with a message that says which.
+#include <aeronc/kb/FreeCadToolLibrary.h>
 #include <aeronc/toolselect/Tool.h>
 
 #include <memory>
@@ -90,6 +91,19 @@ public:
     Machine machine(const std::string& name) const;
     std::vector<std::string> workpieceMaterials() const;
     std::vector<std::string> machineNames() const;
+
+    // FreeCAD tool bridge. Imports every bit of `library` as a tool (id: the bit's file name
+    // without extension) and the library itself, all or nothing; bit materials are matched to
+    // the tool materials ignoring case. Throws inputError naming the bit for a tool id that
+    // is already used, impossible dimensions or an unknown material, and for a library name
+    // that is already imported. Returns the number of tools added.
+    int importFreeCadLibrary(const FreeCadLibrary& library, const BitDefaults& defaults = {});
+    std::vector<std::string> freeCadLibraryNames() const;
+    // An imported library, its bit documents carrying the tools' current dimensions.
+    FreeCadLibrary freeCadLibrary(const std::string& name) const;
+    // A library of the given tools numbered 1, 2, ... in that order; tools imported from FreeCAD
+    // keep their bit documents, the others get new ones. Throws inputError for an unknown id.
+    FreeCadLibrary freeCadLibraryOf(const std::string& name, const std::vector<std::string>& toolIds) const;
 
     struct Closer {
         void operator()(sqlite3* db) const;
