@@ -441,3 +441,51 @@ TEST_F(KnowledgeBaseTest, BadShippedSqlLeavesNoFile) {
     EXPECT_FALSE(fs::exists(p));
     EXPECT_FALSE(fs::exists(p.string() + ".creating"));
 }
+
+TEST_F(KnowledgeBaseTest, TableEditingIsOneTransactionWithNamedErrors) {
+    KnowledgeBase kb = openDefault(file());
+    const auto tools = kb.table("tool");
+    ASSERT_EQ(tools.rows.size(), 29u);
+    ASSERT_EQ(tools.columns[0].name, "id");
+    auto rowOf = [&](const aeronc::kb::Table& t, const std::string& id) {
+        for (std::size_t i = 0; i < t.rows.size(); ++i)
+            if (t.rows[i][0] == id) return t.rowIds[i];
+        ADD_FAILURE() << "no row " << id;
+        return -1LL;
+    };
+    const long long f10 = rowOf(tools, "EM-F10"), f12 = rowOf(tools, "EM-F12");
+    auto diameterOf = [&](const std::string& id) {
+        for (const Tool& t : kb.tools())
+            if (t.id == id) return t.diameter;
+        return -1.0;
+    };
+
+    // A good edit and a bad one in one batch: neither is applied; the message names the row.
+    std::string e = errorOf([&] { kb.editTable("tool", {{f12, "diameter", "11.5"}, {f10, "diameter", "-1"}}); });
+    EXPECT_NE(e.find("row 'EM-F10'"), std::string::npos) << e;
+    EXPECT_NE(e.find("nothing was changed"), std::string::npos) << e;
+    EXPECT_DOUBLE_EQ(diameterOf("EM-F12"), 12);
+    e = errorOf([&] { kb.editTable("tool", {{f10, "diameter", "ten"}}); });
+    EXPECT_NE(e.find("'ten' is not a number"), std::string::npos) << e;
+    e = errorOf([&] { kb.editTable("tool", {{f10, "flutes", "2.5"}}); });
+    EXPECT_NE(e.find("whole number"), std::string::npos) << e;
+    e = errorOf([&] { kb.editTable("tool", {{f10, "tool_material", "diamond"}}); });
+    EXPECT_NE(e.find("refers to a row that does not exist"), std::string::npos) << e;
+    e = errorOf([&] { kb.editTable("sqlite_master", {}); });
+    EXPECT_NE(e.find("no editable table"), std::string::npos) << e;
+
+    // Good edits persist; inserts and deletes work.
+    kb.editTable("tool", {{f12, "diameter", "11.5"}});
+    EXPECT_DOUBLE_EQ(diameterOf("EM-F12"), 11.5);
+    const auto th = kb.table("threshold");
+    kb.editTable("threshold", {}, {{std::string("my_rule"), std::string("0.5"), std::nullopt}});
+    EXPECT_DOUBLE_EQ(kb.threshold("my_rule"), 0.5);
+    EXPECT_EQ(kb.table("threshold").rows.size(), th.rows.size() + 1);
+    kb.editTable("tool", {}, {}, {f10});
+    EXPECT_EQ(kb.tools().size(), 28u);
+    // Shown values read back exactly.
+    const auto cc = kb.table("cutting_condition");
+    EXPECT_EQ(cc.columns[6].name, "vc_m_min");
+    EXPECT_EQ(cc.rows[0][6].value_or("?"), "600");
+    EXPECT_EQ(cc.rows[0][7].value_or("?"), "0.04");
+}

@@ -50,6 +50,9 @@ public:
         check(sqlite3_bind_text(stmt_, i, v.c_str(), static_cast<int>(v.size()), SQLITE_TRANSIENT));
         return *this;
     }
+    Statement& bindNull(int i) { check(sqlite3_bind_null(stmt_, i)); return *this; }
+    Statement& bindInt64(int i, long long v) { check(sqlite3_bind_int64(stmt_, i, v)); return *this; }
+    sqlite3_stmt* raw() const { return stmt_; }
     Statement& bind(int i, double v) { check(sqlite3_bind_double(stmt_, i, v)); return *this; }
     Statement& bind(int i, int v) { check(sqlite3_bind_int(stmt_, i, v)); return *this; }
     Statement& bind(int i, std::optional<double> v) {

@@ -35,6 +35,27 @@ struct CuttingCondition {
     double taylorC = 0, taylorM = 0;
 };
 
+// A table as the knowledge-base editor shows it: values as text (NULL: empty), with the
+// rowid that identifies each row across edits.
+struct TableColumn {
+    std::string name;
+    std::string type;  // declared type: TEXT, REAL, INTEGER
+    bool notNull = false;
+    bool primaryKey = false;
+};
+using Cell = std::optional<std::string>;
+struct Table {
+    std::string name;
+    std::vector<TableColumn> columns;
+    std::vector<long long> rowIds;
+    std::vector<std::vector<Cell>> rows;
+};
+struct CellEdit {
+    long long rowId = 0;
+    std::string column;
+    Cell value;
+};
+
 struct Machine {
     std::string name;
     std::string type;
@@ -104,6 +125,16 @@ public:
     // A library of the given tools numbered 1, 2, ... in that order; tools imported from FreeCAD
     // keep their bit documents, the others get new ones. Throws inputError for an unknown id.
     FreeCadLibrary freeCadLibraryOf(const std::string& name, const std::vector<std::string>& toolIds) const;
+
+    // The tables a user may browse and edit, in the order the editor shows them.
+    static const std::vector<std::string>& editableTables();
+    Table table(const std::string& name) const;
+    // Applies cell edits, then inserts (values in column order), then deletes, in one
+    // transaction. Values of REAL and INTEGER columns must be numbers. Throws inputError naming
+    // the table, the row and the column, or the rule the database enforces; the database is
+    // then unchanged.
+    void editTable(const std::string& name, const std::vector<CellEdit>& edits,
+                   const std::vector<std::vector<Cell>>& inserts = {}, const std::vector<long long>& deletes = {});
 
     struct Closer {
         void operator()(sqlite3* db) const;
