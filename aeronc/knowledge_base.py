@@ -25,7 +25,25 @@ def _sql_folder():
     return os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
 
 
-def select_tools(source, material, directions=None, machine="", kb_path=None):
+def open_kb(kb_path=None):
+    """The knowledge base at kb_path (default: the user's), built or migrated as needed.
+
+    Returns the core's KnowledgeBase: tools(), table(), edit_table(), import_freecad_library(),
+    export_freecad_library(), export_tools(), bit_document(), cutting_condition(), ...;
+    its methods raise RuntimeError with the core's message."""
+    from aeronc import _core
+    path = kb_path or user_kb_path()
+    folder = os.path.dirname(path)
+    if folder:
+        os.makedirs(folder, exist_ok=True)
+    try:
+        return _core.KnowledgeBase(path, _sql_folder())
+    except RuntimeError as e:
+        raise KnowledgeBaseError(str(e))
+
+
+def select_tools(source, material, directions=None, machine="", kb_path=None, allowance=0.0, blank=None,
+                 linear_tolerance=1e-3, angular_tolerance=1e-3, chord_tolerance=0.01, progress=None):
     """Recognise `source` (shape or document object) and plan finishing and roughing tools,
     drills and merged tool groups from the knowledge base; returns the plan as a dict."""
     from aeronc import _core
@@ -35,7 +53,9 @@ def select_tools(source, material, directions=None, machine="", kb_path=None):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     try:
         text = _core.select_tools_brep(shape.exportBrepToString(), path, material, _sql_folder(),
-                                       [tuple(float(c) for c in d) for d in (directions or [])], machine)
+                                       [tuple(float(c) for c in d) for d in (directions or [])], machine,
+                                       allowance, tuple(blank) if blank else None, linear_tolerance,
+                                       angular_tolerance, chord_tolerance, progress)
     except RuntimeError as e:
         raise KnowledgeBaseError("{}: {}".format(label, e))
     return json.loads(text)

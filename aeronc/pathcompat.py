@@ -50,3 +50,78 @@ def create_job(doc, models, name="Job"):
     if FreeCAD.ActiveDocument is not doc:
         FreeCAD.setActiveDocument(doc.Name)
     return _job_module().Create(name, list(models))
+
+
+def _tool_bit_module():
+    try:
+        from Path.Tool import Bit  # FreeCAD 1.x
+        return Bit
+    except ImportError:
+        from PathScripts import PathToolBit  # FreeCAD 0.20
+        return PathToolBit
+
+
+def _tool_controller_module():
+    try:
+        from Path.Tool import Controller  # FreeCAD 1.x
+        return Controller
+    except ImportError:
+        from PathScripts import PathToolController  # FreeCAD 0.20
+        return PathToolController
+
+
+def jobs_of_part(doc, part):
+    """The Jobs whose model holds part (directly or as the clone a Job makes of it)."""
+    out = []
+    for job in find_jobs(doc):
+        for m in job_models(job):
+            if m is part or part in (getattr(m, "Objects", None) or []):
+                out.append(job)
+                break
+    return out
+
+
+def tool_controllers(job):
+    tools = getattr(job, "Tools", None)
+    return list(tools.Group) if tools is not None else []
+
+
+def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, horiz_feed, vert_feed):
+    """A ToolBit from a .fctb document (dict) and a ToolController for it in job.
+
+    Feeds are in mm/min, the spindle speed in r/min."""
+    if FreeCAD.ActiveDocument is not doc:
+        FreeCAD.setActiveDocument(doc.Name)
+    bit = _tool_bit_module().Factory.CreateFromAttrs(bit_attrs, "ToolBit")
+    if getattr(bit, "ViewObject", None) is not None:
+        bit.ViewObject.Visibility = False
+    tc = _tool_controller_module().Create(label, tool=bit, toolNumber=number)
+    tc.SpindleSpeed = float(spindle_rpm)
+    tc.HorizFeed = "{} mm/min".format(horiz_feed)
+    tc.VertFeed = "{} mm/min".format(vert_feed)
+    job.Proxy.addToolController(tc)
+    return tc
+
+
+def remove_tool_controller(doc, tc):
+    """Remove a ToolController and its ToolBit."""
+    bit = getattr(tc, "Tool", None)
+    doc.removeObject(tc.Name)
+    if bit is not None and doc.getObject(bit.Name) is not None and not bit.InList:
+        doc.removeObject(bit.Name)
+
+
+def tool_controller_in_use(tc):
+    """True when an operation refers to this ToolController."""
+    return any(hasattr(o, "ToolController") and o.ToolController is tc for o in tc.InList)
+
+
+def default_tool_library_folder():
+    """The folder holding FreeCAD's tool folders (Bit, Library, Shape) the user works with."""
+    try:
+        from Path import Preferences  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathPreferences as Preferences  # FreeCAD 0.20
+    import os
+    last = Preferences.lastPathToolLibrary()
+    return os.path.dirname(last) if last else ""

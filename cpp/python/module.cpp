@@ -16,12 +16,13 @@
 
 #include <sstream>
 
+#include "Guarded.h"
+
 namespace py = pybind11;
 using namespace aeronc;
+using aeronc::python::guarded;
 
 namespace {
-
-PyObject* g_error = nullptr;  // owned by the module
 
 struct PyCallbackAbort {};
 
@@ -49,29 +50,12 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
     return o;
 }
 
-template <class F>
-auto guarded(F f) -> decltype(f()) {
-    try {
-        return f();
-    } catch (const py::error_already_set&) {
-        throw;
-    } catch (const Error& e) {
-        PyErr_SetString(g_error, e.what());
-    } catch (const Standard_Failure& e) {
-        PyErr_SetString(g_error, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
-    } catch (const std::exception& e) {
-        PyErr_SetString(g_error, e.what());
-    } catch (...) {
-        PyErr_SetString(g_error, "unknown failure in the AeroNC core");
-    }
-    throw py::error_already_set();
-}
-
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
-    g_error = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
+    aeronc::python::errorType() = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
+    aeronc::python::bindKnowledgeBase(m);
 
     auto recogniseWith = [](const TopoDS_Shape& solid, const recognition::RecogniseOptions& o) {
         recognition::DomainTree t;
@@ -115,10 +99,10 @@ PYBIND11_MODULE(_core, m) {
     m.def(
         "select_tools_brep",
         [](const std::string& brep, const std::string& kbPath, const std::string& material, const std::string& sqlFolder,
-           const std::vector<std::array<double, 3>>& directions,
-           const std::string& machine) {
+           const std::vector<std::array<double, 3>>& directions, const std::string& machine, double allowance,
+           const py::object& blank, double lin, double ang, double chord, const py::object& progress) {
             return guarded([&] {
-                const auto o = makeOptions(directions, 0.0, py::none(), 1e-3, 1e-3, 0.01, py::none());
+                const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
                 const TopoDS_Shape solid = partFromBrepText(brep);
                 py::gil_scoped_release nogil;
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
@@ -128,8 +112,10 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),
         py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("machine") = std::string(),
-        "Recognise a solid and plan its tools from the knowledge base at kb_path (built from sql_folder's "
-        "schema.sql and default_data.sql when missing); returns JSON text.");
+        py::arg("allowance") = 0.0, py::arg("blank") = py::none(), py::arg("linear_tolerance") = 1e-3,
+        py::arg("angular_tolerance") = 1e-3, py::arg("chord_tolerance") = 0.01, py::arg("progress") = py::none(),
+        "Recognise a solid (same options as recognise_brep) and plan its tools from the knowledge base at "
+        "kb_path (built from sql_folder's schema.sql and default_data.sql when missing); returns JSON text.");
 
     m.def(
         "make_panel",

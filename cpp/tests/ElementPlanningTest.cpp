@@ -221,6 +221,18 @@ TEST_F(ElementPlanningTest, PanelToolsMatchHandComputation) {
     EXPECT_NEAR(plan.merge.timeBefore, 2 * A / (ae * feed) * layers, 2e-3 * plan.merge.timeBefore);
     EXPECT_DOUBLE_EQ(plan.merge.timeAfter, plan.merge.timeBefore);
 
+    // What the ToolControllers get: the rougher's speed and feeds by hand.
+    int roughSettings = 0;
+    for (const ToolSetting& ts : plan.settings) {
+        if (plan.tools[ts.tool].id != rougher->id || ts.operation != "roughing") continue;
+        ++roughSettings;
+        EXPECT_NEAR(ts.spindleRpm, std::min(n, kb.machine(kb.machineNames().front()).maxSpindleRpm), 1e-9);
+        EXPECT_NEAR(ts.feedMmMin, feed, 1e-9);
+        EXPECT_NEAR(ts.plungeFeedMmMin, feed * kb.threshold("plunge_feed_ratio"), 1e-9);
+        EXPECT_NEAR(ts.ae, ae, 1e-12);
+    }
+    EXPECT_EQ(roughSettings, 1);
+
     const std::string json = toJson(plan, material);
     EXPECT_NE(json.find("\"roughingTool\": \"EM-B20R3\""), std::string::npos) << json;
 }

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
+#include <tuple>
 #include <sstream>
 
 namespace aeronc::toolselect {
@@ -249,7 +251,39 @@ ToolPlan planTools(const DomainTree& tree, const kb::KnowledgeBase& kb, const st
                              t.material + "'");
         return roughingCuttingData(t, c->vc, c->fz, c->ap, c->aeRatio, delta, maxRpm);
     };
-    return planTools(tree, tools, s);
+    ToolPlan plan = planTools(tree, tools, s);
+
+    double plungeRatio = 0.3;
+    try {
+        plungeRatio = kb.threshold("plunge_feed_ratio");
+    } catch (const Error&) {
+    }
+    std::set<std::pair<int, std::string>> used;
+    for (const ElementChoice& c : plan.elements) {
+        if (c.finishingTool >= 0) used.insert({c.finishingTool, "finishing"});
+        if (c.roughingTool >= 0) used.insert({c.roughingTool, "roughing"});
+    }
+    for (const GroupElements& g : plan.groupsAfter) used.insert({g.tool, "roughing"});
+    for (const HoleChoice& h : plan.holes)
+        if (h.drill >= 0) used.insert({h.drill, "drilling"});
+    for (const auto& [index, op] : used) {
+        const Tool& t = tools.at(static_cast<std::size_t>(index));
+        const auto& c = condition(t, op);
+        if (!c) continue;  // the filters above only let tools with data through
+        ToolSetting ts;
+        ts.tool = index;
+        ts.operation = op;
+        ts.spindleRpm = 1000.0 * c->vc / (kPi * t.diameter);
+        if (maxRpm > 0) ts.spindleRpm = std::min(ts.spindleRpm, maxRpm);
+        ts.feedMmMin = c->fz * t.flutes * ts.spindleRpm;
+        ts.plungeFeedMmMin = op == "drilling" ? ts.feedMmMin : ts.feedMmMin * plungeRatio;
+        ts.vc = c->vc;
+        ts.fz = c->fz;
+        ts.ap = c->ap;
+        ts.ae = c->aeRatio * t.diameter;
+        plan.settings.push_back(ts);
+    }
+    return plan;
 }
 
 std::string toJson(const ToolPlan& plan, const std::string& material, int indent) {
@@ -284,6 +318,29 @@ std::string toJson(const ToolPlan& plan, const std::string& material, int indent
     j["groups"] = {{"before", groups(plan.groupsBefore)}, {"after", groups(plan.groupsAfter)}};
     j["toolChanges"] = {{"before", plan.merge.toolChangesBefore}, {"after", plan.merge.toolChangesAfter}};
     j["timeMin"] = {{"before", num(plan.merge.timeBefore)}, {"after", num(plan.merge.timeAfter)}};
+    j["toolSettings"] = json::array();
+    for (const ToolSetting& t : plan.settings)
+        j["toolSettings"].push_back({{"tool", toolId(t.tool)},
+                                     {"operation", t.operation},
+                                     {"spindleRpm", num(t.spindleRpm)},
+                                     {"feedMmMin", num(t.feedMmMin)},
+                                     {"plungeFeedMmMin", num(t.plungeFeedMmMin)},
+                                     {"vc", num(t.vc)},
+                                     {"fz", num(t.fz)},
+                                     {"ap", num(t.ap)},
+                                     {"ae", num(t.ae)}});
+    j["tools"] = json::object();
+    std::set<int> listed;
+    for (const ElementChoice& c : plan.elements) listed.insert(c.finishingTool), listed.insert(c.roughingTool);
+    for (const HoleChoice& h : plan.holes) listed.insert(h.drill);
+    for (const ToolSetting& t : plan.settings) listed.insert(t.tool);
+    for (int i : listed) {
+        if (i < 0) continue;
+        const Tool& t = plan.tools[static_cast<std::size_t>(i)];
+        j["tools"][t.id] = {{"type", t.type},         {"material", t.material},  {"diameter", t.diameter},
+                            {"cornerRadius", t.cornerRadius}, {"fluteLength", t.fluteLength}, {"reach", t.reach},
+                            {"flutes", t.flutes}};
+    }
     j["merges"] = json::array();
     for (const MergeReport::Step& s : plan.merge.merges)
         j["merges"].push_back({{"kept", toolId(static_cast<int>(s.keptTool))},

@@ -60,8 +60,20 @@ struct PlanSettings {
     std::function<bool(const Tool&)> mayFinish, mayRough, mayDrill;
 };
 
+// Spindle speed and feeds of one tool in one operation, from the knowledge base; what a
+// FreeCAD ToolController carries.
+struct ToolSetting {
+    int tool = -1;          // index into the tool list
+    std::string operation;  // "roughing", "finishing", "drilling"
+    double spindleRpm = 0;  // n = 1000·v_c/(π·D), capped at the machine's maximum
+    double feedMmMin = 0;   // horizontal: f_z·Z·n
+    double plungeFeedMmMin = 0;  // vertical: the horizontal feed × plunge_feed_ratio; drilling: f_z·Z·n
+    double vc = 0, fz = 0, ap = 0, ae = 0;
+};
+
 struct ToolPlan {
     std::vector<Tool> tools;  // the list the indices refer to
+    std::vector<ToolSetting> settings;  // per (tool, operation) used; filled by the knowledge-base planner
     std::vector<ElementChoice> elements;
     std::vector<HoleChoice> holes;
     std::vector<GroupElements> groupsBefore, groupsAfter;  // roughing groups, before/after merging

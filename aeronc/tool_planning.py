@@ -1,0 +1,142 @@
+"""Select tools for a Machining Features tree: the plan of the core written into the document.
+
+Each milled DomainElement gets its finishing tool, roughing tool and machinable ratio eta,
+each hole its drill, and the MachiningFeatures group the tool changes and roughing time
+before and after merging. A ToolController is made in the part's Path Job for every tool
+and operation the plan uses (spindle speed and feeds from the knowledge base); the part
+gets a Job if it has none. Everything is one undo step; a failure leaves the document as
+it was.
+"""
+import json
+
+import FreeCAD
+
+from aeronc import knowledge_base, pathcompat
+from aeronc.objects import machining_features
+from aeronc.objects.base import add_property, descendants, proxy_type
+from aeronc.objects.domain_element import TYPE as ELEMENT_TYPE
+
+TC_TAG = "AeroNCTool"  # property on the ToolControllers this module made: "<tool id>/<operation>"
+
+
+def _element_objects(group):
+    return {o.ElementId: o for o in descendants(group) if proxy_type(o) == ELEMENT_TYPE}
+
+
+def _set_plan_properties(group, plan, material, machine):
+    g = "Tools"
+    add_property(group, "App::PropertyString", "Material", g, "Workpiece material of the tool plan", material, True)
+    add_property(group, "App::PropertyString", "Machine", g, "Machine of the tool plan (spindle limit)", machine, True)
+    add_property(group, "App::PropertyInteger", "ToolChangesBefore", g, "Roughing tool changes before merging",
+                 plan["toolChanges"]["before"], True)
+    add_property(group, "App::PropertyInteger", "ToolChangesAfter", g, "Roughing tool changes after merging",
+                 plan["toolChanges"]["after"], True)
+    add_property(group, "App::PropertyFloat", "RoughingMinutesBefore", g, "Estimated roughing time before merging",
+                 plan["timeMin"]["before"] or 0.0, True)
+    add_property(group, "App::PropertyFloat", "RoughingMinutesAfter", g, "Estimated roughing time after merging",
+                 plan["timeMin"]["after"] or 0.0, True)
+    add_property(group, "App::PropertyString", "ToolPlan", g, "Tool plan (JSON)",
+                 json.dumps(plan, separators=(",", ":")), True, hidden=True)
+
+    objs = _element_objects(group)
+    for e in plan["elements"]:
+        obj = objs.get(e["id"])
+        if obj is None:
+            continue
+        add_property(obj, "App::PropertyString", "FinishingTool", g, "Largest tool that finishes the element",
+                     e["finishingTool"] or "", True)
+        add_property(obj, "App::PropertyString", "RoughingTool", g,
+                     "First tool, largest down, whose machinable ratio meets eta_min", e["roughingTool"] or "", True)
+        add_property(obj, "App::PropertyFloat", "MachinableRatio", g, "eta = A_m / A of the roughing tool",
+                     e["eta"] if e["eta"] is not None else 0.0, True)
+        add_property(obj, "App::PropertyInteger", "NarrowPassages", g,
+                     "Passages narrower than the roughing tool", e["narrowPassages"] or 0, True)
+        add_property(obj, "App::PropertyString", "ToolError", g, "Why a tool is missing", e["error"] or "", True)
+    for h in plan["holes"]:
+        obj = objs.get(h["id"])
+        if obj is None:
+            continue
+        add_property(obj, "App::PropertyString", "Drill", g, "Drill of the hole's diameter", h["drill"] or "", True)
+        add_property(obj, "App::PropertyString", "ToolError", g, "Why a tool is missing", h["error"] or "", True)
+
+
+def _tool_controllers(doc, job, plan, kb):
+    """Make or update one ToolController per (tool, operation) of the plan; returns them."""
+    existing = {getattr(tc, TC_TAG): tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, TC_TAG)}
+    numbers = {}
+    for tc in existing.values():
+        numbers.setdefault(getattr(tc, TC_TAG).split("/")[0], tc.ToolNumber)
+    used = [tc.ToolNumber for tc in pathcompat.tool_controllers(job)]
+    next_number = max(used + [0]) + 1
+    made = []
+    wanted = set()
+    for s in plan.get("toolSettings", []):
+        tag = "{}/{}".format(s["tool"], s["operation"])
+        wanted.add(tag)
+        rpm, hfeed, vfeed = s["spindleRpm"], s["feedMmMin"], s["plungeFeedMmMin"]
+        tc = existing.get(tag)
+        if tc is None:
+            if s["tool"] not in numbers:
+                numbers[s["tool"]] = next_number
+                next_number += 1
+            _, document = kb.bit_document(s["tool"])
+            label = "TC: {} {}".format(s["tool"], s["operation"])
+            tc = pathcompat.create_tool_controller(doc, job, label, json.loads(document), numbers[s["tool"]],
+                                                   rpm, hfeed, vfeed)
+            tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan",
+                           0, True)
+            setattr(tc, TC_TAG, tag)
+        else:
+            tc.SpindleSpeed = float(rpm)
+            tc.HorizFeed = "{} mm/min".format(hfeed)
+            tc.VertFeed = "{} mm/min".format(vfeed)
+        made.append(tc)
+    # Controllers of an earlier plan that this one no longer uses, unless an operation does.
+    for tag, tc in existing.items():
+        if tag not in wanted and not pathcompat.tool_controller_in_use(tc):
+            pathcompat.remove_tool_controller(doc, tc)
+    return made
+
+
+def select_tools(group, material, machine="", kb_path=None, job=None, progress=None):
+    """Plan the tools of a MachiningFeatures group and record them (one undo step).
+
+    Returns (plan dict, Job, ToolControllers). Raises KnowledgeBaseError with a clear message
+    for a group without a source, a source changed since recognition, an unknown material or
+    machine, or a knowledge base that cannot be opened."""
+    if not machining_features.is_machining_features(group):
+        raise knowledge_base.KnowledgeBaseError("{} is not a Machining Features group".format(group.Label))
+    part = group.Source
+    if part is None:
+        raise knowledge_base.KnowledgeBaseError("{}: no source part".format(group.Label))
+    group.recompute()
+    if group.Outdated:
+        raise knowledge_base.KnowledgeBaseError(
+            "{}: {} changed since its features were recognised; recognise again first".format(group.Label, part.Label))
+    kb = knowledge_base.open_kb(kb_path)
+    if not machine:
+        names = kb.machine_names()
+        machine = names[0] if names else ""
+    settings = machining_features.settings_of(group)
+    plan = knowledge_base.select_tools(part, material, machine=machine, kb_path=kb.path, progress=progress, **settings)
+    result = machining_features.result_of(group)
+    if len(plan["elements"]) + len(plan["holes"]) != len(result.get("elements", [])):
+        raise knowledge_base.KnowledgeBaseError(
+            "{}: the plan does not match the stored recognition; recognise again first".format(group.Label))
+    doc = group.Document
+
+    def work():
+        _set_plan_properties(group, plan, material, machine)
+        target = job
+        if target is None:
+            jobs = pathcompat.jobs_of_part(doc, part)
+            target = jobs[0] if jobs else pathcompat.create_job(doc, [part], "Job")
+        try:
+            tcs = _tool_controllers(doc, target, plan, kb)
+        except RuntimeError as e:
+            raise knowledge_base.KnowledgeBaseError(str(e))
+        doc.recompute()
+        return target, tcs
+
+    target, tcs = machining_features._in_transaction(doc, "Select tools", work)
+    return plan, target, tcs
