@@ -5,6 +5,8 @@ moved them to `Path.Op.*`, `Path.Main.*`. Every other AeroNC module goes through
 functions here, so supporting another FreeCAD release means changing this file only.
 Imports are lazy: loading the Path modules is slow and is not needed to recognise features.
 """
+import contextlib
+
 import FreeCAD
 
 
@@ -46,10 +48,21 @@ def job_models(job):
 
 
 def create_job(doc, models, name="Job"):
-    """Create a Path Job for the given part objects with the default stock (headless)."""
+    """Create a Path Job for the given part objects with the default stock. In the GUI it gets
+    Path's view provider, without the Job's own undo transaction or task panel, so that the
+    caller's transaction holds it."""
     if FreeCAD.ActiveDocument is not doc:
         FreeCAD.setActiveDocument(doc.Name)
-    return _job_module().Create(name, list(models))
+    with _app_tool_bit_factory():  # the Job's default ToolController makes a ToolBit
+        job = _job_module().Create(name, list(models))
+    if FreeCAD.GuiUp:
+        try:
+            from Path.Main.Gui import Job as JobGui  # FreeCAD 1.x
+        except ImportError:
+            from PathScripts import PathJobGui as JobGui  # FreeCAD 0.20
+        job.ViewObject.Proxy = JobGui.ViewProvider(job.ViewObject)
+        job.ViewObject.addExtension("Gui::ViewProviderGroupExtensionPython")
+    return job
 
 
 def _tool_bit_module():
@@ -68,6 +81,19 @@ def _tool_controller_module():
     except ImportError:
         from PathScripts import PathToolController  # FreeCAD 0.20
         return PathToolController
+
+
+@contextlib.contextmanager
+def _app_tool_bit_factory():
+    """The GUI replaces the ToolBit module's factory with one that commits an undo transaction
+    of its own; inside this block the App factory is used, so bits join the caller's one."""
+    mod = _tool_bit_module()
+    gui_factory = mod.Factory
+    mod.Factory = mod.ToolBitFactory()
+    try:
+        yield
+    finally:
+        mod.Factory = gui_factory
 
 
 def jobs_of_part(doc, part):
@@ -92,8 +118,15 @@ def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, hori
     Feeds are in mm/min, the spindle speed in r/min."""
     if FreeCAD.ActiveDocument is not doc:
         FreeCAD.setActiveDocument(doc.Name)
-    bit = _tool_bit_module().Factory.CreateFromAttrs(bit_attrs, "ToolBit")
-    if getattr(bit, "ViewObject", None) is not None:
+    mod = _tool_bit_module()
+    with _app_tool_bit_factory():
+        bit = mod.Factory.CreateFromAttrs(bit_attrs, "ToolBit")
+    if FreeCAD.GuiUp:
+        try:
+            from Path.Base.Gui import IconViewProvider  # FreeCAD 1.x
+        except ImportError:
+            from PathScripts import PathIconViewProvider as IconViewProvider  # FreeCAD 0.20
+        IconViewProvider.Attach(bit.ViewObject, "ToolBit")
         bit.ViewObject.Visibility = False
     tc = _tool_controller_module().Create(label, tool=bit, toolNumber=number)
     tc.SpindleSpeed = float(spindle_rpm)

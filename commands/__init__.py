@@ -2,11 +2,17 @@
 registers them at start-up; the work they do is imported when they run."""
 import FreeCADGui
 
-COMMANDS = ["AeroNC_RecogniseFeatures"]
+COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_EditKnowledgeBase"]
 
 
 def register():
     """Register every AeroNC command with FreeCAD (once)."""
+    from aeronc.commands.edit_knowledge_base import EditKnowledgeBase
     from aeronc.commands.recognise_features import RecogniseFeatures
-    if "AeroNC_RecogniseFeatures" not in FreeCADGui.listCommands():
-        FreeCADGui.addCommand("AeroNC_RecogniseFeatures", RecogniseFeatures())
+    from aeronc.commands.select_tools import SelectTools
+    known = FreeCADGui.listCommands()
+    for name, command in (("AeroNC_RecogniseFeatures", RecogniseFeatures),
+                          ("AeroNC_SelectTools", SelectTools),
+                          ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
+        if name not in known:
+            FreeCADGui.addCommand(name, command())

@@ -52,7 +52,10 @@ def extend(wb):
                 original(recipient)  # Path's own items (its errors still reach FreeCAD)
             finally:
                 from aeronc.commands.recognise_features import selected_solid
-                if selected_solid() is not None:
+                from aeronc.commands.select_tools import selected_machining_features
+                if selected_machining_features() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_SelectTools"])
+                elif selected_solid() is not None:
                     wb.appendContextMenu("", ["Separator"] + COMMANDS)
 
         wb.ContextMenu = context_menu

@@ -1,0 +1,133 @@
+"""Task panel of AeroNC_SelectTools: workpiece material and machine, then the plan.
+
+"Select tools" plans (recognition of the source again, with a progress dialog), records the
+tools on the elements and makes the ToolControllers in one undo step, and lists the result
+here: per element its finishing and roughing tool, eta and any error, with the tool changes
+and roughing time before and after merging. Errors go to the report view and a message box;
+the document is then unchanged.
+"""
+import traceback
+
+import FreeCAD
+import FreeCADGui
+from PySide import QtCore, QtGui
+
+from aeronc import knowledge_base, tool_planning
+
+COLUMNS = ["Element", "Type", "Finishing", "Roughing", "\u03b7", "Narrow", "Problem"]
+
+
+def show_error(text):
+    """Report to the report view and a message box (tests may replace this)."""
+    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
+    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: tool selection failed", text)
+
+
+class SelectToolsPanel:
+    current = None  # the open panel, for scripts and tests
+
+    def __init__(self, group, kb_path=None):
+        self.group = group
+        self.kb_path = kb_path
+        self.plan = None
+        self.form = self._build_form()
+        SelectToolsPanel.current = self
+
+    def _build_form(self):
+        import aeronc
+        w = QtGui.QWidget()
+        w.setWindowTitle("Select tools")
+        w.setWindowIcon(QtGui.QIcon(aeronc.icon("SelectTools")))
+        lay = QtGui.QVBoxLayout(w)
+        form = QtGui.QFormLayout()
+        self.material = QtGui.QComboBox()
+        self.machine = QtGui.QComboBox()
+        try:
+            kb = knowledge_base.open_kb(self.kb_path)
+            self.material.addItems(kb.workpiece_materials())
+            self.machine.addItems(kb.machine_names())
+            where = kb.path
+        except Exception as e:  # the panel still opens and says why
+            where = "cannot open: {}".format(e)
+        previous = getattr(self.group, "Material", "")
+        if previous and self.material.findText(previous) >= 0:
+            self.material.setCurrentIndex(self.material.findText(previous))
+        previous = getattr(self.group, "Machine", "")
+        if previous and self.machine.findText(previous) >= 0:
+            self.machine.setCurrentIndex(self.machine.findText(previous))
+        form.addRow("Workpiece material", self.material)
+        form.addRow("Machine", self.machine)
+        kb_label = QtGui.QLabel(where)
+        kb_label.setWordWrap(True)
+        kb_label.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        form.addRow("Knowledge base", kb_label)
+        lay.addLayout(form)
+        self.run_button = QtGui.QPushButton("Select tools")
+        self.run_button.clicked.connect(self.run)
+        lay.addWidget(self.run_button)
+        self.summary = QtGui.QLabel("")
+        self.summary.setWordWrap(True)
+        lay.addWidget(self.summary)
+        self.table = QtGui.QTableWidget(0, len(COLUMNS))
+        self.table.setHorizontalHeaderLabels(COLUMNS)
+        self.table.setEditTriggers(QtGui.QAbstractItemView.NoEditTriggers)
+        self.table.verticalHeader().setVisible(False)
+        self.table.setMinimumHeight(260)
+        lay.addWidget(self.table)
+        return w
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Close)
+
+    def reject(self):
+        SelectToolsPanel.current = None
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def run(self):
+        progress = QtGui.QProgressDialog("Recognising and planning tools...", "Cancel", 0, 100,
+                                         FreeCADGui.getMainWindow())
+        progress.setWindowModality(QtCore.Qt.WindowModal)
+        progress.setMinimumDuration(300)
+
+        def report(fraction, stage):
+            progress.setValue(int(100 * fraction))
+            progress.setLabelText(stage)
+            QtGui.QApplication.processEvents()
+            return not progress.wasCanceled()
+
+        try:
+            self.plan, job, tcs = tool_planning.select_tools(self.group, self.material.currentText(),
+                                                             self.machine.currentText(), self.kb_path,
+                                                             progress=report)
+        except Exception as e:
+            FreeCAD.Console.PrintLog(traceback.format_exc())
+            show_error(str(e))
+            return False
+        finally:
+            progress.close()
+        self._show(self.plan, job, tcs)
+        return True
+
+    def _show(self, plan, job, tcs):
+        rows = [(e["id"], e["type"], e["finishingTool"], e["roughingTool"],
+                 "" if e["eta"] is None else "{:.3f}".format(e["eta"]), e["narrowPassages"] or "",
+                 e["error"] or "") for e in plan["elements"]]
+        rows += [(h["id"], "hole \u00d8{:g}".format(round(h["diameter"], 3)), h["drill"], "", "", "", h["error"] or "")
+                 for h in plan["holes"]]
+        self.table.setRowCount(len(rows))
+        for r, row in enumerate(sorted(rows)):
+            for c, value in enumerate(row):
+                item = QtGui.QTableWidgetItem("" if value is None else str(value))
+                if c == 6 and value:
+                    item.setForeground(QtGui.QBrush(QtGui.QColor("#b00020")))
+                    item.setToolTip(str(value))
+                self.table.setItem(r, c, item)
+        self.table.resizeColumnsToContents()
+        tc, tm = plan["toolChanges"], plan["timeMin"]
+        missing = sum(1 for e in plan["elements"] if e["error"]) + sum(1 for h in plan["holes"] if h["error"])
+        self.summary.setText(
+            "Roughing tool changes {} \u2192 {}; roughing time {:.1f} \u2192 {:.1f} min. "
+            "{} ToolControllers in {}. {}".format(
+                tc["before"], tc["after"], tm["before"] or 0, tm["after"] or 0, len(tcs), job.Label,
+                "{} element(s) without a tool: see Problem.".format(missing) if missing else "Every element has its tools."))

@@ -1,0 +1,255 @@
+"""GUI test of tool selection and the knowledge-base editor, as a user drives them:
+
+    HOME=<temp home> QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a freecad tests/gui/test_tools_gui.py
+
+Recognise a generated panel, right-click its Machining Features, Select tools, read the result
+panel and the element properties, undo; open the knowledge base, edit a tool, save (a bad value
+first), import FreeCAD's tool library. Screenshots go to env AERONC_ARTIFACTS (default /tmp).
+Prints "N passed, N failed" and exits 0 when all checks pass.
+"""
+import os
+import sys
+import traceback
+
+import FreeCAD
+import FreeCADGui as Gui
+
+# Without this preference a modal warning blocks the first activation of Path.
+FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Path").SetBool("WarningSuppressVelocity", True)
+
+_mod = os.environ.get("AERONC_MOD_DIR")
+if _mod and os.path.isdir(os.path.join(_mod, "aeronc")) and _mod not in sys.path:
+    sys.path.insert(0, _mod)
+
+from PySide import QtCore, QtGui  # noqa: E402
+
+ARTIFACTS = os.environ.get("AERONC_ARTIFACTS", "/tmp")
+TIMEOUT_S = 300
+results = []
+
+
+def _watchdog():
+    # A modal dialog nobody closes would hang the test; Qt timers still fire inside it.
+    print("TIMEOUT after {} s\n{} passed, {} failed".format(TIMEOUT_S, sum(results), len(results) - sum(results) + 1))
+    sys.stdout.flush()
+    os._exit(1)
+
+
+QtCore.QTimer.singleShot(TIMEOUT_S * 1000, _watchdog)
+
+
+def check(name, cond, detail=""):
+    results.append(bool(cond))
+    print("{} {}{}".format("PASS" if cond else "FAIL", name, "" if cond else ": {}".format(detail)))
+    sys.stdout.flush()
+
+
+def pump(seconds=0.2):
+    """Let Qt deliver events and timers for a while (the script runs outside the event loop)."""
+    timer = QtCore.QElapsedTimer()
+    timer.start()
+    while timer.elapsed() < seconds * 1000:
+        QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+
+
+def aeronc_objects(doc):
+    from aeronc.objects import proxy_type
+    return [o for o in doc.Objects if (proxy_type(o) or "").startswith("AeroNC::")]
+
+
+def tree_labels():
+    labels = set()
+    for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
+        it = QtGui.QTreeWidgetItemIterator(tree)
+        while it.value():
+            labels.add(it.value().text(0))
+            it += 1
+    return labels
+
+
+def tree_context_menu():
+    """Texts of the tree view's real context menu (opened by an event, closed by a timer)."""
+    found = []
+
+    def grab():
+        popup = QtGui.QApplication.activePopupWidget()
+        if popup is None:
+            QtCore.QTimer.singleShot(50, grab)
+            return
+        found.extend(a.text() for a in popup.actions())
+        popup.close()
+    tree = next(t for t in Gui.getMainWindow().findChildren(QtGui.QTreeWidget) if t.isVisible())
+    QtCore.QTimer.singleShot(100, grab)
+    event = QtGui.QContextMenuEvent(QtGui.QContextMenuEvent.Mouse, QtCore.QPoint(20, 20))
+    QtGui.QApplication.sendEvent(tree.viewport(), event)  # runs the menu until grab closes it
+    return found
+
+
+def click_ok(which=QtGui.QDialogButtonBox.Ok):
+    """Press OK (or which) of the task dialog the way a user does (the task panel's accept
+    or reject path)."""
+    for box in Gui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
+        button = box.button(which)
+        if button is not None and button.isVisible() and button.isEnabled():
+            button.click()
+            return True
+    return False
+
+
+def cancel_progress():
+    """Press Cancel of the recognition progress dialog (runs from a timer during recognition)."""
+    for dialog in Gui.getMainWindow().findChildren(QtGui.QProgressDialog):
+        if dialog.isVisible():
+            dialog.cancel()
+            return
+    QtCore.QTimer.singleShot(10, cancel_progress)
+
+
+def window_shot(doc, name):
+    """The main window with the 3-D view painted in (a grab leaves it blank under Xvfb)."""
+    mw = Gui.getMainWindow()
+    pump(0.5)
+    shot_all = mw.grab()
+    subs = [w for w in mw.findChild(QtGui.QMdiArea).subWindowList() if doc.Name in w.windowTitle()]
+    if subs:
+        view_widget = subs[-1].widget()
+        view_png = os.path.join(ARTIFACTS, name + "_view.png")
+        Gui.activeDocument().activeView().saveImage(view_png, view_widget.width(), view_widget.height(), "Current")
+        painter = QtGui.QPainter(shot_all)
+        painter.drawImage(view_widget.mapTo(mw, QtCore.QPoint(0, 0)), QtGui.QImage(view_png))
+        painter.end()
+    path = os.path.join(ARTIFACTS, name + ".png")
+    shot_all.save(path)
+    print("screenshot:", path)
+    return path
+
+
+def run():
+    import json
+    import tempfile
+    from aeronc import _core, knowledge_base, objects, pathcompat
+    from aeronc.panels import knowledge_base_panel, select_tools_panel
+    from aeronc.panels.knowledge_base_panel import KnowledgeBasePanel
+    from aeronc.panels.select_tools_panel import SelectToolsPanel
+    import Part
+    os.makedirs(ARTIFACTS, exist_ok=True)
+    errors = []
+    select_tools_panel.show_error = errors.append
+    knowledge_base_panel.show_error = errors.append
+    kb_path = knowledge_base.user_kb_path()
+    if os.path.exists(kb_path):
+        os.remove(kb_path)  # a fresh user knowledge base, built from the shipped SQL
+
+    Gui.activateWorkbench("PathWorkbench")
+    pump()
+    doc = FreeCAD.newDocument("Tools")
+    spec = {"pocketsX": 3, "pocketsY": 2, "boltHoles": True, "joggles": False, "bottomPockets": False}
+    shape = Part.Shape()
+    shape.importBrepFromString(_core.make_panel(json.dumps(spec))[0])
+    part = doc.addObject("Part::Feature", "Panel")
+    part.Shape = shape
+    doc.recompute()
+    group = objects.create_machining_features(doc, part, directions=[(0, 0, 1)])
+    pump()
+
+    cmd = Gui.Command.get("AeroNC_SelectTools")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(part)
+    check("Select tools inactive on a part", not cmd.isActive())
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(group)
+    pump()
+    check("Select tools active on Machining Features", cmd.isActive())
+    check("tree context menu offers Select tools", "Select tools" in tree_context_menu())
+    menus = {a.text().replace("&", ""): [m.text() for m in a.menu().actions()]
+             for a in Gui.getMainWindow().menuBar().actions() if a.menu()}
+    check("AeroNC menu lists the new commands",
+          {"Select tools", "Knowledge base..."} <= set(menus.get("AeroNC", [])), menus.get("AeroNC"))
+
+    undo_before = doc.UndoCount
+    names_before = set(o.Name for o in doc.Objects)
+    Gui.runCommand("AeroNC_SelectTools")
+    pump()
+    panel = SelectToolsPanel.current
+    check("Select tools panel open", Gui.Control.activeDialog() and panel is not None)
+    check("materials from the knowledge base", panel.material.count() == 4 and panel.machine.count() == 2,
+          (panel.material.count(), panel.machine.count()))
+    panel.material.setCurrentIndex(panel.material.findText("7050-T7451"))
+    panel.run_button.click()
+    pump()
+    check("no error", not errors, errors)
+    pockets = [o for o in doc.Objects if getattr(o, "ElementType", "") == "closed_pocket"]
+    check("every pocket has its tools on the element",
+          pockets and all(p.FinishingTool and p.RoughingTool and 0.85 <= p.MachinableRatio <= 1 for p in pockets),
+          [(p.Label, getattr(p, "RoughingTool", None)) for p in pockets])
+    holes = [o for o in doc.Objects if getattr(o, "ElementType", "") == "hole"]
+    check("holes without a drill say which drill they need",
+          holes and all(h.Drill or "no drill of diameter" in h.ToolError for h in holes),
+          [(h.Label, h.Drill, h.ToolError) for h in holes])
+    jobs = pathcompat.jobs_of_part(doc, part)
+    tcs = [tc for tc in pathcompat.tool_controllers(jobs[0]) if hasattr(tc, "AeroNCTool")] if jobs else []
+    check("ToolControllers in the part's Job", jobs and len(tcs) == len(panel.plan["toolSettings"]) > 0,
+          (len(jobs), len(tcs)))
+    check("result table filled", panel.table.rowCount() == len(panel.plan["elements"]) + len(panel.plan["holes"]),
+          panel.table.rowCount())
+    check("summary shows the merge", "tool changes" in panel.summary.text(), panel.summary.text())
+    check("one undo step", doc.UndoCount == undo_before + 1, doc.UndoNames)
+    for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
+        tree_view.expandAll()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(pockets[0])
+    Gui.activeDocument().activeView().viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    shot = window_shot(doc, "aeronc_select_tools")
+    check("select tools screenshot saved", os.path.getsize(shot) > 20000, shot)
+    check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
+    pump()
+    check("panel closed", not Gui.Control.activeDialog())
+    doc.undo()
+    pump()
+    check("undo removes the Job and its controllers", set(o.Name for o in doc.Objects) == names_before,
+          sorted(set(o.Name for o in doc.Objects) - names_before))
+
+    # -- the knowledge-base editor --------------------------------------------------------
+    Gui.runCommand("AeroNC_EditKnowledgeBase")
+    pump()
+    kbp = KnowledgeBasePanel.current
+    check("knowledge base panel open", Gui.Control.activeDialog() and kbp is not None)
+    names = [kbp.tabs.tabText(i) for i in range(kbp.tabs.count())]
+    check("one tab per table", names[:3] == ["tool", "cutting condition", "machine"], names)
+    tools = kbp.tables[0]
+    col = tools.columns.index("diameter")
+    row = next(r for r in range(tools.widget.rowCount()) if tools.widget.item(r, 0).text() == "EM-F10")
+    tools.widget.item(row, col).setText("-4")  # as typing does: itemChanged fires
+    check("bad value refused with a named row", not kbp.save() and errors and "EM-F10" in errors[-1], errors[-1:])
+    check("nothing written after a refusal",
+          [t["diameter"] for t in kbp.kb.tools() if t["id"] == "EM-F10"] == [10.0])
+    tools.widget.item(row, col).setText("9.5")
+    check("good value saved", kbp.save() and
+          [t["diameter"] for t in kbp.kb.tools() if t["id"] == "EM-F10"] == [9.5])
+    library = "/usr/share/freecad/Mod/Path/Tools/Library/Default.fctl"
+    if os.path.isfile(library):
+        n = kbp.import_library(library)
+        check("FreeCAD library imported", n == 9 and any(t["id"] == "5mm_Endmill" for t in kbp.kb.tools()), n)
+        out = tempfile.mkdtemp(prefix="aeronc_fctl_")
+        written = kbp.export_library("Default", out)
+        check("FreeCAD library exported unchanged", written and
+              open(written[0]).read() == open(library).read(), written[:1])
+    kbp.tabs.setCurrentIndex(0)
+    shot = window_shot(doc, "aeronc_knowledge_base")
+    check("knowledge base screenshot saved", os.path.getsize(shot) > 20000, shot)
+    check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
+    pump()
+    check("editor closed", not Gui.Control.activeDialog())
+    FreeCAD.closeDocument(doc.Name)
+
+
+try:
+    run()
+except Exception:
+    traceback.print_exc()
+    results.append(False)
+passed = sum(results)
+print("{} passed, {} failed".format(passed, len(results) - passed))
+sys.stdout.flush()
+os._exit(0 if results and all(results) else 1)
