@@ -13,7 +13,7 @@ import FreeCAD
 
 from aeronc import knowledge_base, pathcompat, tool_planning
 from aeronc.objects import machining_features
-from tests.app.support import make_panel_object, new_document, temp_fcstd
+from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
 
 PLAIN = {"pocketsX": 2, "pocketsY": 1, "islands": False, "openings": False, "lighteningHoles": False,
          "joggles": False, "lowerRibs": False, "flange": False, "bottomPockets": False, "boltHoles": False}
