@@ -307,3 +307,72 @@ TEST(ElementPlanning, SpindleSpeedCappedByMachine) {
     // A cap above n changes nothing.
     EXPECT_NEAR(roughingCuttingData(t, 900, 0.1, 2, 0.5, 0.2, 60000).feedPerMinute, free.feedPerMinute, 1e-9);
 }
+
+// A real part nobody here made: every milled element's finishing tool is the one a
+// programmer picks by hand from the tool list (the four conditions, a tool matching the floor
+// fillet first, then the largest), and its roughing tool is the first from the largest down
+// whose eta meets the threshold.
+TEST_F(ElementPlanningTest, NistPartToolsFollowTheRulesByHand) {
+    const fs::path part = fs::path(AERONC_SHARED_DATA) / "nist" / "nist_ftc_07_asme1_rd.stp";
+    if (!fs::exists(part)) GTEST_SKIP() << "no " << part;
+    const auto kb = openDefault();
+    const std::string material = "7050-T7451";
+    const DomainTree tree = recognition::recognise(loadPart(part.string()), {});
+    const ToolPlan plan = planTools(tree, kb, material);
+    const double etaMin = kb.threshold("eta_min");
+    auto hasData = [&](const Tool& t, const char* op) {
+        try {
+            kb.cuttingCondition(material, t.material, op, t.diameter);
+            return true;
+        } catch (const Error&) {
+            return false;
+        }
+    };
+
+    int checkedFinish = 0, checkedRough = 0;
+    for (const ElementChoice& c : plan.elements) {
+        const auto& e = tree.elements[static_cast<std::size_t>(c.element)];
+        Vec3 dir{0, 0, 1};
+        for (const auto& s : tree.setups)
+            if (s.id == e.setup) dir = s.direction;
+        const PocketGeometry g = pocketGeometry(e, dir);
+        const double fillet = std::max(0.0, g.floorFilletRadius);
+
+        // Finishing by hand.
+        std::string expected;
+        bool expectedMatches = false;
+        double expectedD = 0;
+        for (const Tool& t : plan.tools) {
+            if (!(t.type == "flat" || t.type == "bull" || t.type == "ball") || !hasData(t, "finishing")) continue;
+            if (g.minCornerRadius >= 0 && t.diameter / 2 > g.minCornerRadius + 1e-6) continue;
+            if (t.cornerRadius > fillet + 1e-6) continue;
+            if (std::min(t.fluteLength, t.reach) < g.depth - 1e-6) continue;
+            const bool matches = fillet > 0 && std::fabs(t.cornerRadius - fillet) <= 1e-6;
+            if (expected.empty() || (matches && !expectedMatches) ||
+                (matches == expectedMatches && t.diameter > expectedD + 1e-6))
+                expected = t.id, expectedMatches = matches, expectedD = t.diameter;
+        }
+        if (expected.empty()) {
+            EXPECT_EQ(c.finishingTool, -1) << "element " << c.element;
+        } else {
+            ASSERT_GE(c.finishingTool, 0) << "element " << c.element << ": " << c.error;
+            EXPECT_EQ(plan.tools[c.finishingTool].id, expected) << "element " << c.element;
+            ++checkedFinish;
+        }
+
+        // Roughing: the chosen tool meets eta_min, every larger candidate does not.
+        if (c.roughingTool < 0) continue;
+        const Tool& chosen = plan.tools[c.roughingTool];
+        EXPECT_GE(c.ratio.eta, etaMin - 1e-12) << "element " << c.element;
+        EXPECT_NEAR(machinableRatio(g, chosen.radius()).eta, c.ratio.eta, 1e-9);
+        for (const Tool& t : plan.tools) {
+            if (!(t.type == "flat" || t.type == "bull" || t.type == "ball") || !hasData(t, "roughing")) continue;
+            if (t.diameter <= chosen.diameter + 1e-9 || std::min(t.fluteLength, t.reach) < g.depth - 1e-6) continue;
+            EXPECT_LT(machinableRatio(g, t.radius()).eta, etaMin) << "element " << c.element << ": " << t.id
+                                                                  << " is larger and would do";
+        }
+        ++checkedRough;
+    }
+    EXPECT_GT(checkedFinish, 0);
+    EXPECT_GT(checkedRough, 0);
+}
