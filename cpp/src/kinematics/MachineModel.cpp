@@ -1,0 +1,145 @@
+// Machine files: reviewable JSON, one per machine, named like the machines of the knowledge base.
+#include <aeronc/kinematics/MachineModel.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace aeronc::kinematics {
+
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+    const std::string& source;
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw kinematicsError(source + ": " + what);
+    }
+    const json& need(const json& j, const char* key, const std::string& where) const {
+        if (!j.is_object() || !j.contains(key)) fail("missing \"" + std::string(key) + "\"" + where);
+        return j.at(key);
+    }
+    double number(const json& j, const std::string& what) const {
+        if (!j.is_number()) fail(what + " must be a number");
+        const double v = j.get<double>();
+        if (!std::isfinite(v)) fail(what + " must be finite");
+        return v;
+    }
+    Vec3 vec(const json& j, const std::string& what) const {
+        if (!j.is_array() || j.size() != 3) fail(what + " must be [x, y, z]");
+        return {number(j[0], what), number(j[1], what), number(j[2], what)};
+    }
+    Vec3 unit(const json& j, const std::string& what) const {
+        const Vec3 v = vec(j, what);
+        if (std::abs(v.norm() - 1.0) > 1e-9) fail(what + " must be a unit vector");
+        return v.normalized();
+    }
+};
+
+}  // namespace
+
+int MachineModel::axisIndex(const std::string& n) const {
+    for (size_t i = 0; i < rotary.size(); ++i)
+        if (rotary[i].name == n) return static_cast<int>(i);
+    return -1;
+}
+
+std::string MachineModel::kinematicsName() const {
+    const bool t0 = rotary.at(0).carrier == Carrier::Table, t1 = rotary.at(1).carrier == Carrier::Table;
+    if (t0 && t1) return "table-table";
+    if (!t0 && !t1) return "head-head";
+    return "head-table";
+}
+
+MachineModel machineFromJson(const std::string& text, const std::string& source) {
+    json j;
+    try {
+        j = json::parse(text);
+    } catch (const json::exception& e) {
+        throw kinematicsError(source + ": not valid JSON (" + e.what() + ")");
+    }
+    const Reader r{source};
+    MachineModel m;
+    const auto& name = r.need(j, "name", "");
+    if (!name.is_string() || name.get<std::string>().empty()) r.fail("\"name\" must be a non-empty string");
+    m.name = name.get<std::string>();
+    if (j.contains("description")) m.description = j["description"].get<std::string>();
+    if (j.contains("controller")) m.controller = j["controller"].get<std::string>();
+    if (j.contains("toolDirection")) m.toolDirection = r.unit(j["toolDirection"], "\"toolDirection\"");
+
+    const auto& axes = r.need(j, "rotaryAxes", "");
+    if (!axes.is_array() || axes.size() != 2) r.fail("\"rotaryAxes\" must list exactly two rotary axes");
+    for (size_t i = 0; i < axes.size(); ++i) {
+        const std::string where = " in rotaryAxes[" + std::to_string(i) + "]";
+        RotaryAxis a;
+        const auto& n = r.need(axes[i], "name", where);
+        if (!n.is_string() || n.get<std::string>().size() != 1 || !std::isupper(n.get<std::string>()[0]))
+            r.fail("the name" + where + " must be one capital letter (the NC address)");
+        a.name = n.get<std::string>();
+        const auto& carrier = r.need(axes[i], "carrier", where);
+        if (carrier == "table")
+            a.carrier = Carrier::Table;
+        else if (carrier == "head")
+            a.carrier = Carrier::Head;
+        else
+            r.fail("\"carrier\"" + where + " must be \"table\" or \"head\"");
+        a.direction = r.unit(r.need(axes[i], "direction", where), "\"direction\"" + where);
+        a.point = r.vec(r.need(axes[i], "point", where), "\"point\"" + where);
+        a.min = r.number(r.need(axes[i], "min", where), "\"min\"" + where);
+        a.max = r.number(r.need(axes[i], "max", where), "\"max\"" + where);
+        if (a.min > a.max) r.fail("\"min\" > \"max\"" + where);
+        m.rotary.push_back(a);
+    }
+    if (m.rotary[0].name == m.rotary[1].name) r.fail("the two rotary axes have the same name");
+    if (m.rotary[0].direction.cross(m.rotary[1].direction).norm() < 1e-6)
+        r.fail("the two rotary axes are parallel: the tool axis cannot be oriented");
+    for (const char* linear : {"X", "Y", "Z"})
+        if (m.rotary[0].name == linear || m.rotary[1].name == linear)
+            r.fail(std::string("a rotary axis cannot be called ") + linear);
+
+    if (j.contains("partZero")) m.partZero = r.vec(j["partZero"], "\"partZero\"");
+    if (j.contains("linearTravel")) {
+        LinearTravel t;
+        const char* names[3] = {"X", "Y", "Z"};
+        for (int k = 0; k < 3; ++k) {
+            const auto& range = r.need(j["linearTravel"], names[k], " in linearTravel");
+            if (!range.is_array() || range.size() != 2) r.fail(std::string("linearTravel.") + names[k] + " must be [min, max]");
+            t.min[k] = r.number(range[0], std::string("linearTravel.") + names[k]);
+            t.max[k] = r.number(range[1], std::string("linearTravel.") + names[k]);
+            if (t.min[k] >= t.max[k]) r.fail(std::string("linearTravel.") + names[k] + ": min >= max");
+        }
+        m.travel = t;
+    }
+    if (j.contains("retractDistance")) {
+        m.retractDistance = r.number(j["retractDistance"], "\"retractDistance\"");
+        if (m.retractDistance <= 0) r.fail("\"retractDistance\" must be positive");
+    }
+    if (j.contains("maxRotaryFeed")) {
+        m.maxRotaryFeed = r.number(j["maxRotaryFeed"], "\"maxRotaryFeed\"");
+        if (m.maxRotaryFeed <= 0) r.fail("\"maxRotaryFeed\" must be positive");
+    }
+    if (j.contains("sinumerik")) {
+        const auto& s = j["sinumerik"];
+        if (s.contains("swivelDataRecord")) m.swivelDataRecord = s["swivelDataRecord"].get<std::string>();
+        if (s.contains("directionReference")) {
+            const auto ref = s["directionReference"].get<std::string>();
+            m.directionReference = m.axisIndex(ref);
+            if (m.directionReference < 0) r.fail("sinumerik.directionReference \"" + ref + "\" is not a rotary axis");
+        }
+    }
+    return m;
+}
+
+MachineModel loadMachineFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw kinematicsError("cannot read machine file " + path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return machineFromJson(s.str(), path);
+}
+
+}  // namespace aeronc::kinematics
