@@ -69,6 +69,8 @@ auto guarded(F f) -> decltype(f()) {
 
 }  // namespace
 
+void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
     g_error = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
@@ -158,4 +160,5 @@ PYBIND11_MODULE(_core, m) {
             });
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
+    bindOptimise(m);
 }
