@@ -4,9 +4,13 @@
 //   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
 //   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
 //                       [--machine NAME] [--resources DIR]
+//   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
+//                   [--resources DIR]
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
@@ -34,7 +38,9 @@ const char* kUsage =
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
     "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
-    "      (a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n";
+    "      (a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
+    "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
+    "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -231,6 +237,52 @@ int selectToolsCmd(int argc, char** argv) {
     return 0;
 }
 
+int optimiseCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("optimise needs a parameter file (JSON), e.g. resources/optimise/*.json");
+    std::string file = argv[2], jsonOut, kbPath, resources, method = "nlopt";
+    aeronc::optimise::GeneticOptions ga;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--json") jsonOut = next();
+        else if (a == "--method") method = next();
+        else if (a == "--kb") kbPath = next();
+        else if (a == "--resources") resources = next();
+        else if (a == "--seed") {
+            const std::string v = next();
+            if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
+                throw aeronc::inputError("--seed wants a whole number, got '" + v + "'");
+            ga.seed = std::stoull(v);
+        }
+        else return false;
+        return true;
+    });
+    const auto how = aeronc::optimise::parseMethod(method);
+    std::ifstream in(file);
+    if (!in) throw aeronc::inputError(file + ": no such file or not readable");
+    nlohmann::json params;
+    try {
+        params = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw aeronc::inputError(file + ": not valid JSON: " + e.what());
+    }
+    if (!kbPath.empty()) {
+        const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
+            kbPath, [&] { return kbResources(resources, argv[0]).string(); });
+        params = aeronc::kb::withKnowledgeBase(kb, params);
+    } else if (params.is_object() && params.contains("kb")) {
+        throw aeronc::inputError(file + " names knowledge-base rows (\"kb\"): pass --kb KB.sqlite");
+    }
+    aeronc::optimise::Parameters p;
+    try {
+        p = aeronc::optimise::parseParameters(params);
+    } catch (const aeronc::Error& e) {
+        throw aeronc::inputError(file + ": " + e.what());
+    }
+    const auto c = aeronc::optimise::compare(p, how, ga);
+    std::cout << aeronc::optimise::toText(c);
+    if (!jsonOut.empty()) writeText(jsonOut, aeronc::optimise::toJson(c).dump(1));
+    return 0;
+}
+
 // OCCT's STEP reader and writer print statistics on stdout, which is the JSON's channel.
 void quietOcct() {
     const Handle(Message_Messenger)& m = Message::DefaultMessenger();
@@ -250,6 +302,7 @@ int main(int argc, char** argv) {
         if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
         if (cmd == "panel") return panelCmd(argc, argv);
         if (cmd == "select-tools") return selectToolsCmd(argc, argv);
+        if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {

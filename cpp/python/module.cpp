@@ -52,6 +52,8 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 
 }  // namespace
 
+void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
     aeronc::python::errorType() = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
@@ -144,4 +146,5 @@ PYBIND11_MODULE(_core, m) {
             });
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
+    bindOptimise(m);
 }

@@ -51,5 +51,21 @@ else
   failed=$((failed + 1)); echo "FAIL select-tools writes JSON"
 fi
 
+# Cutting-parameter optimisation: the paper's example solves; bad parameter files are refused.
+opt="$(dirname "$0")/../../resources/optimise/xa5032_face_mill_45_steel.json"
+if "$cli" optimise "$opt" --method both --json "$tmp/opt.json" >/dev/null 2>&1 &&
+   grep -q '"active"' "$tmp/opt.json" && grep -q '"genetic"' "$tmp/opt.json"; then
+  passed=$((passed + 1)); echo "ok   optimise writes JSON"
+else
+  failed=$((failed + 1)); echo "FAIL optimise writes JSON"
+fi
+sed 's/"C_F": 825, //' "$opt" > "$tmp/no_cf.json"
+expect_error "optimise missing coefficient" "force.C_F" "$cli" optimise "$tmp/no_cf.json"
+sed 's/"power_kw": 7.5/"power_kw": 0.01/' "$opt" > "$tmp/weak.json"
+expect_error "optimise infeasible" "raise P_max from 0.01 to" "$cli" optimise "$tmp/weak.json"
+sed 's/"diameter_mm": 125/"diameter_mm": 0/' "$opt" > "$tmp/flat.json"
+expect_error "optimise non-physical" "cutter diameter d_0 must be positive" "$cli" optimise "$tmp/flat.json"
+expect_error "optimise bad method" "nlopt, ga or both" "$cli" optimise "$opt" --method simplex
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

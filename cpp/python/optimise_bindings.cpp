@@ -1,0 +1,70 @@
+// aeronc._core: the cutting-parameter optimiser for Python. Parameters and results cross as
+// JSON text, like the rest of the module; every C++ exception becomes the module's error.
+#include <aeronc/core/Error.h>
+#include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/optimise/Report.h>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace py = pybind11;
+
+namespace {
+
+PyObject* g_optimiseError = nullptr;  // the module's error class; the module keeps it alive
+
+template <class F>
+auto guardedOptimise(F f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const py::error_already_set&) {
+        throw;
+    } catch (const std::exception& e) {
+        PyErr_SetString(g_optimiseError, e.what());
+    } catch (...) {
+        PyErr_SetString(g_optimiseError, "unknown failure in the cutting-parameter optimiser");
+    }
+    throw py::error_already_set();
+}
+
+}  // namespace
+
+// Registers optimise_cutting() on m. Call it after the module's error class exists.
+void bindOptimise(py::module_& m) {
+    g_optimiseError = py::hasattr(m, "RecognitionError") ? m.attr("RecognitionError").ptr() : PyExc_RuntimeError;
+    m.def(
+        "optimise_cutting",
+        [](const std::string& paramsJson, const std::string& method, unsigned long long seed, const std::string& kbPath,
+           const std::string& sqlFolder) {
+            return guardedOptimise([&] {
+                std::string text, json;
+                {
+                    py::gil_scoped_release nogil;
+                    nlohmann::json params;
+                    try {
+                        params = nlohmann::json::parse(paramsJson);
+                    } catch (const nlohmann::json::exception& e) {
+                        throw aeronc::inputError(std::string("parameters are not valid JSON: ") + e.what());
+                    }
+                    if (!kbPath.empty()) {
+                        const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
+                        params = aeronc::kb::withKnowledgeBase(kb, params);
+                    }
+                    aeronc::optimise::GeneticOptions ga;
+                    ga.seed = seed;
+                    const auto c = aeronc::optimise::compare(aeronc::optimise::parseParameters(params),
+                                                             aeronc::optimise::parseMethod(method), ga);
+                    text = aeronc::optimise::toText(c);
+                    json = aeronc::optimise::toJson(c).dump();
+                }
+                return py::make_tuple(text, json);
+            });
+        },
+        py::arg("params_json"), py::arg("method") = std::string("nlopt"), py::arg("seed") = 1ULL,
+        py::arg("kb_path") = std::string(), py::arg("sql_folder") = std::string(),
+        "Optimise spindle speed and feed per tooth for one milling operation. params_json is the parameter "
+        "file's text (docs/cutting-optimisation.md); with kb_path its \"kb\" names are looked up there (built "
+        "from sql_folder when missing). method: 'nlopt', 'ga' or 'both'. Returns (report_text, result_json).");
+}
