@@ -129,12 +129,37 @@ MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius)
     if (undecided.empty()) return m;
 
     // Material farther than r from the reachable region is no corner leftover (a corner
-    // of angle θ leaves at most r(1/sin(θ/2) − 1), which is r at 60°).
+    // of angle θ leaves at most r(1/sin(θ/2) − 1), which is r at 60°): the parts of the
+    // undecided pieces the erosion swept out by 2r does not cover. Only the erosion within
+    // 2r of a piece can cover it, so only that part is swept: the erosion clipped to the
+    // pieces' boxes grown by 2r and a margin beyond the arcs' chord error. The clip's own
+    // new edges lie farther than 2r from every piece, so within the pieces the sweep is the
+    // full erosion's.
+    const double grow = (2 * r + 4 * tol + 0.01) * kScale;
+    Paths windows;
+    for (const PolyNode* p : undecided) {
+        const Box b = boxOf(p->Contour, 0);
+        const cInt x0 = static_cast<cInt>(std::floor(b.x0 * kScale - grow)),
+                   y0 = static_cast<cInt>(std::floor(b.y0 * kScale - grow)),
+                   x1 = static_cast<cInt>(std::ceil(b.x1 * kScale + grow)),
+                   y1 = static_cast<cInt>(std::ceil(b.y1 * kScale + grow));
+        windows.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+    }
+    Paths near;
+    {
+        Clipper c;
+        c.AddPaths(o.eroded, ptSubject, true);
+        c.AddPaths(windows, ptClip, true);
+        c.Execute(ctIntersection, near, pftNonZero, pftNonZero);
+    }
     PolyTree far;
     {
         Clipper c;
-        c.AddPaths(region.paths, ptSubject, true);
-        c.AddPaths(offsetRegion(o.eroded, 2 * r, tol), ptClip, true);
+        for (const PolyNode* p : undecided) {
+            c.AddPath(p->Contour, ptSubject, true);
+            for (const PolyNode* h : p->Childs) c.AddPath(h->Contour, ptSubject, true);
+        }
+        c.AddPaths(offsetRegion(near, 2 * r, tol), ptClip, true);
         c.Execute(ctDifference, far, pftNonZero, pftNonZero);
     }
     std::vector<const PolyNode*> farPieces;

@@ -21,6 +21,10 @@ double areaOf(const ClipperLib::Paths& ps);  // mm², holes subtracted
 // Round-join offset of a whole region; negative delta erodes.
 ClipperLib::Paths offsetRegion(const ClipperLib::Paths& ps, double delta, double arcTolerance);
 
+// offsetRegion(ps, -radius, arcTolerance) as a set, computed without letting the spikes of
+// tightly curved convex stretches cross (see PocketRegion.cpp).
+ClipperLib::Paths erodeRegion(const ClipperLib::Paths& ps, double radius, double arcTolerance);
+
 // Chord error (sagitta) of the round joins. Coarser is faster; with the equal-area
 // correction in openRegion, 2e-3·r keeps eta within ~1e-4.
 double arcToleranceFor(double radius);
