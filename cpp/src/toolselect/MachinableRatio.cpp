@@ -97,7 +97,10 @@ double holeArea(const PolyNode& outer) {
 
 MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius) {
     const PocketRegion region = makeRegion(pocket);
-    const Opening o = openRegion(region, toolRadius);
+    return machinableRatio(region, openRegion(region, toolRadius), toolRadius);
+}
+
+MachinableRatio machinableRatio(const PocketRegion& region, const Opening& o, double toolRadius) {
     MachinableRatio m;
     m.area = region.area;
     m.machinableArea = o.machinableArea;
@@ -159,7 +162,7 @@ MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius)
             c.AddPath(p->Contour, ptSubject, true);
             for (const PolyNode* h : p->Childs) c.AddPath(h->Contour, ptSubject, true);
         }
-        c.AddPaths(offsetRegion(near, 2 * r, tol), ptClip, true);
+        c.AddPaths(offsetRegionFast(near, 2 * r, tol), ptClip, true);
         c.Execute(ctDifference, far, pftNonZero, pftNonZero);
     }
     std::vector<const PolyNode*> farPieces;

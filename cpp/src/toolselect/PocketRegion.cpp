@@ -53,18 +53,21 @@ Paths offsetRegion(const Paths& ps, double delta, double arcTolerance) {
 
 namespace {
 
-// Erosion by r: a convex stretch of the boundary (a corner fillet, an arc) that curves more
-// tightly than r sends the offset's corner spikes (Clipper's handling of a convex vertex
-// under a negative offset) through one another, about n² crossings for n vertices, and
-// that is where a full erosion spends its time. Such a stretch is cut into short sub-runs,
-// and each sub-run v_i..v_j is replaced by the apex X where the lines of the edges entering
-// and leaving it meet. The result P⁺ contains P (each convex sub-run lies in its triangle
-// v_i X v_j), and its boundary is P's except for the dropped chains v_i..v_j. A disc inside
-// P⁺ lies inside P unless it crosses a dropped chain, so
-//     P ⊖ D_r = (P⁺ ⊖ D_r) \ ⋃ (chain ⊕ D_r),
-// exactly. Where the tool is wider than the fillet (the case that is slow) no chain comes
-// within r of P⁺ ⊖ D_r and nothing is subtracted; otherwise only the chains that do are
-// offset, each on its own, so their spikes never meet.
+// Offsetting by r (Clipper, round joins): a stretch of the boundary that turns towards the
+// offset (a convex fillet or arc under erosion, a concave one under dilation) and curves
+// more tightly than r sends Clipper's corner spikes through one another, about n² crossings
+// for n vertices, and that is where such an offset spends its time. The stretch is cut into
+// short sub-runs, and each sub-run v_i..v_j is replaced by the apex X where the lines of the
+// edges entering and leaving it meet. For an erosion the result P⁺ contains P (a convex
+// sub-run lies in its triangle v_i X v_j), and its boundary is P's except for the dropped
+// chains v_i..v_j: a disc inside P⁺ lies inside P unless it crosses a dropped chain, so
+//     P ⊖ D_r = (P⁺ ⊖ D_r) \ ⋃ (chain ⊕ D_r)
+// exactly (the triangles being thinner than r). A dilation is the erosion of the
+// complement: the triangles are cut out of P, giving P⁻, and
+//     P ⊕ D_r = (P⁻ ⊕ D_r) ∪ ⋃ (chain ⊕ D_r).
+// Where the stretch curves more tightly than r (the slow case) no chain comes within r of
+// the boundary of P± offset, and there is nothing to add or subtract; otherwise only the
+// chains that do are swept, each on its own, so their spikes never meet.
 constexpr double kThinRadius = 1.25;  // vertices with circumradius <= this · r may be thinned,
 constexpr double kCollapse = 1.0;     // in stretches whose mean radius is <= this · r
 constexpr double kMaxTurn = 30 * M_PI / 180;  // turning of one sub-run
@@ -120,11 +123,13 @@ bool meetsTriangle(const Seg& s, const IntPoint& p, const IntPoint& q, const Int
 }
 
 struct Thinned {
-    Paths outer;   // P⁺
+    Paths outer;   // P± (apexes for the thinned sub-runs)
     Paths chains;  // the dropped chains v_i..v_j, as open paths
 };
 
-Thinned thinConvexRuns(const Paths& ps, double delta) {
+// `sign` +1 thins left turns (the spiking vertices of an erosion), -1 right turns (those of a
+// dilation).
+Thinned thinSpikingRuns(const Paths& ps, double delta, double sign) {
     Thinned t;
     std::vector<Seg> edges;  // every edge of P, to keep a triangle from covering another part of it
     for (const Path& p : ps)
@@ -141,7 +146,7 @@ Thinned thinConvexRuns(const Paths& ps, double delta) {
             const IntPoint& b = p[j];
             const IntPoint& c = p[(j + 1) % n];
             const double ax = double(b.X - a.X), ay = double(b.Y - a.Y), bx = double(c.X - b.X), by = double(c.Y - b.Y);
-            const double cr = ax * by - ay * bx;
+            const double cr = sign * (ax * by - ay * bx);
             turn[j] = std::atan2(cr, ax * bx + ay * by);
             // Circumradius |a||b||a+b| / (2 (a × b)) at most kThinRadius · delta.
             const double chord = std::hypot(ax + bx, ay + by);
@@ -201,7 +206,7 @@ Thinned thinConvexRuns(const Paths& ps, double delta) {
             const double ux = double(a1.X - a0.X), uy = double(a1.Y - a0.Y);
             const double vx = double(b1.X - b0.X), vy = double(b1.Y - b0.Y);
             const double den = ux * vy - uy * vx;
-            bool ok = den > 0;
+            bool ok = sign * den > 0;
             IntPoint x;
             if (ok) {
                 const double s = (double(b0.X - a1.X) * vy - double(b0.Y - a1.Y) * vx) / den;
@@ -247,18 +252,19 @@ Thinned thinConvexRuns(const Paths& ps, double delta) {
 
 }  // namespace
 
-Paths erodeRegion(const Paths& ps, double radius, double arcTolerance) {
-    const double delta = radius * kScale;
-    Thinned t = thinConvexRuns(ps, delta);
-    if (t.chains.empty()) return offsetRegion(ps, -radius, arcTolerance);
-    Paths eroded = offsetRegion(t.outer, -radius, arcTolerance);
-    if (eroded.empty()) return eroded;
+Paths offsetRegionFast(const Paths& ps, double delta, double arcTolerance) {
+    const double d = std::fabs(delta) * kScale;
+    Thinned t = thinSpikingRuns(ps, d, delta < 0 ? 1.0 : -1.0);
+    if (t.chains.empty()) return offsetRegion(ps, delta, arcTolerance);
+    Paths base = offsetRegion(t.outer, delta, arcTolerance);
+    if (base.empty() && delta < 0) return base;
 
-    // The chains that come within r of the eroded P⁺ (plus a unit for rounding).
+    // The chains that come within r of the boundary of the offset P± (plus a unit for
+    // rounding); the others' sweeps lie wholly outside it (erosion) or inside it (dilation).
     std::vector<Seg> edges;
-    for (const Path& p : eroded)
+    for (const Path& p : base)
         for (std::size_t i = 0; i < p.size(); ++i) edges.push_back(segOf(p[i], p[(i + 1) % p.size()]));
-    const double reach = delta + 1, reach2 = reach * reach;
+    const double reach = d + 1, reach2 = reach * reach;
     Paths cut;
     for (const Path& c : t.chains) {
         double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -273,18 +279,19 @@ Paths erodeRegion(const Paths& ps, double radius, double arcTolerance) {
             for (std::size_t q = 0; !near && q + 1 < c.size(); ++q) near = segDist2(c[q], c[q + 1], s.a, s.b) < reach2;
         }
         if (!near) continue;
+        // Flat ends: the end points lie on P±'s boundary, which already sweeps their discs.
         ClipperOffset off(2.0, arcTolerance * kScale);
         off.AddPath(c, jtRound, etOpenButt);
-        Paths capsule;
-        off.Execute(capsule, delta);
-        cut.insert(cut.end(), capsule.begin(), capsule.end());
+        Paths sweep;
+        off.Execute(sweep, d);
+        cut.insert(cut.end(), sweep.begin(), sweep.end());
     }
-    if (cut.empty()) return eroded;
+    if (cut.empty()) return base;
     Clipper clip;
-    clip.AddPaths(eroded, ptSubject, true);
+    clip.AddPaths(base, ptSubject, true);
     clip.AddPaths(cut, ptClip, true);
     Paths out;
-    clip.Execute(ctDifference, out, pftNonZero, pftNonZero);
+    clip.Execute(delta < 0 ? ctDifference : ctUnion, out, pftNonZero, pftNonZero);
     return out;
 }
 
@@ -295,7 +302,7 @@ Opening openRegion(const PocketRegion& region, double radius) {
         throw inputError("tool radius " + std::to_string(radius) + " mm must be positive");
     const double tol = arcToleranceFor(radius);
     Opening o;
-    Paths eroded = erodeRegion(region.paths, radius, tol);
+    Paths eroded = offsetRegionFast(region.paths, -radius, tol);
     if (eroded.empty()) return o;
     // The round joins leave runs of near-collinear points; dropping them halves the
     // dilation's cost and moves the boundary by less than the arc tolerance.
