@@ -303,7 +303,7 @@ Opening openRegion(const PocketRegion& region, double radius) {
     const double tol = arcToleranceFor(radius);
     Opening o;
     Paths eroded = offsetRegionFast(region.paths, -radius, tol);
-    if (eroded.empty()) return o;
+    // (An empty erosion leaves the whole region.)
     // The round joins leave runs of near-collinear points; dropping them halves the
     // dilation's cost and moves the boundary by less than the arc tolerance.
     CleanPolygons(eroded, o.eroded, tol * kScale);
@@ -312,13 +312,29 @@ Opening openRegion(const PocketRegion& region, double radius) {
     // the extra is clipped off below.
     const double step = 2 * std::acos(1 - tol / radius);
     const double equalArea = radius * std::sqrt(step / std::sin(step));
-    const Paths opened = offsetRegion(o.eroded, equalArea, tol);
+    // What the opening leaves of the region is kept: the narrow-passage analysis looks
+    // only there.
     Clipper c;
-    c.AddPaths(opened, ptSubject, true);
-    c.AddPaths(region.paths, ptClip, true);
-    Paths clipped;
-    c.Execute(ctIntersection, clipped, pftNonZero, pftNonZero);
-    o.machinableArea = areaOf(clipped);
+    c.AddPaths(region.paths, ptSubject, true);
+    c.AddPaths(offsetRegion(o.eroded, equalArea, tol), ptClip, true);
+    PolyTree left;
+    c.Execute(ctDifference, left, pftNonZero, pftNonZero);
+    double unreached = 0;
+    std::vector<const PolyNode*> todo(left.Childs.begin(), left.Childs.end());
+    while (!todo.empty()) {
+        const PolyNode* n = todo.back();
+        todo.pop_back();
+        for (const PolyNode* ch : n->Childs) todo.push_back(ch);
+        if (n->IsHole()) continue;
+        Opening::Piece piece;
+        piece.outer = n->Contour;
+        double a = std::fabs(Area(n->Contour));
+        for (const PolyNode* h : n->Childs) piece.holes.push_back(h->Contour), a -= std::fabs(Area(h->Contour));
+        piece.area = a / (kScale * kScale);
+        unreached += piece.area;
+        o.unreached.push_back(std::move(piece));
+    }
+    o.machinableArea = o.eroded.empty() ? 0 : std::max(0.0, region.area - unreached);
     return o;
 }
 

@@ -30,10 +30,17 @@ ClipperLib::Paths offsetRegionFast(const ClipperLib::Paths& ps, double delta, do
 // correction in openRegion, 2e-3·r keeps eta within ~1e-4.
 double arcToleranceFor(double radius);
 
-// eta only (erode, dilate, clip), the part the roughing search repeats. `eroded` is the
-// erosion by r, cleaned.
+// eta only (erode, dilate, subtract from the region), the part the roughing search repeats.
+// `eroded` is the erosion by r, cleaned.
 struct Opening {
     ClipperLib::Paths eroded;
+    // The pieces of the region the opening leaves (A_m is the region's area less theirs).
+    struct Piece {
+        ClipperLib::Path outer;
+        ClipperLib::Paths holes;
+        double area = 0;  // mm², holes subtracted
+    };
+    std::vector<Piece> unreached;
     double machinableArea = 0;
 };
 Opening openRegion(const PocketRegion& region, double radius);
