@@ -93,11 +93,45 @@ double holeArea(const PolyNode& outer) {
     return a / (kScale * kScale);
 }
 
+// The erosion clipped to the boxes grown by `reach` mm: sweeping it by less than `reach`
+// covers, within the boxes, what sweeping the whole erosion covers. With `orAll`, when the
+// boxes cover much of the erosion's box (clipping would cost more than it saves), all of it.
+Paths erosionNear(const Paths& eroded, const std::vector<Box>& boxes, double reach, bool orAll) {
+    const double grow = reach * kScale;
+    if (orAll) {
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        for (const Path& p : eroded)
+            for (const IntPoint& q : p)
+                x0 = std::min(x0, double(q.X)), y0 = std::min(y0, double(q.Y)), x1 = std::max(x1, double(q.X)),
+                y1 = std::max(y1, double(q.Y));
+        double covered = 0;
+        for (const Box& b : boxes) covered += (b.x1 - b.x0 + 2 * reach) * (b.y1 - b.y0 + 2 * reach) * kScale * kScale;
+        if (covered > 0.5 * (x1 - x0) * (y1 - y0)) return eroded;
+    }
+    Paths windows;
+    for (const Box& b : boxes) {
+        const cInt x0 = static_cast<cInt>(std::floor(b.x0 * kScale - grow)),
+                   y0 = static_cast<cInt>(std::floor(b.y0 * kScale - grow)),
+                   x1 = static_cast<cInt>(std::ceil(b.x1 * kScale + grow)),
+                   y1 = static_cast<cInt>(std::ceil(b.y1 * kScale + grow));
+        windows.push_back({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+    }
+    Clipper c;
+    c.AddPaths(eroded, ptSubject, true);
+    c.AddPaths(windows, ptClip, true);
+    Paths near;
+    c.Execute(ctIntersection, near, pftNonZero, pftNonZero);
+    return near;
+}
+
 }  // namespace
 
 MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius) {
     const PocketRegion region = makeRegion(pocket);
-    const Opening o = openRegion(region, toolRadius);
+    return machinableRatio(region, openRegion(region, toolRadius), toolRadius);
+}
+
+MachinableRatio machinableRatio(const PocketRegion& region, const Opening& o, double toolRadius) {
     MachinableRatio m;
     m.area = region.area;
     m.machinableArea = o.machinableArea;
@@ -108,11 +142,23 @@ MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius)
     // walls leaves no hairline slivers to count.
     const double r = toolRadius, tol = arcToleranceFor(r), eps = 2 * tol + 1e-3;
     const double noise = 100 * eps * eps;
+    // The opening grown by eps contains the opening (eps exceeds the equal-area radius's
+    // excess plus a chord error), so the leftover lies in what the opening leaves, and a
+    // piece of that no larger than the noise holds no piece that counts. Only the pieces
+    // that are larger are cut again, and only the erosion near them is swept.
+    std::vector<Box> boxes;
     PolyTree leftover;
     {
         Clipper c;
-        c.AddPaths(region.paths, ptSubject, true);
-        c.AddPaths(offsetRegion(o.eroded, r + eps, tol), ptClip, true);
+        for (const Opening::Piece& p : o.unreached)
+            if (p.area > noise) {
+                c.AddPath(p.outer, ptSubject, true);
+                c.AddPaths(p.holes, ptSubject, true);
+                boxes.push_back(boxOf(p.outer, 0));
+            }
+        if (boxes.empty()) return m;
+        c.AddPaths(offsetRegion(erosionNear(o.eroded, boxes, r + eps + 4 * tol + 0.01, true), r + eps, tol), ptClip,
+                   true);
         c.Execute(ctDifference, leftover, pftNonZero, pftNonZero);
     }
     std::vector<const PolyNode*> pieces;
@@ -129,12 +175,23 @@ MachinableRatio machinableRatio(const PocketGeometry& pocket, double toolRadius)
     if (undecided.empty()) return m;
 
     // Material farther than r from the reachable region is no corner leftover (a corner
-    // of angle θ leaves at most r(1/sin(θ/2) − 1), which is r at 60°).
+    // of angle θ leaves at most r(1/sin(θ/2) − 1), which is r at 60°): the parts of the
+    // undecided pieces the erosion swept out by 2r does not cover. Only the erosion within
+    // 2r of a piece can cover it, so only that part is swept: the erosion clipped to the
+    // pieces' boxes grown by 2r and a margin beyond the arcs' chord error. The clip's own
+    // new edges lie farther than 2r from every piece, so within the pieces the sweep is the
+    // full erosion's.
+    boxes.clear();
+    for (const PolyNode* p : undecided) boxes.push_back(boxOf(p->Contour, 0));
+    const Paths near = erosionNear(o.eroded, boxes, 2 * r + 4 * tol + 0.01, false);
     PolyTree far;
     {
         Clipper c;
-        c.AddPaths(region.paths, ptSubject, true);
-        c.AddPaths(offsetRegion(o.eroded, 2 * r, tol), ptClip, true);
+        for (const PolyNode* p : undecided) {
+            c.AddPath(p->Contour, ptSubject, true);
+            for (const PolyNode* h : p->Childs) c.AddPath(h->Contour, ptSubject, true);
+        }
+        c.AddPaths(offsetRegionFast(near, 2 * r, tol), ptClip, true);
         c.Execute(ctDifference, far, pftNonZero, pftNonZero);
     }
     std::vector<const PolyNode*> farPieces;

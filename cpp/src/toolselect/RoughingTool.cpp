@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace aeronc::toolselect {
@@ -19,24 +20,39 @@ const Tool* roughingTool(const PocketGeometry& pocket, const std::vector<Tool>& 
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return tools[a].diameter > tools[b].diameter; });
 
-    // The region is built once. An opening by a larger disc lies inside the opening by a
-    // smaller one, so eta only grows down the list and a bisection finds the first tool
-    // meeting the threshold in log2(n) evaluations instead of n.
+    // The region is built once, and each diameter's opening at most once: tools of one
+    // diameter share their eta. An opening by a larger disc lies inside the opening by a
+    // smaller one, so eta only grows down the list. The largest diameter is tried first
+    // (a roughing tool usually is one of the larger ones), then a bisection finds the first
+    // diameter meeting the threshold in log2(n) more evaluations.
     const PocketRegion region = makeRegion(pocket);
-    auto etaOf = [&](std::size_t k) { return openRegion(region, tools[order[k]].radius()).machinableArea / region.area; };
-    std::size_t lo = 0, hi = order.size();  // answer in [lo, hi]; hi: none
-    double bestEta = -1;
+    std::vector<std::size_t> firstOfGroup;  // index into order of each diameter's first tool
+    for (std::size_t k = 0; k < order.size(); ++k)
+        if (k == 0 || tools[order[k]].diameter != tools[order[k - 1]].diameter) firstOfGroup.push_back(k);
+    std::vector<std::optional<Opening>> openings(firstOfGroup.size());
+    auto opening = [&](std::size_t g) -> const Opening& {
+        if (!openings[g]) openings[g] = openRegion(region, tools[order[firstOfGroup[g]]].radius());
+        return *openings[g];
+    };
+    auto etaOf = [&](std::size_t g) { return opening(g).machinableArea / region.area; };
+    const std::size_t groups = firstOfGroup.size();
+    std::size_t lo = 0, hi = groups;  // answer in [lo, hi]; hi: none
+    if (groups > 0) {
+        if (etaOf(0) >= etaThreshold) hi = 0;
+        else lo = 1;
+    }
     while (lo < hi) {
         const std::size_t mid = (lo + hi) / 2;
-        const double eta = etaOf(mid);
-        if (eta >= etaThreshold) hi = mid;
-        else lo = mid + 1, bestEta = std::max(bestEta, eta);
+        if (etaOf(mid) >= etaThreshold) hi = mid;
+        else lo = mid + 1;
     }
-    if (hi < order.size()) {
-        const Tool& t = tools[order[hi]];
-        if (ratio) *ratio = machinableRatio(pocket, t.radius());
+    if (hi < groups) {
+        const Tool& t = tools[order[firstOfGroup[hi]]];
+        if (ratio) *ratio = machinableRatio(region, opening(hi), t.radius());
         return &t;
     }
+    // None qualifies: the smallest diameter's eta is the best one.
+    const double bestEta = groups > 0 ? etaOf(groups - 1) : -1;
     const double bestDiameter = order.empty() ? 0 : tools[order.back()].diameter;
 
     std::ostringstream m;
