@@ -50,3 +50,85 @@ def create_job(doc, models, name="Job"):
     if FreeCAD.ActiveDocument is not doc:
         FreeCAD.setActiveDocument(doc.Name)
     return _job_module().Create(name, list(models))
+
+
+# --- Posts ---------------------------------------------------------------------------------
+
+def post_folder():
+    """The user folder where FreeCAD looks for *_post.py files (listed in the Job's
+    post-processor dropdown): the macro folder. 0.20 and 1.x both search it; read from the
+    preferences directly so that start-up does not load the Path modules."""
+    grp = FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Macro")
+    return grp.GetString("MacroPath", FreeCAD.getUserMacroDir())
+
+
+def _path_util():
+    try:
+        from Path.Base import Util  # FreeCAD 1.x
+        return Util
+    except ImportError:
+        from PathScripts import PathUtil  # FreeCAD 0.20
+        return PathUtil
+
+
+def _base_chain(op):
+    """The operation and, for a dressup, the operations it is based on."""
+    while op is not None:
+        yield op
+        base = getattr(op, "Base", None)
+        # An operation's Base is its geometry (a list); a dressup's Base is the operation.
+        op = base if base is not None and not isinstance(base, (list, tuple)) and hasattr(base, "Path") else None
+
+
+def op_active(op):
+    """False when the operation (or the operation a dressup is based on) is switched off."""
+    value = _path_util().opProperty(op, "Active")
+    return True if value is None else bool(value)
+
+
+def tool_controller_of(op):
+    """The tool controller an operation (or the base of a dressup) uses, or None."""
+    return _path_util().toolControllerForOp(op)
+
+
+def needs_tool_controller(op):
+    """True when the object is an operation that has (or should have) a tool controller."""
+    return any(hasattr(o, "ToolController") for o in _base_chain(op))
+
+
+def is_tool_controller(obj):
+    return hasattr(obj, "ToolNumber") and hasattr(obj, "SpindleDir") and hasattr(obj, "Path")
+
+
+def job_post_objects(job):
+    """What FreeCAD's Post command hands a post for a Job, ordered by fixture (FreeCAD's
+    default): for every work offset, an object holding it and the clearance move, then the
+    active operations, each tool controller just before its first operation."""
+
+    class _WorkOffset:
+        Name = "Fixture"
+
+        def __init__(self, label, path):
+            self.Label = label
+            self.Path = path
+
+    import Path
+    clearance = job.Stock.Shape.BoundBox.ZMax + job.SetupSheet.ClearanceHeightOffset.Value
+    out = []
+    for fixture in job.Fixtures:
+        out.append(_WorkOffset(fixture, Path.Path([Path.Command(fixture), Path.Command("G0", {"Z": clearance})])))
+        current = None
+        for op in job.Operations.Group:
+            if not op_active(op):
+                continue
+            tc = tool_controller_of(op)
+            if tc is not None and tc is not current:
+                out.append(tc)
+                current = tc
+            out.append(op)
+    return out
+
+
+def op_property(op, name):
+    """A property of an operation, or of the operation a dressup is based on (None if absent)."""
+    return _path_util().opProperty(op, name)

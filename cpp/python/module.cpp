@@ -18,6 +18,7 @@
 
 namespace py = pybind11;
 using namespace aeronc;
+void bindKinematics(py::module_& m);  // kinematics_bindings.cpp: 5-axis kinematics and posts
 
 namespace {
 
@@ -158,4 +159,5 @@ PYBIND11_MODULE(_core, m) {
             });
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
+    bindKinematics(m);
 }

@@ -5,6 +5,7 @@
 // drilling cycles drill along machine Z.
 #include "NcWriter.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace aeronc::kinematics {
@@ -137,10 +138,26 @@ private:
         if (inverse_) {
             w_.value("F", 1.0 / s.minutes, 4);
         } else if (s.rotaryMoved && s.minutes > 0) {
-            const double xyz = (s.joints.linear - lastLinear_).norm();
-            const double rot = std::max(std::abs(s.joints.rotary[0] - lastRotary_[0]), std::abs(s.joints.rotary[1] - lastRotary_[1]));
-            w_.value("F", (xyz > 1e-9 ? xyz : rot) / s.minutes, 3);
-            f_.forget();
+            // LinuxCNC times the move by the XYZ words it reads (rounded as written), or by the
+            // rotary words when no linear word changes.
+            auto written = [&](double v, int decimals) { return std::round(v * std::pow(10.0, decimals)); };
+            double xyz = 0, rot = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double d = (written(s.joints.linear[k], o_.precision) - written(lastLinear_[k], o_.precision)) *
+                                 std::pow(10.0, -o_.precision);
+                xyz += d * d;
+            }
+            for (int k = 0; k < 2; ++k)
+                rot = std::max(rot, std::abs(written(s.joints.rotary[k], o_.anglePrecision) -
+                                             written(lastRotary_[k], o_.anglePrecision)) * std::pow(10.0, -o_.anglePrecision));
+            xyz = std::sqrt(xyz);
+            const double f = (xyz > 0 ? xyz : rot) / s.minutes;
+            if (f > 0) {
+                w_.value("F", f, 3);
+                f_.forget();
+            } else {
+                w_.modal("F", s.feed, 3, f_);
+            }
         } else {
             w_.modal("F", s.feed, 3, f_);
         }

@@ -14,6 +14,8 @@ std::string ClProgram::where(const ClRecord& r) const {
 
 namespace {
 
+constexpr double kNotANumberInPath = 922337203685.0;
+
 // The words of one command line: a letter and a number each (FreeCAD writes "G1 F10.000000 X1.000000").
 struct Command {
     char letter = 0;       // 'G', 'M', or 0 for a comment
@@ -138,7 +140,9 @@ private:
                 first = false;
                 continue;
             }
-            if (!std::isfinite(v)) fail(number, line, std::string("parameter ") + letter + " is not a finite number");
+            // Path.toGCode() writes NaN, infinities and anything beyond ~9.2e11 as -922337203685.477581.
+            if (!std::isfinite(v) || std::abs(v) >= kNotANumberInPath)
+                fail(number, line, std::string("parameter ") + letter + " is not a finite number (NaN or infinite)");
             if (c.has(letter)) fail(number, line, std::string("parameter ") + letter + " given twice");
             c.present |= 1u << (letter - 'A');
             c.value[letter - 'A'] = v;
@@ -259,7 +263,7 @@ private:
         moveTo(c, r.tip, r.known);
         r.axis = axis_;
         r.feed = rapid ? 0.0 : feed_;
-        if (!rapid && r.feed <= 0) fail(number, c.text, "feed move without a feed rate");
+        if (!rapid && r.feed <= 0) fail(number, c.text, "feed move without a feed rate; set the feed rates of the operation's tool controller");
         push(r);
     }
 
@@ -278,7 +282,7 @@ private:
         moveTo(c, r.tip, r.known);
         r.axis = axis_;
         r.feed = feed_;
-        if (r.feed <= 0) fail(number, c.text, "feed move without a feed rate");
+        if (r.feed <= 0) fail(number, c.text, "feed move without a feed rate; set the feed rates of the operation's tool controller");
         const Vec3 offset(c.has('I') ? c.get('I') : 0.0, c.has('J') ? c.get('J') : 0.0, c.has('K') ? c.get('K') : 0.0);
         if (std::abs(offset.dot(axis_)) > 1e-4)
             fail(number, c.text, "the arc centre offset (I, J, K) is not in the plane normal to the tool axis");

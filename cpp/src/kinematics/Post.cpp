@@ -12,8 +12,9 @@ PlanOptions planOptionsFor(const NcOptions& nc, PlanOptions plan) {
 }
 
 PostSummary postProgram(const ClProgram& program, const MachineModel& machine, const NcOptions& nc, const PlanOptions& plan) {
-    if (nc.precision < 0 || nc.precision > 12 || nc.anglePrecision < 0 || nc.anglePrecision > 12)
-        throw kinematicsError("precision must be between 0 and 12 decimals");
+    if (nc.precision < 0 || nc.precision > 12 || nc.anglePrecision < 0 || nc.anglePrecision > 12 ||
+        nc.vectorPrecision < 1 || nc.vectorPrecision > 15)
+        throw kinematicsError("precision must be between 0 and 12 decimals (vectors: 1 to 15)");
     const Plan p = planProgram(program, machine, planOptionsFor(nc, plan));
     PostSummary s;
     s.text = formatNc(p, nc);

@@ -1,0 +1,19 @@
+"""Atomic output: a program is complete on disk or not there at all."""
+import os
+import tempfile
+
+
+def write_atomically(filename, text):
+    """Write text to a temporary file beside filename, then rename it into place."""
+    folder = os.path.dirname(os.path.abspath(filename))
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(filename) + ".", suffix=".part")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, filename)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
