@@ -39,15 +39,18 @@ def _expand(objects):
             yield obj
 
 
+def _has(obj, name):
+    """Whether obj has a property, without reading it (reading a Path copies every command)."""
+    props = getattr(obj, "PropertiesList", None)
+    return name in props if props is not None else hasattr(obj, name)
+
+
 def _operations(obj):
-    """An operation, or the operations inside a compound (FreeCAD posts walk Group too)."""
-    if hasattr(obj, "Group") and not hasattr(obj, "Path"):
+    """An operation, or the operations inside a compound (FreeCAD's posts walk Group the same way)."""
+    if _has(obj, "Group"):
         for child in obj.Group:
             yield from _operations(child)
-    elif hasattr(obj, "Group") and hasattr(obj, "Path") and not obj.Path.Commands and obj.Group:
-        for child in obj.Group:
-            yield from _operations(child)
-    elif hasattr(obj, "Path"):
+    elif _has(obj, "Path"):
         yield obj
 
 
@@ -61,7 +64,7 @@ def sections_for(objects):
         if not hasattr(obj, "TypeId") and getattr(obj, "Name", "") == "Fixture":
             sections.append({"kind": "offset", "label": obj.Label, "gcode": obj.Path.toGCode()})
             continue
-        if not hasattr(obj, "Path"):
+        if not _has(obj, "Path") and not _has(obj, "Group"):
             raise PostError("'{}' is not a Path object; select a Job, operations or tool controllers".format(
                 getattr(obj, "Label", obj)))
         for op in _operations(obj):

@@ -140,16 +140,14 @@ private:
         } else if (s.rotaryMoved && s.minutes > 0) {
             // LinuxCNC times the move by the XYZ words it reads (rounded as written), or by the
             // rotary words when no linear word changes.
-            auto written = [&](double v, int decimals) { return std::round(v * std::pow(10.0, decimals)); };
+            const double lin = std::pow(10.0, o_.precision), ang = std::pow(10.0, o_.anglePrecision);
             double xyz = 0, rot = 0;
             for (int k = 0; k < 3; ++k) {
-                const double d = (written(s.joints.linear[k], o_.precision) - written(lastLinear_[k], o_.precision)) *
-                                 std::pow(10.0, -o_.precision);
+                const double d = (std::round(s.joints.linear[k] * lin) - std::round(lastLinear_[k] * lin)) / lin;
                 xyz += d * d;
             }
             for (int k = 0; k < 2; ++k)
-                rot = std::max(rot, std::abs(written(s.joints.rotary[k], o_.anglePrecision) -
-                                             written(lastRotary_[k], o_.anglePrecision)) * std::pow(10.0, -o_.anglePrecision));
+                rot = std::max(rot, std::abs(std::round(s.joints.rotary[k] * ang) - std::round(lastRotary_[k] * ang)) / ang);
             xyz = std::sqrt(xyz);
             const double f = (xyz > 0 ? xyz : rot) / s.minutes;
             if (f > 0) {

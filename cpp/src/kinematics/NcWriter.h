@@ -36,7 +36,9 @@ public:
         if (m.valid && m.last == num_) return;
         m.last = num_;
         m.valid = true;
-        value(address, v, decimals);
+        if (!block_.empty()) block_ += ' ';
+        block_ += address;
+        block_ += num_;
     }
     // Writes address+value always (non-modal words: I J, inverse-time F).
     void value(std::string_view address, double v, int decimals) {
