@@ -12,6 +12,13 @@ def write_atomically(filename, text):
             f.write(text)
             f.flush()
             os.fsync(f.fileno())
+        # mkstemp makes the file private; give it the mode a plain open() would (or keep the old one's).
+        if os.path.exists(filename):
+            os.chmod(tmp, os.stat(filename).st_mode & 0o7777)
+        else:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, filename)
     except BaseException:
         if os.path.exists(tmp):

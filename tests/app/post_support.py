@@ -128,11 +128,15 @@ def _apply(m, v):
 _IDENTITY = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
 
 
+def _add(a, b):
+    return tuple(x + y for x, y in zip(a, b))
+
+
 def read_sinumerik(text, machine_json, rotary_names=("A", "C"), vectors=False, tool_length=0.0):
     """[(tip, axis, kind, line)] of an 840D program; kind: rapid, feed, arc, hole."""
     fk = _Fk(machine_json, tool_length)
     out = []
-    frame, traori, motion = _IDENTITY, False, 0
+    frame, origin, traori, motion = _IDENTITY, (0.0, 0.0, 0.0), False, 0
     pos, known, rot, vec = [0.0, 0.0, 0.0], [False] * 3, [0.0, 0.0], [0.0, 0.0, 1.0]
     for n, l in _lines(text):
         l = l.split(";")[0].strip()
@@ -146,17 +150,19 @@ def read_sinumerik(text, machine_json, rotary_names=("A", "C"), vectors=False, t
             args = m.group(2).split(",") if m.group(2) else []
             if m.group(1) == "CYCLE800":
                 if not args:
-                    frame = _IDENTITY
+                    frame, origin = _IDENTITY, (0.0, 0.0, 0.0)
                 else:
                     assert len(args) == 16 and float(args[3]) == 57, l
+                    assert all(float(x) == 0 for x in args[10:13]), "line {}: X1 Y1 Z1 not read".format(n)
                     a, b, c = (float(x) for x in args[7:10])
                     frame = _mul(_mul(_rx(a), _ry(b)), _rz(c))
+                    origin = tuple(float(x) for x in args[4:7])  # the point the plane turns about
                 known = [False] * 3
             elif m.group(1) in ("CYCLE81", "CYCLE82", "CYCLE83"):
                 assert not traori and known[0] and known[1], "line {}: drilling without a position".format(n)
                 rtp, rfp, dp = float(args[0]), float(args[1]), float(args[3])
                 assert rtp >= rfp > dp, "line {}: cycle levels out of order".format(n)
-                out.append((_apply(frame, (pos[0], pos[1], dp)), _apply(frame, (0, 0, 1)), "hole", n))
+                out.append((_add(origin, _apply(frame, (pos[0], pos[1], dp))), _apply(frame, (0, 0, 1)), "hole", n))
                 pos[2], known[2] = rtp, True
             continue
         moved = False
@@ -185,7 +191,7 @@ def read_sinumerik(text, machine_json, rotary_names=("A", "C"), vectors=False, t
             axis = normalised(vec) if vectors else fk((0, 0, 0), rot)[1]
             out.append((tuple(pos), tuple(axis), kind, n))
         else:
-            out.append((_apply(frame, pos), _apply(frame, (0, 0, 1)), kind, n))
+            out.append((_add(origin, _apply(frame, pos)), _apply(frame, (0, 0, 1)), kind, n))
     return out
 
 

@@ -13,15 +13,18 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 
 namespace aeronc::kinematics {
 
 namespace {
 
 struct Frame {
-    Mat3 r = Mat3::Identity();  // plane -> workpiece
-    double a = 0, b = 0;         // degrees: about X, then about the new Y
+    Mat3 r = Mat3::Identity();    // plane -> workpiece
+    Vec3 origin = Vec3::Zero();  // the plane's zero in the workpiece (CYCLE800 _X0 _Y0 _Z0)
+    double a = 0, b = 0;          // degrees: about X, then about the new Y
     bool identity = true;
+    Vec3 local(const Vec3& p) const { return r.transpose() * (p - origin); }
 };
 
 Frame frameFor(const Vec3& u) {
@@ -135,24 +138,40 @@ private:
         smoothingOn_ = on;
     }
 
-    void enterSegment(int index) {
+    // The value a length has once written with the program's precision.
+    double written(double v) const {
+        std::string t;
+        appendNumber(t, v, o_.precision);
+        return std::strtod(t.c_str(), nullptr);
+    }
+
+    void enterSegment(int index, const PlannedStep& first) {
         const Segment& seg = plan_.segments[index];
         leaveSegment();
         active_ = index;
         if (seg.mode == SegmentMode::Plane) {
             frame_ = frameFor(seg.axis);
+            // A tilted plane turns about its first point, so that the coordinates in it stay
+            // local and small; the 3-axis plane keeps the workpiece zero.
+            if (!frame_.identity)
+                frame_.origin = Vec3(written(first.pose.tip.x()), written(first.pose.tip.y()), written(first.pose.tip.z()));
             int dir = 1;
             const int ref = m_.directionReference;
             if (seg.otherRotary && seg.rotary[ref] < (*seg.otherRotary)[ref]) dir = -1;
             if (o_.comments) {
-                std::string c = frame_.identity ? "3-axis plane, " : "3+2 plane, ";
-                c += "tool axis ";
-                for (int k = 0; k < 3; ++k) appendNumber(c += k ? "," : "(", seg.axis[k], 4);
-                c += ") = ";
-                for (int k = 0; k < 2; ++k) appendNumber(c += (k ? " " : "") + m_.rotary[k].name, seg.rotary[k], o_.anglePrecision);
-                w_.comment(c);
+                if (frame_.identity) {
+                    w_.comment("3-axis plane");
+                } else {
+                    std::string c = "3+2 plane, tool axis ";
+                    for (int k = 0; k < 3; ++k) appendNumber(c += k ? "," : "(", seg.axis[k], 4);
+                    c += ") = ";
+                    for (int k = 0; k < 2; ++k)
+                        appendNumber(c += (k ? " " : "") + m_.rotary[k].name, seg.rotary[k], o_.anglePrecision);
+                    w_.comment(c);
+                }
             }
-            std::string call = "CYCLE800(1,\"" + m_.swivelDataRecord + "\",0,57,0,0,0,";
+            std::string call = "CYCLE800(1,\"" + m_.swivelDataRecord + "\",0,57,";
+            for (int k = 0; k < 3; ++k) appendNumber(call, frame_.origin[k], o_.precision), call += ',';
             appendNumber(call, frame_.a, o_.anglePrecision);
             call += ',';
             appendNumber(call, frame_.b, o_.anglePrecision);
@@ -272,12 +291,12 @@ private:
     }
 
     void move(const PlannedStep& s) {
-        if (s.segment != active_) enterSegment(s.segment);
+        if (s.segment != active_) enterSegment(s.segment, s);
         const Segment& seg = plan_.segments[s.segment];
         if (seg.mode == SegmentMode::Plane) {
             if (!s.tipKnown() && !frame_.identity)
                 throw kinematicsError("a move that gives only some of X, Y, Z cannot be written in a swivelled plane");
-            const Vec3 p = frame_.r.transpose() * s.pose.tip;
+            const Vec3 p = frame_.local(s.pose.tip);
             feedMode(s);
             motionWord(s.motion);
             xyz(p, s.known);
@@ -319,11 +338,11 @@ private:
     }
 
     void cycle(const PlannedStep& s, const ClRecord& r) {
-        if (s.segment != active_) enterSegment(s.segment);
+        if (s.segment != active_) enterSegment(s.segment, s);
         const Vec3 u = s.pose.axis;
-        const double dp = (frame_.r.transpose() * s.pose.tip).z();
-        const double rfp = (frame_.r.transpose() * (s.pose.tip + r.retract * u)).z();
-        const double rtp = (frame_.r.transpose() * (s.pose.tip + r.clearance * u)).z();
+        const double dp = frame_.local(s.pose.tip).z();
+        const double rfp = frame_.local(s.pose.tip + r.retract * u).z();
+        const double rtp = frame_.local(s.pose.tip + r.clearance * u).z();
         if (inverse_) w_.word("G94"), f_.forget();
         inverse_ = false;
         w_.modal("F", r.feed, std::min(o_.precision, 3), f_);

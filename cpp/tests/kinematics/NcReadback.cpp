@@ -86,6 +86,7 @@ std::vector<Pose> readSinumerik(const std::string& text, const Kinematics& kin, 
     const auto& m = kin.model();
     std::vector<Pose> out;
     Mat3 frame = Mat3::Identity();
+    Vec3 origin = Vec3::Zero();  // CYCLE800 _X0 _Y0 _Z0: the point the plane turns about
     bool traori = false, inverse = false;
     double p[3] = {0, 0, 0};
     bool known[3] = {false, false, false};
@@ -111,9 +112,12 @@ std::vector<Pose> readSinumerik(const std::string& text, const Kinematics& kin, 
             const auto a = callArgs(l, n);
             if (a.empty()) {
                 frame = Mat3::Identity();
+                origin = Vec3::Zero();
             } else {
                 if (a.size() != 16 || num(a[3], n) != 57) fail(n, "CYCLE800 form not understood");
                 frame = rx(num(a[7], n)) * ry(num(a[8], n)) * rz(num(a[9], n));
+                origin = Vec3(num(a[4], n), num(a[5], n), num(a[6], n));
+                if (num(a[10], n) != 0 || num(a[11], n) != 0 || num(a[12], n) != 0) fail(n, "CYCLE800 X1 Y1 Z1 not read");
             }
             known[0] = known[1] = known[2] = false;
             continue;
@@ -125,7 +129,7 @@ std::vector<Pose> readSinumerik(const std::string& text, const Kinematics& kin, 
             const auto a = callArgs(l, n);
             const double rtp = num(a[0], n), rfp = num(a[1], n), dp = num(a[3], n);
             if (!(rtp >= rfp && rfp > dp)) fail(n, "cycle levels out of order");
-            out.push_back({frame * Vec3(p[0], p[1], dp), frame * Vec3::UnitZ(), Kind::HoleBottom, n});
+            out.push_back({origin + frame * Vec3(p[0], p[1], dp), frame * Vec3::UnitZ(), Kind::HoleBottom, n});
             p[2] = rtp, known[2] = true;
             continue;
         }
@@ -169,13 +173,13 @@ std::vector<Pose> readSinumerik(const std::string& text, const Kinematics& kin, 
         } else {
             if (motion >= 2 && !out.empty()) {
                 // The end must lie on the circle about start + (I, J) in the plane.
-                const Vec3 start = frame.transpose() * out.back().tip;
+                const Vec3 start = frame.transpose() * (out.back().tip - origin);
                 const Vec3 centre(start.x() + ij[0], start.y() + ij[1], 0);
                 const double r0 = std::hypot(start.x() - centre.x(), start.y() - centre.y());
                 const double r1 = std::hypot(p[0] - centre.x(), p[1] - centre.y());
                 if (std::abs(r0 - r1) > 1e-6 + 1e-9 * r0) fail(n, "arc end off its circle");
             }
-            pose.tip = frame * Vec3(p[0], p[1], p[2]);
+            pose.tip = origin + frame * Vec3(p[0], p[1], p[2]);
             pose.axis = frame * Vec3::UnitZ();
         }
         out.push_back(pose);
