@@ -76,15 +76,17 @@ def bevel_commands(shape, feed):
     return cmds
 
 
-def hole_commands(holes, feed):
-    """Each hole drilled along its own axis: rapid above it, then G81 (or G83 when deep)."""
+def hole_commands(holes, feed, top_z):
+    """Each hole drilled along its own axis: rapid to 10 mm above the part on the hole axis,
+    then G81 (or G83 when deep), returning there (G98) before the next hole."""
     from aeronc.post.orientation import oriented_command
     import Path
-    cmds = [Path.Command("G99")]
+    cmds = [Path.Command("G98")]
     for h in holes:
         u, top, depth, d = h["axis"], h["location"], h["depth"], h["diameter"]
         bottom = [t - (depth + 1.0) * a for t, a in zip(top, u)]  # through, 1 mm beyond
-        above = [t + 10.0 * a for t, a in zip(top, u)]
+        lift = (top_z + 10.0 - top[2]) / u[2] if u[2] > 0.5 else 10.0  # clear of the whole part
+        above = [t + lift * a for t, a in zip(top, u)]
         cmds.append(oriented_command("G0", {"X": above[0], "Y": above[1], "Z": above[2]}, u))
         p = {"X": bottom[0], "Y": bottom[1], "Z": bottom[2], "R": bottom[2] + depth + 1.0 + 3.0, "F": feed}
         if depth > 3 * d:
@@ -135,7 +137,7 @@ def build_job(doc, part):
     result = recognition.recognise(part, directions=[(0, 0, 1)])
     holes = sorted((e["hole"] for e in result["elements"] if e.get("hole") and abs(e["hole"]["diameter"] - 6.6) < 1e-6),
                    key=lambda h: (h["location"][1], h["location"][0]))
-    _add_op(doc, job, "Holes", hole_commands(holes, drill.VertFeed.Value), drill)
+    _add_op(doc, job, "Holes", hole_commands(holes, drill.VertFeed.Value, _box(shape)[5]), drill)
     doc.recompute()
     return job, holes
 

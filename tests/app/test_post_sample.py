@@ -22,7 +22,7 @@ from aeronc.tests.app import post_support as ps
 def expected_poses(job):
     """(tip, axis) of every move and hole bottom of the Job's operations, as FreeCAD stores
     them, once every coordinate is known (the post's convention: axis modal, +Z per operation)."""
-    poses, pos = [], {}
+    poses, pos, before = [], {}, {}
     for op in job.Operations.Group:
         axis = (0.0, 0.0, 1.0)
         for c in op.Path.Commands:
@@ -35,8 +35,8 @@ def expected_poses(job):
                 if len(pos) == 3 and (not poses or poses[-1] != pose):  # a repeated pose is one stop
                     poses.append(pose)
                 if c.Name.startswith("G8") or c.Name == "G73":
-                    ret = p["R"] - p["Z"]  # G99: the cycle leaves the tool at R
-                    pos = {k: pos[k] + ret * a for k, a in zip("XYZ", axis)}
+                    pos = dict(before)  # G98: the cycle returns to where it started
+            before = dict(pos)
     return poses
 
 
