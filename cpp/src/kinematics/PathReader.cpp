@@ -16,6 +16,41 @@ namespace {
 
 constexpr double kNotANumberInPath = 922337203685.0;
 
+// Parses a decimal number as FreeCAD writes it ("-12.345678"): the digits as an integer, then
+// one division by a power of ten. Exact integers below 2^53 divided by an exact power of ten
+// give the correctly rounded double, as from_chars would; anything else (exponents, NaN,
+// long mantissas) goes to from_chars.
+std::from_chars_result parseNumber(const char* first, const char* last, double& value) {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
+                                        1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
+    const char* p = first;
+    const bool negative = p < last && *p == '-';
+    if (negative || (p < last && *p == '+')) ++p;
+    unsigned long long mantissa = 0;
+    int digits = 0, decimals = 0;
+    bool point = false;
+    for (; p < last; ++p) {
+        const char c = *p;
+        if (c >= '0' && c <= '9') {
+            mantissa = mantissa * 10 + static_cast<unsigned>(c - '0');
+            ++digits;
+            decimals += point;
+        } else if (c == '.' && !point) {
+            point = true;
+        } else {
+            break;
+        }
+    }
+    const bool stop = p == last || *p == ' ' || *p == '\t' || *p == '\r';
+    if (digits == 0 || digits > 15 || decimals > 18 || !stop) {
+        const char* b = first + (first < last && *first == '+');
+        return std::from_chars(b, last, value);
+    }
+    value = static_cast<double>(mantissa) / kPow10[decimals];
+    if (negative) value = -value;
+    return {p, std::errc()};
+}
+
 // The words of one command line: a letter and a number each (FreeCAD writes "G1 F10.000000 X1.000000").
 struct Command {
     char letter = 0;       // 'G', 'M', or 0 for a comment
@@ -130,7 +165,7 @@ private:
             if (letter < 'A' || letter > 'Z') fail(number, line, std::string("cannot read '") + line[i] + "'");
             ++i;
             double v = 0;
-            const auto res = std::from_chars(line.data() + i, line.data() + line.size(), v);
+            const auto res = parseNumber(line.data() + i, line.data() + line.size(), v);
             if (res.ec != std::errc())
                 fail(number, line, std::string("parameter ") + letter + " has no number (a parameter name must be one letter)");
             i = res.ptr - line.data();

@@ -11,7 +11,9 @@ namespace {
 
 constexpr double kSameAxis = 1e-9;  // rad: tool axes closer than this are the same axis
 
-double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+// Same axis (unit vectors) within kSameAxis, without the arctangent: this runs for every move.
+bool sameAxis(const Vec3& a, const Vec3& b) { return a.dot(b) > 0 && a.cross(b).squaredNorm() <= kSameAxis * kSameAxis; }
 
 std::string describe(const ClRecord& r) {
     char b[160];
@@ -74,7 +76,7 @@ private:
         for (const auto& r : prog_.records) {
             if (r.op != op) op = r.op, have = false;
             if (r.kind != ClKind::Move && r.kind != ClKind::Cycle) continue;
-            if (r.kind == ClKind::Move && r.motion != Motion::Rapid && have && angleBetween(r.axis, last) > kSameAxis)
+            if (r.kind == ClKind::Move && r.motion != Motion::Rapid && have && !sameAxis(r.axis, last))
                 simultaneous_[r.op + 1] = 1;
             last = r.axis;
             have = true;
@@ -84,7 +86,7 @@ private:
     int segmentFor(int op, SegmentMode mode, const Vec3& axis, const RotaryChoice& choice) {
         if (current_ >= 0) {
             const Segment& s = plan_.segments[current_];
-            if (s.op == op && s.mode == mode && (mode == SegmentMode::Simultaneous || angleBetween(s.axis, axis) <= kSameAxis))
+            if (s.op == op && s.mode == mode && (mode == SegmentMode::Simultaneous || sameAxis(s.axis, axis)))
                 return current_;
         }
         Segment s;
@@ -250,7 +252,7 @@ private:
         const RotaryChoice choice = choose(r.axis, false);
         const int seg = segmentFor(r.op, SegmentMode::Plane, r.axis, choice);
         const Vec3 approach = r.tip + r.clearance * r.axis;
-        if (!tipKnown() || (tip_ - approach).norm() > 1e-6 || angleBetween(axis_, r.axis) > kSameAxis)
+        if (!tipKnown() || (tip_ - approach).norm() > 1e-6 || !sameAxis(axis_, r.axis))
             advance(step(index, ClKind::Move, MoveOrigin::CycleApproach, Motion::Rapid, approach, r.axis, choice.angles, seg));
         PlannedStep s = step(index, ClKind::Cycle, MoveOrigin::Input, Motion::Linear, r.tip, r.axis, choice.angles, seg);
         s.feed = r.feed;
