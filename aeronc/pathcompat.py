@@ -132,3 +132,52 @@ def job_post_objects(job):
 def op_property(op, name):
     """A property of an operation, or of the operation a dressup is based on (None if absent)."""
     return _path_util().opProperty(op, name)
+
+
+def post_processor(name):
+    """Load a post by its dropdown name the way the Job's Post command does; the result has
+    export(objects, filename, argstring) and tooltip."""
+    try:
+        from Path.Post.Processor import PostProcessorFactory  # FreeCAD 1.x
+        return PostProcessorFactory.get_post_processor(None, name)
+    except ImportError:
+        from PathScripts.PathPostProcessor import PostProcessor  # FreeCAD 0.20
+        return PostProcessor.load(name)
+
+
+def available_posts():
+    """Names in the Job's post-processor dropdown (every *_post.py on the post search path)."""
+    try:
+        from Path import Preferences  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathPreferences as Preferences  # FreeCAD 0.20
+    return Preferences.allAvailablePostProcessors()
+
+
+def builtin_post(name):
+    """One of the posts FreeCAD ships, as a module (e.g. "linuxcnc")."""
+    import importlib
+    try:
+        return importlib.import_module("Path.Post.scripts.{}_post".format(name))  # FreeCAD 1.x
+    except ImportError:
+        return importlib.import_module("PathScripts.post.{}_post".format(name))  # FreeCAD 0.20
+
+
+def create_profile(name="Profile"):
+    """FreeCAD's Profile operation in the active document's Job (headless)."""
+    try:
+        from Path.Op import Profile  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathProfile as Profile  # FreeCAD 0.20
+    return Profile.Create(name)
+
+
+def add_tool_controller(job, label, number):
+    """A new tool controller (FreeCAD's default tool bit) in the Job."""
+    try:
+        from Path.Tool import Controller  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathToolController as Controller  # FreeCAD 0.20
+    tc = Controller.Create(label, toolNumber=number)
+    job.Proxy.addToolController(tc)
+    return tc

@@ -113,7 +113,6 @@ def _add_op(doc, job, label, commands, tc):
 def build_job(doc, part):
     """The sample Job on `part`; returns (job, recognised 6.6 mm holes)."""
     from aeronc import pathcompat, recognition
-    from PathScripts import PathProfile, PathToolController
 
     job = pathcompat.create_job(doc, [part])
     doc.recompute()
@@ -121,14 +120,13 @@ def build_job(doc, part):
     mill.Label = "TC: 5 mm end mill"
     mill.HorizFeed, mill.VertFeed, mill.SpindleSpeed = "1500 mm/min", "400 mm/min", 12000
     # FreeCAD 0.20 asks which tool to use (a dialog) when a Job has several: profile first.
-    profile = PathProfile.Create("Profile")
+    profile = pathcompat.create_profile("Profile")
     profile.ToolController = mill
     doc.recompute()
-    drill = PathToolController.Create("TC: 6.6 mm drill", toolNumber=2)
+    drill = pathcompat.add_tool_controller(job, "TC: 6.6 mm drill", 2)
     drill.Tool.Diameter = 6.6
     drill.Tool.Label = "Drill 6.6"
     drill.HorizFeed, drill.VertFeed, drill.SpindleSpeed = "300 mm/min", "300 mm/min", 4000
-    job.Proxy.addToolController(drill)
 
     shape = part.Shape
     feed = mill.HorizFeed.Value  # mm/s, FreeCAD's unit

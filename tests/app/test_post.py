@@ -23,8 +23,7 @@ EXACT = "--precision 9 --angle-precision 10"
 
 
 def _load(name):
-    from PathScripts.PathPostProcessor import PostProcessor  # FreeCAD's own loader, as the Job uses
-    return PostProcessor.load(name)
+    return pathcompat.post_processor(name)  # FreeCAD's own loader, as the Job uses
 
 
 class PostTest(unittest.TestCase):
@@ -53,8 +52,7 @@ class PostTest(unittest.TestCase):
 
     # -- listing -------------------------------------------------------------------------
     def test_posts_are_listed_in_the_job_dropdown_and_load(self):
-        from PathScripts import PathPreferences
-        posts = PathPreferences.allAvailablePostProcessors()
+        posts = pathcompat.available_posts()
         for name in ("aeronc_840d", "aeronc_linuxcnc", "aeronc_apt"):
             self.assertIn(name, posts)
             self.assertTrue(_load(name).tooltip)
@@ -132,9 +130,8 @@ class PostTest(unittest.TestCase):
         self.assertEqual(self.post("aeronc_840d", ""), before)
 
     def test_freecad_profile_posts_where_freecads_linuxcnc_post_puts_it(self):
-        from PathScripts import PathProfile
-        from PathScripts.post import linuxcnc_post
-        PathProfile.Create("Profile")
+        linuxcnc_post = pathcompat.builtin_post("linuxcnc")
+        pathcompat.create_profile("Profile")
         self.doc.recompute()
         ours = self.post("aeronc_linuxcnc", "--no-inverse-time")
         theirs = linuxcnc_post.export(pathcompat.job_post_objects(self.job), "-", "--no-show-editor")

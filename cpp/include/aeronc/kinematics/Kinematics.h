@@ -30,6 +30,7 @@ struct RotarySolution {
     std::array<bool, 2> free{false, false};
 };
 
+// Not for use from several threads at once: it keeps the last table rotations it computed.
 class Kinematics {
 public:
     explicit Kinematics(MachineModel model, const MachineSetup& setup = {});
