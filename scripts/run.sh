@@ -4,6 +4,7 @@
 # into build/stage/AeroNC.
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
+#   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
@@ -35,6 +36,11 @@ case "${1:-}" in
     mkdir -p "$out"
     HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/demo.py"
     ;;
+  post)
+    out=$ROOT/out/post
+    mkdir -p "$out"
+    HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/post/sample.py"
+    ;;
   test)
     ctest --test-dir "$BUILD" --output-on-failure
     ;;
@@ -45,7 +51,7 @@ case "${1:-}" in
     cmake --install "$BUILD"
     ;;
   *)
-    echo "usage: scripts/run.sh demo|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|post|test|bench|install" >&2
     exit 2
     ;;
 esac

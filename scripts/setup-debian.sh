@@ -11,6 +11,7 @@ PKGS=(
   libsqlite3-dev sqlite3 libgtest-dev googletest nlohmann-json3-dev
   qtbase5-dev python3-pyside2.qtcore python3-pyside2.qtgui python3-pyside2.qtwidgets
   xvfb xauth python3-pytest python3-numpy python3-matplotlib
+  linuxcnc-uspace
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -21,6 +21,7 @@
 namespace py = pybind11;
 using namespace aeronc;
 using aeronc::python::guarded;
+void bindKinematics(py::module_& m);  // kinematics_bindings.cpp: 5-axis kinematics and posts
 
 namespace {
 
@@ -147,4 +148,5 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindKinematics(m);
 }

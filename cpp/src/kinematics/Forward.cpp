@@ -29,10 +29,15 @@ Kinematics::Kinematics(MachineModel model, const MachineSetup& setup) : model_(s
 }
 
 Vec3 Kinematics::applyTable(const Vec3& p, const std::array<double, 2>& rotary) const {
+    // Posts call this for every move, mostly at the angles of the move before: keep the rotations.
+    if (rotary != cachedAngles_) {
+        for (int i = 0; i < 2; ++i) cachedRotation_[i] = rotation(model_.rotary[i].direction, rotary[i]);
+        cachedAngles_ = rotary;
+    }
     Vec3 x = p;
     for (auto it = tableAxes_.rbegin(); it != tableAxes_.rend(); ++it) {
         const int i = *it;
-        x = points_[i] + rotation(model_.rotary[i].direction, rotary[i]) * (x - points_[i]);
+        x = points_[i] + cachedRotation_[i] * (x - points_[i]);
     }
     return x;
 }

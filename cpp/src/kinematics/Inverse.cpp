@@ -45,7 +45,8 @@ std::vector<RotarySolution> Kinematics::orientations(const Vec3& axisIn, const s
     const Vec3& w2 = model_.rotary[j2].direction;
     const double keep1 = toRadians(keep[j1]) * s1, keep2 = toRadians(keep[j2]);
 
-    std::vector<std::array<double, 2>> thetas;  // (th1, th2) in rad
+    std::array<std::array<double, 2>, 2> thetas;  // (th1, th2) in rad
+    int count = 0;
     std::array<bool, 2> freeFlag{false, false};
     const bool free2 = w2.cross(p).norm() < kPoleTolerance;
     const bool free1 = w1.cross(q).norm() < kPoleTolerance;
@@ -64,7 +65,7 @@ std::vector<RotarySolution> Kinematics::orientations(const Vec3& axisIn, const s
             return {};
         }
         freeFlag[0] = free1, freeFlag[1] = free2;
-        thetas.push_back({th1, th2});
+        thetas[count++] = {th1, th2};
     } else {
         const double c = w1.dot(w2);
         const double den = c * c - 1.0;  // non-zero: the axes are not parallel
@@ -80,11 +81,13 @@ std::vector<RotarySolution> Kinematics::orientations(const Vec3& axisIn, const s
             bool fa = false, fb = false;
             const double th2 = rotationAbout(w2, p, z, fb);
             const double th1 = rotationAbout(w1, z, q, fa);
-            thetas.push_back({th1, th2});
+            thetas[count++] = {th1, th2};
         }
     }
     std::vector<RotarySolution> out;
-    for (const auto& th : thetas) {
+    out.reserve(count);
+    for (int k = 0; k < count; ++k) {
+        const auto& th = thetas[k];
         RotarySolution s;
         s.angles[j1] = wrap180(toDegrees(s1 * th[0]));
         s.angles[j2] = wrap180(toDegrees(th[1]));

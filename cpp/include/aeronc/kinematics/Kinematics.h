@@ -30,6 +30,7 @@ struct RotarySolution {
     std::array<bool, 2> free{false, false};
 };
 
+// Not for use from several threads at once: it keeps the last table rotations it computed.
 class Kinematics {
 public:
     explicit Kinematics(MachineModel model, const MachineSetup& setup = {});
@@ -60,6 +61,8 @@ private:
     std::array<Vec3, 2> points_;  // effective axis points for this setup
     std::vector<int> tableAxes_;  // indices, outer first
     std::vector<int> headAxes_;   // indices, outer first
+    mutable std::array<double, 2> cachedAngles_{std::nan(""), std::nan("")};
+    mutable std::array<Mat3, 2> cachedRotation_;
 };
 
 // Pole tolerance: |sin| of the angle between the tool axis and a rotary axis below which the

@@ -1,0 +1,81 @@
+"""FreeCAD objects -> the sections the C++ core posts.
+
+A post receives what FreeCAD's Post command builds from a Job: work-offset objects (G54 and
+a clearance move), tool controllers, operations (dressups and compounds included). A Job
+itself in the list is expanded the same way. Every Path is handed over as its G-code text
+(Path.toGCode(), the form FreeCAD saves), so the per-move work happens in C++."""
+from aeronc import pathcompat
+from aeronc.post import PostError
+
+
+def _quantity(v):
+    return float(getattr(v, "Value", v) or 0.0)
+
+
+def _tool_section(tc):
+    tool = getattr(tc, "Tool", None)
+    name = getattr(tool, "Label", None) or tc.Label
+    direction = getattr(tc, "SpindleDir", "Forward")
+    return {
+        "kind": "tool",
+        "label": tc.Label,
+        "tool": {
+            "number": int(tc.ToolNumber),
+            "name": name,
+            "diameter": _quantity(getattr(tool, "Diameter", 0.0)),
+            "corner_radius": _quantity(getattr(tool, "CornerRadius", 0.0)),
+            "length": _quantity(getattr(tool, "Length", 0.0)),
+        },
+        "rpm": float(tc.SpindleSpeed),
+        "spindle_dir": {"Forward": 1, "Reverse": -1}.get(direction, 0),
+    }
+
+
+def _expand(objects):
+    for obj in objects:
+        if pathcompat.is_job(obj):
+            yield from pathcompat.job_post_objects(obj)
+        else:
+            yield obj
+
+
+def _has(obj, name):
+    """Whether obj has a property, without reading it (reading a Path copies every command)."""
+    props = getattr(obj, "PropertiesList", None)
+    return name in props if props is not None else hasattr(obj, name)
+
+
+def _operations(obj):
+    """An operation, or the operations inside a compound (FreeCAD's posts walk Group the same way)."""
+    if _has(obj, "Group"):
+        for child in obj.Group:
+            yield from _operations(child)
+    elif _has(obj, "Path"):
+        yield obj
+
+
+def sections_for(objects):
+    """The sections of a post's object list, in order."""
+    sections = []
+    for obj in _expand(objects):
+        if pathcompat.is_tool_controller(obj):
+            sections.append(_tool_section(obj))
+            continue
+        if not hasattr(obj, "TypeId") and getattr(obj, "Name", "") == "Fixture":
+            sections.append({"kind": "offset", "label": obj.Label, "gcode": obj.Path.toGCode()})
+            continue
+        if not _has(obj, "Path") and not _has(obj, "Group"):
+            raise PostError("'{}' is not a Path object; select a Job, operations or tool controllers".format(
+                getattr(obj, "Label", obj)))
+        for op in _operations(obj):
+            if not pathcompat.op_active(op):
+                continue
+            needs = pathcompat.needs_tool_controller(op)
+            sections.append({
+                "kind": "operation",
+                "label": op.Label,
+                "gcode": op.Path.toGCode(),
+                "coolant": str(pathcompat.op_property(op, "CoolantMode") or "None").lower(),
+                "has_tool_controller": (not needs) or pathcompat.tool_controller_of(op) is not None,
+            })
+    return sections

@@ -1,0 +1,29 @@
+#pragma once
+// The posts in one call each: FreeCAD Path objects or an APT file -> NC text, through the
+// same reader -> planner (kinematics) -> dialect formatter chain; and FreeCAD Path -> APT.
+#include <aeronc/kinematics/Apt.h>
+#include <aeronc/kinematics/NcFormat.h>
+#include <aeronc/kinematics/PathReader.h>
+
+namespace aeronc::kinematics {
+
+struct PostSummary {
+    std::string text;
+    size_t lines = 0;
+    size_t moves = 0;          // planned moves, added ones included
+    int branchChanges = 0;     // retract / reposition / re-enter sequences
+    int segments = 0;
+};
+
+// Planner options that follow from the dialect: TRAORI segments of the 840D take no arcs in
+// a tilted plane, so those arcs are linearised.
+PlanOptions planOptionsFor(const NcOptions& nc, PlanOptions plan);
+
+PostSummary postProgram(const ClProgram& program, const MachineModel& machine, const NcOptions& nc, const PlanOptions& plan);
+
+PostSummary postFreeCad(const std::vector<PathSection>& sections, const MachineModel& machine, const NcOptions& nc,
+                        const PlanOptions& plan);
+
+PostSummary postApt(const std::string& aptText, const MachineModel& machine, const NcOptions& nc, const PlanOptions& plan);
+
+}  // namespace aeronc::kinematics

@@ -1,0 +1,91 @@
+#pragma once
+// Block-by-block NC text: optional N numbers, comments in the dialect's form, and modal words
+// that are written only when their formatted value changes.
+#include <aeronc/kinematics/NcFormat.h>
+
+#include <string>
+#include <string_view>
+
+namespace aeronc::kinematics {
+
+std::string formatSinumerik(const Plan& plan, const NcOptions& options);
+std::string formatLinuxCnc(const Plan& plan, const NcOptions& options);
+
+// The last value written for one address; `valid` is false after anything that may have
+// changed the controller's idea of it (a new plane, TRAORI, a tool change).
+struct Modal {
+    std::string last;
+    bool valid = false;
+    void forget() { valid = false; }
+};
+
+class NcWriter {
+public:
+    NcWriter(bool lineNumbers, bool semicolonComments) : numbers_(lineNumbers), semicolon_(semicolonComments) {}
+
+    std::string& text() { return out_; }
+
+    void word(std::string_view w) {
+        if (!block_.empty()) block_ += ' ';
+        block_ += w;
+    }
+    // Writes address+value, or nothing when it equals the last value of `m` (modal words).
+    void modal(std::string_view address, double v, int decimals, Modal& m) {
+        num_.clear();
+        appendNumber(num_, v, decimals);
+        if (m.valid && m.last == num_) return;
+        m.last = num_;
+        m.valid = true;
+        if (!block_.empty()) block_ += ' ';
+        block_ += address;
+        block_ += num_;
+    }
+    // Writes address+value always (non-modal words: I J, inverse-time F).
+    void value(std::string_view address, double v, int decimals) {
+        if (!block_.empty()) block_ += ' ';
+        block_ += address;
+        appendNumber(block_, v, decimals);
+    }
+    bool empty() const { return block_.empty(); }
+    void end() {
+        if (block_.empty()) return;
+        if (numbers_) {
+            out_ += 'N';
+            appendNumber(out_, n_, 0);
+            out_ += ' ';
+            n_ += 10;
+        }
+        out_ += block_;
+        out_ += '\n';
+        block_.clear();
+    }
+    void line(std::string_view block) {
+        word(block);
+        end();
+    }
+    void comment(std::string_view text) {
+        end();
+        if (semicolon_) {
+            out_ += "; ";
+            out_ += text;
+        } else {
+            out_ += '(';
+            for (char c : text) out_ += c == '(' ? '[' : c == ')' ? ']' : c;  // no nesting in LinuxCNC comments
+            out_ += ')';
+        }
+        out_ += '\n';
+    }
+    void raw(std::string_view text) {
+        end();
+        out_ += text;
+        out_ += '\n';
+    }
+
+private:
+    bool numbers_;
+    bool semicolon_;
+    double n_ = 10;
+    std::string out_, block_, num_;
+};
+
+}  // namespace aeronc::kinematics
