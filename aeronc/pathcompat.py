@@ -151,7 +151,13 @@ def tool_controller_in_use(tc):
 
 def default_tool_library_folder():
     """The folder holding FreeCAD's tool folders (Bit, Library, Shape) the user works with."""
-    return _job_module().Create(name, list(models))
+    try:
+        from Path import Preferences  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathPreferences as Preferences  # FreeCAD 0.20
+    import os
+    last = Preferences.lastPathToolLibrary()
+    return os.path.dirname(last) if last else ""
 
 
 # --- Posts ---------------------------------------------------------------------------------
@@ -253,9 +259,6 @@ def available_posts():
         from Path import Preferences  # FreeCAD 1.x
     except ImportError:
         from PathScripts import PathPreferences as Preferences  # FreeCAD 0.20
-    import os
-    last = Preferences.lastPathToolLibrary()
-    return os.path.dirname(last) if last else ""
     return Preferences.allAvailablePostProcessors()
 
 
