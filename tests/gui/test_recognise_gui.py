@@ -8,7 +8,6 @@ and ends FreeCAD with exit code 0 when all checks pass, 1 otherwise.
 """
 import os
 import sys
-import traceback
 
 import FreeCAD
 import FreeCADGui as Gui
@@ -21,10 +20,9 @@ if _mod and os.path.isdir(os.path.join(_mod, "aeronc")) and _mod not in sys.path
     sys.path.insert(0, _mod)
 
 from PySide import QtCore, QtGui  # noqa: E402
+from aeronc.tests.gui.harness import (  # noqa: E402
+    ARTIFACTS, aeronc_objects, check, click_ok, main, pump, tree_context_menu, tree_labels, window_shot)
 
-ARTIFACTS = os.environ.get("AERONC_ARTIFACTS", "/tmp")
-TIMEOUT_S = 300
-results = []
 
 
 HEADLESS_SCRIPT = """
@@ -40,74 +38,6 @@ objects.create_machining_features(doc, part, directions=[(0, 0, 1)])
 doc.saveAs({path!r})
 os._exit(0)
 """
-
-
-def _watchdog():
-    # A modal dialog nobody closes would hang the test; Qt timers still fire inside it.
-    print("TIMEOUT after {} s\n{} passed, {} failed".format(TIMEOUT_S, sum(results), len(results) - sum(results) + 1))
-    sys.stdout.flush()
-    os._exit(1)
-
-
-QtCore.QTimer.singleShot(TIMEOUT_S * 1000, _watchdog)
-
-
-def check(name, cond, detail=""):
-    results.append(bool(cond))
-    print("{} {}{}".format("PASS" if cond else "FAIL", name, "" if cond else ": {}".format(detail)))
-    sys.stdout.flush()
-
-
-def pump(seconds=0.2):
-    """Let Qt deliver events and timers for a while (the script runs outside the event loop)."""
-    timer = QtCore.QElapsedTimer()
-    timer.start()
-    while timer.elapsed() < seconds * 1000:
-        QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
-
-
-def aeronc_objects(doc):
-    from aeronc.objects import proxy_type
-    return [o for o in doc.Objects if (proxy_type(o) or "").startswith("AeroNC::")]
-
-
-def tree_labels():
-    labels = set()
-    for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
-        it = QtGui.QTreeWidgetItemIterator(tree)
-        while it.value():
-            labels.add(it.value().text(0))
-            it += 1
-    return labels
-
-
-def tree_context_menu():
-    """Texts of the tree view's real context menu (opened by an event, closed by a timer)."""
-    found = []
-
-    def grab():
-        popup = QtGui.QApplication.activePopupWidget()
-        if popup is None:
-            QtCore.QTimer.singleShot(50, grab)
-            return
-        found.extend(a.text() for a in popup.actions())
-        popup.close()
-    tree = next(t for t in Gui.getMainWindow().findChildren(QtGui.QTreeWidget) if t.isVisible())
-    QtCore.QTimer.singleShot(100, grab)
-    event = QtGui.QContextMenuEvent(QtGui.QContextMenuEvent.Mouse, QtCore.QPoint(20, 20))
-    QtGui.QApplication.sendEvent(tree.viewport(), event)  # runs the menu until grab closes it
-    return found
-
-
-def click_ok(which=QtGui.QDialogButtonBox.Ok):
-    """Press OK (or which) of the task dialog the way a user does (the task panel's accept
-    or reject path)."""
-    for box in Gui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
-        button = box.button(which)
-        if button is not None and button.isVisible() and button.isEnabled():
-            button.click()
-            return True
-    return False
 
 
 def cancel_progress():
@@ -262,21 +192,8 @@ def run():
     # What a person sees: the tree opened on the machining-domain tree, an element selected.
     for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
         tree_view.expandAll()
-    pump(0.5)
-    window = os.path.join(ARTIFACTS, "aeronc_main_window.png")
-    mw = Gui.getMainWindow()
-    shot_all = mw.grab()
-    # A window grab leaves the OpenGL view blank under Xvfb: paint the view's own image in.
-    subs = [w for w in mw.findChild(QtGui.QMdiArea).subWindowList() if doc.Name in w.windowTitle()]
-    view_widget = subs[-1].widget()
-    view_png = os.path.join(ARTIFACTS, "aeronc_view.png")
-    Gui.activeDocument().activeView().saveImage(view_png, view_widget.width(), view_widget.height(), "Current")
-    painter = QtGui.QPainter(shot_all)
-    painter.drawImage(view_widget.mapTo(mw, QtCore.QPoint(0, 0)), QtGui.QImage(view_png))
-    painter.end()
-    shot_all.save(window)
+    window = window_shot(doc, "aeronc_main_window")
     check("main window screenshot saved", os.path.getsize(window) > 20000, window)
-    print("screenshot:", window)
     Gui.Selection.clearSelection()
 
     # double-click: the panel edits the group; OK recognises again into it
@@ -375,12 +292,4 @@ def run():
     FreeCAD.closeDocument(doc.Name)
 
 
-try:
-    run()
-except Exception:
-    traceback.print_exc()
-    results.append(False)
-passed = sum(results)
-print("{} passed, {} failed".format(passed, len(results) - passed))
-sys.stdout.flush()
-os._exit(0 if results and all(results) else 1)
+main(run)

@@ -9,7 +9,6 @@ Prints "N passed, N failed" and exits 0 when all checks pass.
 """
 import os
 import sys
-import traceback
 
 import FreeCAD
 import FreeCADGui as Gui
@@ -21,107 +20,9 @@ _mod = os.environ.get("AERONC_MOD_DIR")
 if _mod and os.path.isdir(os.path.join(_mod, "aeronc")) and _mod not in sys.path:
     sys.path.insert(0, _mod)
 
-from PySide import QtCore, QtGui  # noqa: E402
-
-ARTIFACTS = os.environ.get("AERONC_ARTIFACTS", "/tmp")
-TIMEOUT_S = 300
-results = []
-
-
-def _watchdog():
-    # A modal dialog nobody closes would hang the test; Qt timers still fire inside it.
-    print("TIMEOUT after {} s\n{} passed, {} failed".format(TIMEOUT_S, sum(results), len(results) - sum(results) + 1))
-    sys.stdout.flush()
-    os._exit(1)
-
-
-QtCore.QTimer.singleShot(TIMEOUT_S * 1000, _watchdog)
-
-
-def check(name, cond, detail=""):
-    results.append(bool(cond))
-    print("{} {}{}".format("PASS" if cond else "FAIL", name, "" if cond else ": {}".format(detail)))
-    sys.stdout.flush()
-
-
-def pump(seconds=0.2):
-    """Let Qt deliver events and timers for a while (the script runs outside the event loop)."""
-    timer = QtCore.QElapsedTimer()
-    timer.start()
-    while timer.elapsed() < seconds * 1000:
-        QtGui.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
-
-
-def aeronc_objects(doc):
-    from aeronc.objects import proxy_type
-    return [o for o in doc.Objects if (proxy_type(o) or "").startswith("AeroNC::")]
-
-
-def tree_labels():
-    labels = set()
-    for tree in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
-        it = QtGui.QTreeWidgetItemIterator(tree)
-        while it.value():
-            labels.add(it.value().text(0))
-            it += 1
-    return labels
-
-
-def tree_context_menu():
-    """Texts of the tree view's real context menu (opened by an event, closed by a timer)."""
-    found = []
-
-    def grab():
-        popup = QtGui.QApplication.activePopupWidget()
-        if popup is None:
-            QtCore.QTimer.singleShot(50, grab)
-            return
-        found.extend(a.text() for a in popup.actions())
-        popup.close()
-    tree = next(t for t in Gui.getMainWindow().findChildren(QtGui.QTreeWidget) if t.isVisible())
-    QtCore.QTimer.singleShot(100, grab)
-    event = QtGui.QContextMenuEvent(QtGui.QContextMenuEvent.Mouse, QtCore.QPoint(20, 20))
-    QtGui.QApplication.sendEvent(tree.viewport(), event)  # runs the menu until grab closes it
-    return found
-
-
-def click_ok(which=QtGui.QDialogButtonBox.Ok):
-    """Press OK (or which) of the task dialog the way a user does (the task panel's accept
-    or reject path)."""
-    for box in Gui.getMainWindow().findChildren(QtGui.QDialogButtonBox):
-        button = box.button(which)
-        if button is not None and button.isVisible() and button.isEnabled():
-            button.click()
-            return True
-    return False
-
-
-def cancel_progress():
-    """Press Cancel of the recognition progress dialog (runs from a timer during recognition)."""
-    for dialog in Gui.getMainWindow().findChildren(QtGui.QProgressDialog):
-        if dialog.isVisible():
-            dialog.cancel()
-            return
-    QtCore.QTimer.singleShot(10, cancel_progress)
-
-
-def window_shot(doc, name):
-    """The main window with the 3-D view painted in (a grab leaves it blank under Xvfb)."""
-    mw = Gui.getMainWindow()
-    pump(0.5)
-    shot_all = mw.grab()
-    subs = [w for w in mw.findChild(QtGui.QMdiArea).subWindowList() if doc.Name in w.windowTitle()]
-    if subs:
-        view_widget = subs[-1].widget()
-        view_png = os.path.join(ARTIFACTS, name + "_view.png")
-        Gui.activeDocument().activeView().saveImage(view_png, view_widget.width(), view_widget.height(), "Current")
-        painter = QtGui.QPainter(shot_all)
-        painter.drawImage(view_widget.mapTo(mw, QtCore.QPoint(0, 0)), QtGui.QImage(view_png))
-        painter.end()
-    path = os.path.join(ARTIFACTS, name + ".png")
-    shot_all.save(path)
-    print("screenshot:", path)
-    return path
+from PySide import QtGui  # noqa: E402
+from aeronc.tests.gui.harness import (  # noqa: E402
+    ARTIFACTS, check, click_ok, main, pump, tree_context_menu, window_shot)
 
 
 def run():
@@ -244,12 +145,4 @@ def run():
     FreeCAD.closeDocument(doc.Name)
 
 
-try:
-    run()
-except Exception:
-    traceback.print_exc()
-    results.append(False)
-passed = sum(results)
-print("{} passed, {} failed".format(passed, len(results) - passed))
-sys.stdout.flush()
-os._exit(0 if results and all(results) else 1)
+main(run)

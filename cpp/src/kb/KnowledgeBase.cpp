@@ -2,6 +2,7 @@
 #include <aeronc/kb/KnowledgeBase.h>
 
 #include "Sqlite.h"
+#include "ToolRow.h"
 
 #include <sqlite3.h>
 
@@ -191,19 +192,6 @@ void migrate(sqlite3* db, const std::string& path, int from) {
     t.commit();
 }
 
-Tool toolFromRow(const Statement& s) {
-    Tool t;
-    t.id = s.text(0);
-    t.type = s.text(1);
-    t.material = s.text(2);
-    t.diameter = s.real(3);
-    t.cornerRadius = s.real(4);
-    t.flutes = s.integer(5);
-    t.fluteLength = s.real(6);
-    t.reach = s.real(7);
-    return t;
-}
-
 }  // namespace
 
 void KnowledgeBase::Closer::operator()(sqlite3* db) const { sqlite3_close_v2(db); }
@@ -289,8 +277,7 @@ int KnowledgeBase::schemaVersion() const {
 
 std::vector<Tool> KnowledgeBase::tools() const {
     Statement s(db_.get(), path_,
-                "SELECT id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach "
-                "FROM tool ORDER BY diameter DESC, id");
+                (std::string("SELECT ") + kToolColumns + " FROM tool ORDER BY diameter DESC, id").c_str());
     std::vector<Tool> out;
     while (s.step("reading the tools")) out.push_back(toolFromRow(s));
     return out;

@@ -2,6 +2,7 @@
 #include <aeronc/kb/KnowledgeBase.h>
 
 #include "Sqlite.h"
+#include "ToolRow.h"
 
 #include <algorithm>
 #include <cctype>
@@ -26,21 +27,14 @@ struct StoredTool {
 
 StoredTool storedTool(sqlite3* db, const std::string& path, const std::string& id) {
     Statement s(db, path,
-                "SELECT t.id, t.type, t.tool_material, t.diameter, t.corner_radius, t.flutes, t.flute_length, "
-                "t.reach, t.overall_length, b.file_name, b.document FROM tool t "
-                "LEFT JOIN freecad_tool_bit b ON b.tool_id = t.id WHERE t.id = ?");
+                (std::string("SELECT ") + kToolColumns +
+                 ", overall_length, b.file_name, b.document FROM tool "
+                 "LEFT JOIN freecad_tool_bit b ON b.tool_id = tool.id WHERE tool.id = ?")
+                    .c_str());
     s.bind(1, id);
     if (!s.step("reading a tool")) throw inputError("knowledge base " + quoted(path) + ": unknown tool " + quoted(id));
     StoredTool out;
-    Tool& t = out.tool;
-    t.id = s.text(0);
-    t.type = s.text(1);
-    t.material = s.text(2);
-    t.diameter = s.real(3);
-    t.cornerRadius = s.real(4);
-    t.flutes = s.integer(5);
-    t.fluteLength = s.real(6);
-    t.reach = s.real(7);
+    out.tool = toolFromRow(s);
     out.overallLength = s.optReal(8);
     if (!s.isNull(9)) out.bitFile = s.text(9), out.bitDocument = s.text(10);
     return out;

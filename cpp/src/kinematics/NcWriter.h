@@ -46,6 +46,21 @@ public:
         block_ += address;
         appendNumber(block_, v, decimals);
     }
+    // Spindle and coolant words are the same M codes in both dialects (DIN 66025).
+    void spindle(double rpm, int direction) {
+        if (direction == 0 || rpm <= 0) {
+            line("M5");
+            return;
+        }
+        value("S", rpm, 0);
+        word(direction > 0 ? "M3" : "M4");
+        end();
+    }
+    // Returns whether coolant is now on.
+    bool coolant(const std::string& mode) {
+        line(mode == "flood" ? "M8" : mode == "mist" ? "M7" : "M9");
+        return mode != "off";
+    }
     bool empty() const { return block_.empty(); }
     void end() {
         if (block_.empty()) return;

@@ -260,19 +260,11 @@ private:
                 w_.line(t);
                 return;
             }
-            case ClKind::Spindle: {
-                if (r.spindleDir == 0 || r.rpm <= 0) {
-                    w_.line("M5");
-                    return;
-                }
-                w_.value("S", r.rpm, 0);
-                w_.word(r.spindleDir > 0 ? "M3" : "M4");
-                w_.end();
+            case ClKind::Spindle:
+                w_.spindle(r.rpm, r.spindleDir);
                 return;
-            }
             case ClKind::Coolant:
-                w_.line(r.text == "flood" ? "M8" : r.text == "mist" ? "M7" : "M9");
-                coolant_ = r.text != "off";
+                coolant_ = w_.coolant(r.text);
                 return;
             case ClKind::Dwell:
                 w_.value("G4 F", r.seconds, 3);

@@ -1,0 +1,26 @@
+#pragma once
+// A tool read from the knowledge base: the one place the tool table's columns become a Tool.
+// Internal to cpp/src/kb.
+#include <aeronc/toolselect/Tool.h>
+
+#include "Sqlite.h"
+
+namespace aeronc::kb::detail {
+
+// The columns a query selects first, in this order, for toolFromRow.
+constexpr const char* kToolColumns = "id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach";
+
+inline toolselect::Tool toolFromRow(const Statement& s) {
+    toolselect::Tool t;
+    t.id = s.text(0);
+    t.type = s.text(1);
+    t.material = s.text(2);
+    t.diameter = s.real(3);
+    t.cornerRadius = s.real(4);
+    t.flutes = s.integer(5);
+    t.fluteLength = s.real(6);
+    t.reach = s.real(7);
+    return t;
+}
+
+}  // namespace aeronc::kb::detail
