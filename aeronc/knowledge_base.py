@@ -20,7 +20,7 @@ def user_kb_path():
     return os.path.join(FreeCAD.getUserAppDataDir(), "AeroNC", "knowledge.sqlite")
 
 
-def _sql_folder():
+def sql_folder():
     import aeronc
     return os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
 
@@ -37,7 +37,7 @@ def open_kb(kb_path=None):
     if folder:
         os.makedirs(folder, exist_ok=True)
     try:
-        return _core.KnowledgeBase(path, _sql_folder())
+        return _core.KnowledgeBase(path, sql_folder())
     except RuntimeError as e:
         raise KnowledgeBaseError(str(e))
 
@@ -52,7 +52,7 @@ def select_tools(source, material, directions=None, machine="", kb_path=None, al
     path = kb_path or user_kb_path()
     os.makedirs(os.path.dirname(path), exist_ok=True)
     try:
-        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, _sql_folder(),
+        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, sql_folder(),
                                        [tuple(float(c) for c in d) for d in (directions or [])], machine,
                                        allowance, tuple(blank) if blank else None, linear_tolerance,
                                        angular_tolerance, chord_tolerance, progress)

@@ -121,6 +121,7 @@ def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, hori
     mod = _tool_bit_module()
     with _app_tool_bit_factory():
         bit = mod.Factory.CreateFromAttrs(bit_attrs, "ToolBit")
+    _set_bit_attributes(bit, bit_attrs.get("attribute") or {})
     if FreeCAD.GuiUp:
         try:
             from Path.Base.Gui import IconViewProvider  # FreeCAD 1.x
@@ -134,6 +135,24 @@ def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, hori
     tc.VertFeed = "{} mm/min".format(vert_feed)
     job.Proxy.addToolController(tc)
     return tc
+
+
+def _set_bit_attributes(bit, attributes):
+    """FreeCAD 0.20's CreateFromAttrs drops a bit file's "attribute" section (Flutes, Material,
+    ...): set the ones the bit's shape defines. An enumeration takes its option whatever the case."""
+    for name, value in attributes.items():
+        if name not in bit.PropertiesList:
+            continue
+        if bit.getTypeIdOfProperty(name) == "App::PropertyEnumeration":
+            options = {o.lower(): o for o in bit.getEnumerationsOfProperty(name)}
+            value = options.get(str(value).lower())
+            if value is None:
+                continue
+        try:
+            setattr(bit, name, value)
+        except (TypeError, ValueError) as e:
+            FreeCAD.Console.PrintWarning("AeroNC: tool bit {}: attribute {} = {!r} not set: {}\n".format(
+                bit.Label, name, value, e))
 
 
 def remove_tool_controller(doc, tc):
@@ -289,3 +308,39 @@ def add_tool_controller(job, label, number):
     tc = Controller.Create(label, toolNumber=number)
     job.Proxy.addToolController(tc)
     return tc
+
+
+# --- Operations and their tool controllers ---------------------------------------------------
+
+# Operations that make holes point by point; the milling force and roughness model does not
+# describe them. Class names are the same in FreeCAD 0.20 (PathScripts) and 1.x (Path.Op).
+_HOLE_OPERATIONS = {"ObjectDrilling", "ObjectHelix", "ObjectThreadMilling", "ObjectProbing", "ObjectTapping"}
+
+
+def is_hole_operation(op):
+    """True for drilling, helix, thread milling, tapping and probing (or a dressup of one)."""
+    return any(type(getattr(o, "Proxy", None)).__name__ in _HOLE_OPERATIONS for o in _base_chain(op))
+
+
+def job_of(obj):
+    """The Job a ToolController or operation belongs to, or None."""
+    for o in getattr(obj, "InListRecursive", []):
+        if is_job(o):
+            return o
+    return None
+
+
+def operations_using(job, tc):
+    """The Job's active operations (dressups as listed in the Job) that use ToolController tc."""
+    ops = getattr(job, "Operations", None)
+    return [op for op in (ops.Group if ops is not None else [])
+            if op_active(op) and tool_controller_of(op) is tc]
+
+
+def create_pocket_shape(name="Pocket"):
+    """FreeCAD's Pocket Shape operation in the active document's Job (headless)."""
+    try:
+        from Path.Op import PocketShape  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathPocketShape as PocketShape  # FreeCAD 0.20
+    return PocketShape.Create(name)

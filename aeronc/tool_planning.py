@@ -14,6 +14,7 @@ import FreeCAD
 from aeronc import knowledge_base, pathcompat
 from aeronc.objects import machining_features
 from aeronc.objects.base import add_property, descendants, proxy_type
+from aeronc.objects.transaction import in_transaction
 from aeronc.objects.domain_element import TYPE as ELEMENT_TYPE
 
 TC_TAG = "AeroNCTool"  # property on the ToolControllers this module made: "<tool id>/<operation>"
@@ -138,5 +139,5 @@ def select_tools(group, material, machine="", kb_path=None, job=None, progress=N
         doc.recompute()
         return target, tcs
 
-    target, tcs = machining_features._in_transaction(doc, "Select tools", work)
+    target, tcs = in_transaction(doc, "Select tools", work)
     return plan, target, tcs

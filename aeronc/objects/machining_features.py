@@ -12,6 +12,7 @@ import FreeCAD
 from aeronc import recognition
 from aeronc.objects import domain_element, setup_direction
 from aeronc.objects.base import BaseProxy, add_property, descendants, proxy_type
+from aeronc.objects.transaction import in_transaction
 
 TYPE = "AeroNC::MachiningFeatures"
 COUNTS = [("SetupCount", "setups"), ("ElementCount", "elements"),
@@ -119,26 +120,6 @@ def _store(group, part, result, settings):
     group.Result = json.dumps(result, separators=(",", ":"))
 
 
-def _in_transaction(doc, title, work):
-    """Run work() as one undo step; on failure undo everything it did and re-raise.
-
-    abortTransaction only undoes when the document records undo (freecadcmd documents do
-    not by default), so objects work() created are also removed by hand.
-    """
-    before = set(o.Name for o in doc.Objects)
-    doc.openTransaction(title)
-    try:
-        out = work()
-        doc.commitTransaction()
-        return out
-    except BaseException:
-        doc.abortTransaction()
-        for name in [o.Name for o in doc.Objects if o.Name not in before]:
-            if doc.getObject(name) is not None:
-                doc.removeObject(name)
-        raise
-
-
 def _attach_view(objs):
     if FreeCAD.GuiUp:
         from aeronc import viewproviders
@@ -175,7 +156,7 @@ def create_machining_features(doc, part_obj, directions=None, allowance=0.0, bla
         doc.recompute([group] + made)
         return group
 
-    return _in_transaction(doc, "Recognise machining features", work)
+    return in_transaction(doc, "Recognise machining features", work)
 
 
 def update_machining_features(group, progress=None, report=False, **settings):
@@ -202,7 +183,7 @@ def update_machining_features(group, progress=None, report=False, **settings):
         doc.recompute([group] + made)
         return group
 
-    return _in_transaction(doc, "Recognise machining features again", work)
+    return in_transaction(doc, "Recognise machining features again", work)
 
 
 def remove_machining_features(group):
@@ -216,7 +197,7 @@ def remove_machining_features(group):
         for obj in descendants(group) + [group]:
             doc.removeObject(obj.Name)
 
-    _in_transaction(doc, "Remove machining features", work)
+    in_transaction(doc, "Remove machining features", work)
 
 
 def is_machining_features(obj):

@@ -2,6 +2,7 @@
 // JSON text, like the rest of the module; every C++ exception becomes the module's error.
 #include <aeronc/core/Error.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/optimise/ObjectiveMap.h>
 #include <aeronc/optimise/Report.h>
 
 #include <nlohmann/json.hpp>
@@ -37,7 +38,7 @@ void bindOptimise(py::module_& m) {
     m.def(
         "optimise_cutting",
         [](const std::string& paramsJson, const std::string& method, unsigned long long seed, const std::string& kbPath,
-           const std::string& sqlFolder) {
+           const std::string& sqlFolder, int mapPoints) {
             return guardedOptimise([&] {
                 std::string text, json;
                 {
@@ -57,14 +58,23 @@ void bindOptimise(py::module_& m) {
                     const auto c = aeronc::optimise::compare(aeronc::optimise::parseParameters(params),
                                                              aeronc::optimise::parseMethod(method), ga);
                     text = aeronc::optimise::toText(c);
-                    json = aeronc::optimise::toJson(c).dump();
+                    auto out = aeronc::optimise::toJson(c);
+                    out["parameters"] = params;  // as solved, after the knowledge base filled it in
+                    if (mapPoints > 0) {
+                        aeronc::optimise::MapBox box;
+                        box.nCount = box.fzCount = mapPoints;
+                        out["map"] = aeronc::optimise::objectiveMap(c.parameters.problem, c.primary(), box);
+                    }
+                    json = out.dump();
                 }
                 return py::make_tuple(text, json);
             });
         },
         py::arg("params_json"), py::arg("method") = std::string("nlopt"), py::arg("seed") = 1ULL,
-        py::arg("kb_path") = std::string(), py::arg("sql_folder") = std::string(),
+        py::arg("kb_path") = std::string(), py::arg("sql_folder") = std::string(), py::arg("map_points") = 0,
         "Optimise spindle speed and feed per tooth for one milling operation. params_json is the parameter "
         "file's text (docs/cutting-optimisation.md); with kb_path its \"kb\" names are looked up there (built "
-        "from sql_folder when missing). method: 'nlopt', 'ga' or 'both'. Returns (report_text, result_json).");
+        "from sql_folder when missing). method: 'nlopt', 'ga' or 'both'. Returns (report_text, result_json); "
+        "the JSON holds the solved \"parameters\", and with map_points > 0 a \"map\" of the combined objective "
+        "over a map_points x map_points log grid of (n, f_z) around the optimum, for plotting.");
 }

@@ -117,3 +117,22 @@ TEST_F(OptimiseParametersTest, BadNamesAreRefused) {
     j.erase("kb");
     EXPECT_NE(errorOf([&] { aeronc::kb::withKnowledgeBase(*kb_, j); }).find("\"kb\" section"), std::string::npos);
 }
+
+TEST_F(OptimiseParametersTest, CuttingDataByDiameterFollowsTheCutter) {
+    // Aluminium roughing data is given by diameter range: a 12 mm and a 32 mm cutter get
+    // different a_p (and baseline f_z), each the row its diameter falls in.
+    nlohmann::json j = {{"kb", {{"workpiece_material", "7050-T7451"}, {"tool_material", "carbide"},
+                                {"operation", "roughing"}, {"machine", "XA5032"}}}};
+    for (double d : {12.0, 32.0}) {
+        j["cutter"] = {{"diameter_mm", d}, {"teeth", 3}, {"corner_radius_mm", 1}};
+        const auto cc = kb_->cuttingCondition("7050-T7451", "carbide", "roughing", d);
+        const auto out = aeronc::kb::withKnowledgeBase(*kb_, j);
+        EXPECT_EQ(out["cut"]["a_p_mm"].get<double>(), cc.ap) << d;
+        EXPECT_EQ(out["baseline"]["f_z_mm"].get<double>(), cc.fz) << d;
+    }
+    EXPECT_NE(kb_->cuttingCondition("7050-T7451", "carbide", "roughing", 12.0).ap,
+              kb_->cuttingCondition("7050-T7451", "carbide", "roughing", 32.0).ap);
+    // Without any diameter, ranged data cannot be chosen, and the message says what is missing.
+    j.erase("cutter");
+    EXPECT_FALSE(errorOf([&] { aeronc::kb::withKnowledgeBase(*kb_, j); }).empty());
+}

@@ -66,6 +66,9 @@ class SelectToolsTest(unittest.TestCase):
             self.assertAlmostEqual(tc.VertFeed.getValueAs("mm/min").Value, cc["fz"] * t["flutes"] * n * ratio,
                                    places=3)
             self.assertAlmostEqual(tc.Tool.Diameter.Value, t["diameter"], places=4)
+            # The bit's attributes are kept too (FreeCAD 0.20's factory drops them).
+            self.assertEqual(tc.Tool.Flutes, t["flutes"])
+            self.assertEqual(tc.Tool.Material.lower(), t["material"].lower())
 
         # Again: the same controllers, updated, not duplicated.
         count = len(pathcompat.tool_controllers(job))

@@ -19,7 +19,8 @@ std::string name(const nlohmann::json& names, const std::string& key, bool requi
 
 }  // namespace
 
-nlohmann::json optimiseParameters(const KnowledgeBase& kb, const nlohmann::json& names) {
+nlohmann::json optimiseParameters(const KnowledgeBase& kb, const nlohmann::json& names,
+                                  std::optional<double> cutterDiameter) {
     if (!names.is_object()) throw inputError("\"kb\" must be an object naming workpiece_material, tool_material, "
                                              "operation and machine");
     for (const auto& [k, v] : names.items())
@@ -40,7 +41,9 @@ nlohmann::json optimiseParameters(const KnowledgeBase& kb, const nlohmann::json&
         throw inputError("kb.tool '" + toolId + "' is " + tool->material + ", not " + toolMaterial);
 
     const std::string workpiece = name(names, "workpiece_material", true), operation = name(names, "operation", true);
-    const CuttingCondition cc = kb.cuttingCondition(workpiece, toolMaterial, operation);
+    // Cutting data may be given by tool diameter: the file's cutter, else the named tool.
+    if (!cutterDiameter && tool) cutterDiameter = tool->diameter;
+    const CuttingCondition cc = kb.cuttingCondition(workpiece, toolMaterial, operation, cutterDiameter);
     const Machine m = kb.machine(name(names, "machine", true));
     const std::string from = "knowledge base: " + workpiece + " / " + toolMaterial + " / " + operation;
 
@@ -82,7 +85,11 @@ nlohmann::json withKnowledgeBase(const KnowledgeBase& kb, const nlohmann::json& 
     if (!params.is_object() || !params.contains("kb"))
         throw inputError("--kb needs a \"kb\" section in the parameter file naming workpiece_material, "
                          "tool_material, operation and machine");
-    nlohmann::json out = optimiseParameters(kb, params.at("kb"));
+    std::optional<double> diameter;
+    if (params.contains("cutter") && params["cutter"].is_object() && params["cutter"].contains("diameter_mm") &&
+        params["cutter"]["diameter_mm"].is_number())
+        diameter = params["cutter"]["diameter_mm"].get<double>();
+    nlohmann::json out = optimiseParameters(kb, params.at("kb"), diameter);
     for (const auto& [k, v] : params.items()) {
         if (v.is_object() && out.contains(k) && out[k].is_object() && k != "baseline") {
             for (const auto& [kk, vv] : v.items()) out[k][kk] = vv;

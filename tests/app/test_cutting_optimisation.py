@@ -1,0 +1,248 @@
+"""Optimise cutting parameters on real Path Jobs, headless: the cut measured from a Pocket
+operation's path, the ToolController written as one undo step and restored by undo, the
+optimum checked against the plotted grid, and bad input leaving every ToolController as it was."""
+import math
+import os
+import shutil
+import tempfile
+import unittest
+
+import FreeCAD
+import Part
+
+from aeronc import cutting_optimisation as co
+from aeronc import knowledge_base, pathcompat, tool_planning
+from aeronc.objects import machining_features
+from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
+
+
+def end_mill(diameter, flutes=3, material="Carbide", corner=None):
+    """A .fctb document of an end mill (bull nose when corner is given)."""
+    params = {"Diameter": "{} mm".format(diameter), "CuttingEdgeHeight": "30 mm", "Length": "60 mm",
+              "ShankDiameter": "{} mm".format(diameter)}
+    shape = "endmill.fcstd"
+    if corner is not None:
+        shape = "bullnose.fcstd"
+        params["FlatRadius"] = "{} mm".format(diameter / 2 - corner)
+    attrs = {}
+    if flutes is not None:
+        attrs["Flutes"] = flutes
+    if material is not None:
+        attrs["Material"] = material
+    return {"version": 2, "name": "{} mm end mill".format(diameter), "shape": shape, "parameter": params,
+            "attribute": attrs}
+
+
+def feeds(tc):
+    return (tc.SpindleSpeed, tc.HorizFeed.getValueAs("mm/min").Value, tc.VertFeed.getValueAs("mm/min").Value)
+
+
+class PocketJobTest(unittest.TestCase):
+    """A 120 x 80 x 30 block with a 60 x 40 x 10 pocket, cleared by FreeCAD's Pocket Shape with
+    a 10 mm three-flute carbide end mill: step-down 3 mm, step-over 50 %."""
+
+    def setUp(self):
+        self.doc = new_document("AeroNCOptimise")
+        self.tmp = tempfile.mkdtemp(prefix="aeronc_opt_")
+        self.kb_path = os.path.join(self.tmp, "kb.sqlite")
+        block = Part.makeBox(120, 80, 30).cut(Part.makeBox(60, 40, 10, FreeCAD.Vector(30, 20, 20)))
+        self.part = self.doc.addObject("Part::Feature", "Block")
+        self.part.Shape = block
+        self.doc.recompute()
+        self.job = pathcompat.create_job(self.doc, [self.part])
+        self.doc.recompute()
+        floor = [i + 1 for i, f in enumerate(block.Faces)
+                 if abs(f.Surface.Axis.z) > 0.99 and abs(f.CenterOfMass.z - 20) < 1e-6]
+        self.assertEqual(len(floor), 1)
+        # Headless, Path's operations cannot choose between several controllers: make the pocket first.
+        self.pocket = pathcompat.create_pocket_shape("Pocket")
+        self.tc = pathcompat.create_tool_controller(self.doc, self.job, "TC: 10 mm end mill", end_mill(10), 2,
+                                                    8000, 1200, 300)
+        self.pocket.ToolController = self.tc
+        model = self.job.Model.Group[0]  # the Job's clone of the block
+        self.pocket.Base = [(model, ["Face{}".format(floor[0])])]
+        self.pocket.setExpression("StepDown", None)  # the setup sheet's default is the tool diameter
+        self.pocket.StepDown = "3 mm"
+        self.pocket.StepOver = 50
+        self.doc.recompute()
+        self.assertTrue(self.pocket.Path.Commands, "the pocket has a path")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def propose(self, target=None, **kw):
+        kw.setdefault("material", "7050-T7451")
+        kw.setdefault("machine", "AC-5AX")
+        return co.propose(target or self.tc, kb_path=self.kb_path, **kw)
+
+    def test_the_cut_is_measured_from_the_pocket_path(self):
+        [p] = self.propose()
+        self.assertEqual(p.error, "")
+        [cut] = p.cuts
+        self.assertIs(cut.op, self.pocket)
+        # Levels 28, 25, 22 and the floor at 20 below the start depth 31 (the stock's top): the
+        # largest step is 3.
+        self.assertAlmostEqual(cut.a_p, 3.0, places=6)
+        self.assertAlmostEqual(cut.a_e, 5.0, places=6)  # 50 % of 10 mm
+        # Every level clears at least the 40 x 20 mm core of the pocket.
+        self.assertEqual(self.pocket.StartDepth.Value, 31.0)
+        self.assertGreater(cut.length, 4 * 2 * (40 + 20))
+        self.assertEqual(p.params["cutter"]["teeth"], 3)
+        self.assertEqual(p.tool_material, "carbide")
+        self.assertEqual(p.operation, "roughing")  # a clearing operation
+        self.assertAlmostEqual(p.params["cutter"]["corner_radius_mm"], 5.0)  # flat end: r = D/2
+
+    def test_optimum_is_feasible_and_no_grid_point_beats_it(self):
+        [p] = self.propose(map_points=81)
+        best = p.optimum
+        self.assertTrue(best["feasible"])
+        for c in best["constraints"]:
+            self.assertLessEqual(c["utilisation"], 1 + 1e-9, c["name"])
+        self.assertTrue(best["active"])
+        m = p.result["map"]
+        feasible = [(v, n, fz) for row, oks, fz in zip(m["objective"], m["feasible"], m["f_z_mm"])
+                    for v, ok, n in zip(row, oks, m["n_rpm"]) if ok]
+        self.assertGreater(len(feasible), 50)
+        self.assertGreaterEqual(min(v for v, _, _ in feasible), best["objective"] * (1 - 1e-3))
+        # What is written is the optimum: n, v_f = f_z Z n, and the plunge at the knowledge base's ratio.
+        kb = knowledge_base.open_kb(self.kb_path)
+        self.assertAlmostEqual(p.horiz_feed, best["f_z_mm"] * 3 * best["n_rpm"], places=6)
+        self.assertAlmostEqual(p.vert_feed, p.horiz_feed * kb.threshold("plunge_feed_ratio"), places=6)
+
+    def test_writes_the_tool_controller_and_undo_restores_it(self):
+        before = feeds(self.tc)
+        [p] = self.propose()
+        self.assertEqual(feeds(self.tc), before, "propose writes nothing")
+        co.apply([p])
+        after = feeds(self.tc)
+        self.assertAlmostEqual(after[0], p.spindle_rpm, places=6)
+        self.assertAlmostEqual(after[1], p.horiz_feed, places=3)
+        self.assertAlmostEqual(after[2], p.vert_feed, places=3)
+        self.assertNotAlmostEqual(after[0], before[0], places=0)
+        self.assertIn("active:", self.tc.CuttingOptimum)
+        # The pocket was recomputed with the new feed (Path's F is in mm/s).
+        fs = {round(c.Parameters["F"], 6) for c in self.pocket.Path.Commands
+              if c.Name in ("G1", "G2", "G3") and "F" in c.Parameters}
+        self.assertIn(round(self.tc.HorizFeed.Value, 6), fs)
+        self.assertEqual(self.doc.UndoNames[0], "Optimise cutting parameters")
+        self.doc.undo()
+        for a, b in zip(feeds(self.tc), before):
+            self.assertAlmostEqual(a, b, places=6)
+        self.doc.redo()
+        self.assertAlmostEqual(feeds(self.tc)[0], p.spindle_rpm, places=6)
+
+    def test_saved_and_reopened(self):
+        co.optimise(self.tc, "7050-T7451", "AC-5AX", kb_path=self.kb_path)
+        written, summary = feeds(self.tc), self.tc.CuttingOptimum
+        path = temp_fcstd("optimised")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        tc = [o for o in self.doc.Objects if pathcompat.is_tool_controller(o) and o.Label == "TC: 10 mm end mill"][0]
+        for a, b in zip(feeds(tc), written):
+            self.assertAlmostEqual(a, b, places=3)
+        self.assertEqual(tc.CuttingOptimum, summary)
+
+    def test_infeasible_names_the_limit_and_writes_nothing(self):
+        before = feeds(self.tc)
+        [p] = self.propose(ra_max={"roughing": 0.0001})
+        self.assertFalse(p.ok)
+        self.assertIn("infeasible", p.error)
+        self.assertIn("roughness", p.error)
+        self.assertIn("raise R_a,max", p.error)
+        with self.assertRaisesRegex(co.CuttingOptimisationError, "nothing to write.*roughness"):
+            co.apply([p])
+        self.assertEqual(feeds(self.tc), before)
+        self.assertFalse(hasattr(self.tc, co.RESULT_PROPERTY))
+
+    def test_missing_teeth_and_material_are_named(self):
+        before = feeds(self.tc)
+        self.tc.Tool.Flutes = 0
+        [p] = self.propose()
+        self.assertRegex(p.error, "no number of teeth; set Flutes")
+        self.tc.Tool.Flutes = 3
+        with self.assertRaisesRegex(co.CuttingOptimisationError, "unknown workpiece material 'unobtainium'"):
+            self.propose(material="unobtainium")
+        with self.assertRaisesRegex(co.CuttingOptimisationError, "no workpiece material"):
+            self.propose(material="")
+        self.assertEqual(feeds(self.tc), before)
+
+    def test_non_physical_tool_is_refused(self):
+        self.tc.Tool.Diameter = 0
+        [p] = self.propose()
+        self.assertRegex(p.error, "no positive Diameter")
+        with self.assertRaises(co.CuttingOptimisationError):
+            co.apply([p])
+
+    def test_whole_job_skips_drilling_and_writes_one_step(self):
+        drill = pathcompat.create_tool_controller(self.doc, self.job, "TC: 6.6 mm drill", {
+            "version": 2, "name": "6.6 mm drill", "shape": "drill.fcstd",
+            "parameter": {"Diameter": "6.6 mm", "Length": "60 mm", "TipAngle": "118 deg"},
+            "attribute": {"Flutes": 2, "Material": "Carbide"}}, 3, 3000, 200, 200)
+        proposals = self.propose(self.job)
+        by_tc = {p.tc.Name: p for p in proposals}
+        # The Job's default controller (5 mm, FreeCAD's bit without Flutes) cannot be optimised.
+        default = [tc for tc in pathcompat.tool_controllers(self.job) if tc not in (self.tc, drill)]
+        self.assertEqual(len(default), 1)
+        self.assertIn("Flutes", by_tc[default[0].Name].error)
+        self.assertTrue(by_tc[self.tc.Name].ok)
+        self.assertTrue(by_tc[drill.Name].skipped)
+        self.assertIn("drill", by_tc[drill.Name].error)
+        snapshot = {tc.Name: feeds(tc) for tc in pathcompat.tool_controllers(self.job)}
+        written = co.apply(proposals)
+        self.assertIn(self.tc, written)
+        self.assertEqual(feeds(default[0]), snapshot[default[0].Name])
+        self.assertEqual(self.doc.UndoNames[0], "Optimise cutting parameters")
+        self.doc.undo()
+        for tc in pathcompat.tool_controllers(self.job):
+            for a, b in zip(feeds(tc), snapshot[tc.Name]):
+                self.assertAlmostEqual(a, b, places=6)
+
+
+class SelectedToolsTest(unittest.TestCase):
+    """The ToolControllers Select tools made for a generated panel (no operations yet): the
+    optimiser takes their knowledge-base operation and the knowledge base's a_p and a_e."""
+
+    def test_select_tools_then_optimise_the_job(self):
+        doc = new_document("AeroNCOptimiseJob")
+        tmp = tempfile.mkdtemp(prefix="aeronc_opt_")
+        try:
+            kb_path = os.path.join(tmp, "kb.sqlite")
+            part, _ = make_panel_object(doc, {"pocketsX": 2, "pocketsY": 1})
+            group = machining_features.create_machining_features(doc, part, directions=[(0, 0, 1)])
+            _, job, tcs = tool_planning.select_tools(group, "7050-T7451", machine="AC-5AX", kb_path=kb_path)
+            # Material and machine come from what Select tools recorded.
+            proposals = co.propose(job, kb_path=kb_path)
+            ours = [p for p in proposals if p.tc in tcs]
+            milled = [p for p in ours if not p.tc.AeroNCTool.endswith("/drilling")]
+            self.assertTrue(milled)
+            kb = knowledge_base.open_kb(kb_path)
+            tools = {t["id"]: t for t in kb.tools()}
+            for p in milled:
+                self.assertTrue(p.ok, p.error)
+                tool_id, op = p.tc.AeroNCTool.split("/")
+                self.assertEqual(p.operation, op)
+                t = tools[tool_id]
+                cc = kb.cutting_condition("7050-T7451", t["material"], op, t["diameter"])
+                self.assertAlmostEqual(p.result["parameters"]["cut"]["a_p_mm"], cc["ap"])
+                self.assertAlmostEqual(p.params["cut"]["a_e_mm"], cc["aeRatio"] * t["diameter"])
+                self.assertLessEqual(p.spindle_rpm, 18000 * (1 + 1e-9))
+                self.assertTrue(p.optimum["feasible"])
+            for p in ours:
+                if p.tc.AeroNCTool.endswith("/drilling"):
+                    self.assertTrue(p.skipped)
+            before = {p.tc.Name: feeds(p.tc) for p in ours}
+            co.apply(proposals)
+            changed = [p for p in milled if abs(feeds(p.tc)[0] - before[p.tc.Name][0]) > 1e-6]
+            self.assertTrue(changed, "the optimiser changed at least one spindle speed")
+            doc.undo()
+            for p in ours:
+                self.assertEqual(feeds(p.tc), before[p.tc.Name])
+        finally:
+            FreeCAD.closeDocument(doc.Name)
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    unittest.main()
