@@ -36,6 +36,9 @@ DEFAULT_ECONOMICS = {"t_0_min": 1.0, "c_0_per_min": 1.0, "c_t_per_tool_life": 40
 # Roughing leaves stock for finishing: its surface only has to be a roughing class (ISO 1302
 # N10). Finishing uses the knowledge base's threshold ra_max_um.
 ROUGHING_RA_MAX_UM = 12.5
+# Without the tool maker's chip load (the bit's Chipload attribute), the largest f_z is the
+# knowledge base's recommended f_z times this: the upper end of handbook chip-load ranges.
+CHIP_LOAD_FACTOR = 1.5
 # A ToolController no operation uses yet: the cut is priced over this feed length.
 NOMINAL_LENGTH_MM = 1000.0
 _CUTTING_MOVES = {"G1", "G01", "G2", "G02", "G3", "G03"}
@@ -247,13 +250,12 @@ def tool_controllers_of(target):
 
 # --- Propose and apply ---------------------------------------------------------------------------
 
-def propose_one(tc, job, kb, kb_path, material, machine, method="nlopt", ra_max=None, economics=None,
-                map_points=0):
-    """The Proposal for one ToolController. Never raises for the ToolController's own problems:
-    they end up in Proposal.error (or Proposal.skipped for hole operations)."""
+def propose_one(tc, ops, kb, material, machine, method="nlopt", ra_max=None, economics=None, map_points=0):
+    """The Proposal for one ToolController used by operations ops. Never raises for the
+    ToolController's own problems: they end up in Proposal.error (or Proposal.skipped for hole
+    operations)."""
     from aeronc import _core
     prop = Proposal(tc)
-    ops = pathcompat.operations_using(job, tc)
     if ops and all(pathcompat.is_hole_operation(op) for op in ops):
         prop.skipped = True
         prop.error = "used by hole operations only ({}); the milling model does not describe them".format(
@@ -280,7 +282,11 @@ def propose_one(tc, job, kb, kb_path, material, machine, method="nlopt", ra_max=
             condition = kb.cutting_condition(material, tool_material, operation, d)
         except (_core.RecognitionError, RuntimeError, ValueError) as e:
             raise CuttingOptimisationError(str(e))
-        cut = {}
+        chip_load = _length(tc.Tool, "Chipload") or 0.0
+        chip_note = "from the bit"
+        if chip_load <= 0:
+            chip_load = CHIP_LOAD_FACTOR * condition["fz"]
+            chip_note = "{:g} x the knowledge base's f_z".format(CHIP_LOAD_FACTOR)
         if ops:
             prop.cuts = [operation_cut(op, d, condition["aeRatio"]) for op in ops]
             # One set of speeds serves every operation: force and power grow with a_p and a_e,
@@ -299,8 +305,8 @@ def propose_one(tc, job, kb, kb_path, material, machine, method="nlopt", ra_max=
             "name": tc.Label,
             "kb": {"workpiece_material": material, "tool_material": tool_material, "operation": operation,
                    "machine": machine},
-            "cutter": {"diameter_mm": d, "teeth": teeth, "corner_radius_mm": r,
-                       "source": "tool bit {} ({})".format(tc.Tool.Label, r_note)},
+            "cutter": {"diameter_mm": d, "teeth": teeth, "corner_radius_mm": r, "max_chip_load_mm": chip_load,
+                       "source": "tool bit {} ({}; chip load {})".format(tc.Tool.Label, r_note, chip_note)},
             "cut": cut,
             "economics": dict(economics or DEFAULT_ECONOMICS),
         }
@@ -315,8 +321,7 @@ def propose_one(tc, job, kb, kb_path, material, machine, method="nlopt", ra_max=
                                      "f_z_mm": prop.current[1] / (teeth * rpm)}]
         prop.params = params
         try:
-            text, result = _core.optimise_cutting(json.dumps(params), method, 1, kb_path or knowledge_base.user_kb_path(),
-                                                  knowledge_base.sql_folder(), map_points)
+            text, result = _core.optimise_cutting_in(kb, json.dumps(params), method, 1, map_points)
         except (_core.RecognitionError, RuntimeError) as e:
             raise CuttingOptimisationError(str(e))
         prop.text, prop.result = text, json.loads(result)
@@ -354,11 +359,16 @@ def propose(target, material="", machine="", kb_path=None, method="nlopt", ra_ma
     if machine not in kb.machine_names():
         raise CuttingOptimisationError("unknown machine {!r}; the knowledge base has {}".format(
             machine, ", ".join(kb.machine_names())))
+    ops_of = {tc.Name: [] for tc in tcs}
+    for op in pathcompat.operations_using(job):
+        tc = pathcompat.tool_controller_of(op)
+        if tc is not None and tc.Name in ops_of:
+            ops_of[tc.Name].append(op)
     out = []
     for i, tc in enumerate(tcs):
         if progress:
             progress(i, len(tcs), tc.Label)
-        out.append(propose_one(tc, job, kb, kb_path, material, machine, method, ra_max, economics, map_points))
+        out.append(propose_one(tc, ops_of[tc.Name], kb, material, machine, method, ra_max, economics, map_points))
     if progress:
         progress(len(tcs), len(tcs), "")
     return out
@@ -384,7 +394,10 @@ def apply(proposals):
                 tc.VertFeed = "{!r} mm/min".format(float(p.vert_feed))
                 add_property(tc, "App::PropertyString", RESULT_PROPERTY, "AeroNC",
                              "What the cutting-parameter optimiser chose, and why", p.summary(), True)
-            ops = [op for p in good for op in pathcompat.operations_using(pathcompat.job_of(p.tc), p.tc)]
+            written = set(p.tc.Name for p in good)
+            jobs = {pathcompat.job_of(p.tc).Name: pathcompat.job_of(p.tc) for p in good}
+            ops = [op for job in jobs.values() for op in pathcompat.operations_using(job)
+                   if getattr(pathcompat.tool_controller_of(op), "Name", None) in written]
             if ops:
                 doc.recompute(ops)
         except BaseException:

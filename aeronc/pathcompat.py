@@ -330,11 +330,17 @@ def job_of(obj):
     return None
 
 
-def operations_using(job, tc):
-    """The Job's active operations (dressups as listed in the Job) that use ToolController tc."""
+def operations_using(job, tc=None):
+    """The Job's active operations (dressups as listed in the Job) that use ToolController tc,
+    or that use any ToolController when tc is None."""
     ops = getattr(job, "Operations", None)
-    return [op for op in (ops.Group if ops is not None else [])
-            if op_active(op) and tool_controller_of(op) is tc]
+    out = []
+    for op in (ops.Group if ops is not None else []):
+        if op_active(op):
+            used = tool_controller_of(op)
+            if used is not None and (tc is None or used is tc):
+                out.append(op)
+    return out
 
 
 def create_pocket_shape(name="Pocket"):
@@ -344,3 +350,14 @@ def create_pocket_shape(name="Pocket"):
     except ImportError:
         from PathScripts import PathPocketShape as PocketShape  # FreeCAD 0.20
     return PocketShape.Create(name)
+
+
+def create_custom_operation(name, gcode):
+    """FreeCAD's Custom operation (G-code lines given) in the active document's Job (headless)."""
+    try:
+        from Path.Op import Custom  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathCustom as Custom  # FreeCAD 0.20
+    op = Custom.Create(name)
+    op.Gcode = list(gcode)
+    return op

@@ -2,17 +2,19 @@
 registers them at start-up; the work they do is imported when they run."""
 import FreeCADGui
 
-COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_EditKnowledgeBase"]
+COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_EditKnowledgeBase"]
 
 
 def register():
     """Register every AeroNC command with FreeCAD (once)."""
     from aeronc.commands.edit_knowledge_base import EditKnowledgeBase
+    from aeronc.commands.optimise_cutting import OptimiseCutting
     from aeronc.commands.recognise_features import RecogniseFeatures
     from aeronc.commands.select_tools import SelectTools
     known = FreeCADGui.listCommands()
     for name, command in (("AeroNC_RecogniseFeatures", RecogniseFeatures),
                           ("AeroNC_SelectTools", SelectTools),
+                          ("AeroNC_OptimiseCutting", OptimiseCutting),
                           ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
         if name not in known:
             FreeCADGui.addCommand(name, command())

@@ -13,6 +13,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import knowledge_base, tool_planning
+from aeronc.panels.result_table import add_run_and_results
 
 COLUMNS = ["Element", "Type", "Finishing", "Roughing", "\u03b7", "Narrow", "Problem"]
 
@@ -62,18 +63,8 @@ class SelectToolsPanel:
         kb_label.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
         form.addRow("Knowledge base", kb_label)
         lay.addLayout(form)
-        self.run_button = QtGui.QPushButton("Select tools")
-        self.run_button.clicked.connect(self.run)
-        lay.addWidget(self.run_button)
-        self.summary = QtGui.QLabel("")
-        self.summary.setWordWrap(True)
-        lay.addWidget(self.summary)
-        self.table = QtGui.QTableWidget(0, len(COLUMNS))
-        self.table.setHorizontalHeaderLabels(COLUMNS)
-        self.table.setEditTriggers(QtGui.QAbstractItemView.NoEditTriggers)
-        self.table.verticalHeader().setVisible(False)
+        self.run_button, self.summary, self.table = add_run_and_results(lay, "Select tools", self.run, COLUMNS)
         self.table.setMinimumHeight(260)
-        lay.addWidget(self.table)
         return w
 
     def getStandardButtons(self):

@@ -30,9 +30,42 @@ auto guardedOptimise(F f) -> decltype(f()) {
     throw py::error_already_set();
 }
 
+// The comparison (and, with mapPoints > 0, the objective map) of a complete parameter set, as
+// (text, JSON). Runs without the GIL.
+py::tuple solveParameters(const nlohmann::json& params, const std::string& method, unsigned long long seed,
+                          int mapPoints) {
+    std::string text, json;
+    {
+        py::gil_scoped_release nogil;
+        aeronc::optimise::GeneticOptions ga;
+        ga.seed = seed;
+        const auto c = aeronc::optimise::compare(aeronc::optimise::parseParameters(params),
+                                                 aeronc::optimise::parseMethod(method), ga);
+        text = aeronc::optimise::toText(c);
+        auto out = aeronc::optimise::toJson(c);
+        out["parameters"] = params;  // as solved, after the knowledge base filled it in
+        if (mapPoints > 0) {
+            aeronc::optimise::MapBox box;
+            box.nCount = box.fzCount = mapPoints;
+            out["map"] = aeronc::optimise::objectiveMap(c.parameters.problem, c.primary(), box);
+        }
+        json = out.dump();
+    }
+    return py::make_tuple(text, json);
+}
+
+nlohmann::json parseJson(const std::string& text) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        throw aeronc::inputError(std::string("parameters are not valid JSON: ") + e.what());
+    }
+}
+
 }  // namespace
 
-// Registers optimise_cutting() on m. Call it after the module's error class exists.
+// Registers optimise_cutting() and optimise_cutting_in() on m. Call it after the module's error
+// class and KnowledgeBase exist.
 void bindOptimise(py::module_& m) {
     g_optimiseError = py::hasattr(m, "RecognitionError") ? m.attr("RecognitionError").ptr() : PyExc_RuntimeError;
     m.def(
@@ -40,34 +73,13 @@ void bindOptimise(py::module_& m) {
         [](const std::string& paramsJson, const std::string& method, unsigned long long seed, const std::string& kbPath,
            const std::string& sqlFolder, int mapPoints) {
             return guardedOptimise([&] {
-                std::string text, json;
-                {
+                nlohmann::json params = parseJson(paramsJson);
+                if (!kbPath.empty()) {
                     py::gil_scoped_release nogil;
-                    nlohmann::json params;
-                    try {
-                        params = nlohmann::json::parse(paramsJson);
-                    } catch (const nlohmann::json::exception& e) {
-                        throw aeronc::inputError(std::string("parameters are not valid JSON: ") + e.what());
-                    }
-                    if (!kbPath.empty()) {
-                        const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
-                        params = aeronc::kb::withKnowledgeBase(kb, params);
-                    }
-                    aeronc::optimise::GeneticOptions ga;
-                    ga.seed = seed;
-                    const auto c = aeronc::optimise::compare(aeronc::optimise::parseParameters(params),
-                                                             aeronc::optimise::parseMethod(method), ga);
-                    text = aeronc::optimise::toText(c);
-                    auto out = aeronc::optimise::toJson(c);
-                    out["parameters"] = params;  // as solved, after the knowledge base filled it in
-                    if (mapPoints > 0) {
-                        aeronc::optimise::MapBox box;
-                        box.nCount = box.fzCount = mapPoints;
-                        out["map"] = aeronc::optimise::objectiveMap(c.parameters.problem, c.primary(), box);
-                    }
-                    json = out.dump();
+                    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
+                    params = aeronc::kb::withKnowledgeBase(kb, params);
                 }
-                return py::make_tuple(text, json);
+                return solveParameters(params, method, seed, mapPoints);
             });
         },
         py::arg("params_json"), py::arg("method") = std::string("nlopt"), py::arg("seed") = 1ULL,
@@ -77,4 +89,18 @@ void bindOptimise(py::module_& m) {
         "from sql_folder when missing). method: 'nlopt', 'ga' or 'both'. Returns (report_text, result_json); "
         "the JSON holds the solved \"parameters\", and with map_points > 0 a \"map\" of the combined objective "
         "over a map_points x map_points log grid of (n, f_z) around the optimum, for plotting.");
+    m.def(
+        "optimise_cutting_in",
+        [](const aeronc::kb::KnowledgeBase& kb, const std::string& paramsJson, const std::string& method,
+           unsigned long long seed, int mapPoints) {
+            return guardedOptimise([&] {
+                // The knowledge base's connection stays with the GIL: Python may share the object.
+                const auto params = aeronc::kb::withKnowledgeBase(kb, parseJson(paramsJson));
+                return solveParameters(params, method, seed, mapPoints);
+            });
+        },
+        py::arg("kb"), py::arg("params_json"), py::arg("method") = std::string("nlopt"), py::arg("seed") = 1ULL,
+        py::arg("map_points") = 0,
+        "optimise_cutting() with the \"kb\" names looked up in an open KnowledgeBase (no file opened per call: "
+        "for many operations).");
 }

@@ -1,36 +1,17 @@
 """Optimise cutting parameters on real Path Jobs, headless: the cut measured from a Pocket
 operation's path, the ToolController written as one undo step and restored by undo, the
 optimum checked against the plotted grid, and bad input leaving every ToolController as it was."""
-import math
 import os
 import shutil
 import tempfile
 import unittest
 
 import FreeCAD
-import Part
 
 from aeronc import cutting_optimisation as co
 from aeronc import knowledge_base, pathcompat, tool_planning
 from aeronc.objects import machining_features
-from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
-
-
-def end_mill(diameter, flutes=3, material="Carbide", corner=None):
-    """A .fctb document of an end mill (bull nose when corner is given)."""
-    params = {"Diameter": "{} mm".format(diameter), "CuttingEdgeHeight": "30 mm", "Length": "60 mm",
-              "ShankDiameter": "{} mm".format(diameter)}
-    shape = "endmill.fcstd"
-    if corner is not None:
-        shape = "bullnose.fcstd"
-        params["FlatRadius"] = "{} mm".format(diameter / 2 - corner)
-    attrs = {}
-    if flutes is not None:
-        attrs["Flutes"] = flutes
-    if material is not None:
-        attrs["Material"] = material
-    return {"version": 2, "name": "{} mm end mill".format(diameter), "shape": shape, "parameter": params,
-            "attribute": attrs}
+from aeronc.tests.app.support import end_mill, make_panel_object, make_pocket_job, new_document, temp_fcstd
 
 
 def feeds(tc):
@@ -45,25 +26,10 @@ class PocketJobTest(unittest.TestCase):
         self.doc = new_document("AeroNCOptimise")
         self.tmp = tempfile.mkdtemp(prefix="aeronc_opt_")
         self.kb_path = os.path.join(self.tmp, "kb.sqlite")
-        block = Part.makeBox(120, 80, 30).cut(Part.makeBox(60, 40, 10, FreeCAD.Vector(30, 20, 20)))
-        self.part = self.doc.addObject("Part::Feature", "Block")
-        self.part.Shape = block
-        self.doc.recompute()
-        self.job = pathcompat.create_job(self.doc, [self.part])
-        self.doc.recompute()
-        floor = [i + 1 for i, f in enumerate(block.Faces)
-                 if abs(f.Surface.Axis.z) > 0.99 and abs(f.CenterOfMass.z - 20) < 1e-6]
-        self.assertEqual(len(floor), 1)
-        # Headless, Path's operations cannot choose between several controllers: make the pocket first.
-        self.pocket = pathcompat.create_pocket_shape("Pocket")
+        self.part, self.job, self.pocket = make_pocket_job(self.doc)
         self.tc = pathcompat.create_tool_controller(self.doc, self.job, "TC: 10 mm end mill", end_mill(10), 2,
                                                     8000, 1200, 300)
         self.pocket.ToolController = self.tc
-        model = self.job.Model.Group[0]  # the Job's clone of the block
-        self.pocket.Base = [(model, ["Face{}".format(floor[0])])]
-        self.pocket.setExpression("StepDown", None)  # the setup sheet's default is the tool diameter
-        self.pocket.StepDown = "3 mm"
-        self.pocket.StepOver = 50
         self.doc.recompute()
         self.assertTrue(self.pocket.Path.Commands, "the pocket has a path")
 
@@ -92,6 +58,18 @@ class PocketJobTest(unittest.TestCase):
         self.assertEqual(p.tool_material, "carbide")
         self.assertEqual(p.operation, "roughing")  # a clearing operation
         self.assertAlmostEqual(p.params["cutter"]["corner_radius_mm"], 5.0)  # flat end: r = D/2
+
+    def test_chip_load_from_the_knowledge_base_or_the_bit(self):
+        kb = knowledge_base.open_kb(self.kb_path)
+        fz = kb.cutting_condition("7050-T7451", "carbide", "roughing", 10.0)["fz"]
+        [p] = self.propose()
+        self.assertAlmostEqual(p.params["cutter"]["max_chip_load_mm"], co.CHIP_LOAD_FACTOR * fz)
+        # Nothing else limits f_z of a 10 mm end mill in aluminium on a 25 kW spindle.
+        self.assertIn("chip load (tool) f_z,max", p.optimum["active"])
+        self.assertAlmostEqual(p.optimum["f_z_mm"], co.CHIP_LOAD_FACTOR * fz, places=9)
+        self.tc.Tool.Chipload = "0.05 mm"  # the tool maker's figure wins
+        [p] = self.propose()
+        self.assertAlmostEqual(p.optimum["f_z_mm"], 0.05, places=9)
 
     def test_optimum_is_feasible_and_no_grid_point_beats_it(self):
         [p] = self.propose(map_points=81)

@@ -49,3 +49,19 @@ class OptimiseTest(unittest.TestCase):
             _core.optimise_cutting("{")
         with self.assertRaisesRegex(_core.RecognitionError, "nlopt, ga or both"):
             _core.optimise_cutting(json.dumps(_example()), "simplex")
+
+    def test_an_open_knowledge_base_gives_the_same_answer(self):
+        path = os.path.join(aeronc.PACKAGE_DIR, "resources", "optimise", "kb_45_steel_face_mill.json")
+        with open(path) as f:
+            params = f.read()
+        with tempfile.TemporaryDirectory() as d:
+            kb_path = os.path.join(d, "kb.sqlite")
+            sql = os.path.join(aeronc.PACKAGE_DIR, "resources", "kb")
+            by_path = _core.optimise_cutting(params, "nlopt", 1, kb_path, sql, 11)
+            kb = _core.KnowledgeBase(kb_path, sql)
+            self.assertEqual(_core.optimise_cutting_in(kb, params, "nlopt", 1, 11), by_path)
+            result = json.loads(by_path[1])
+            self.assertEqual(len(result["map"]["n_rpm"]), 11)
+            self.assertEqual(result["parameters"]["force"]["C_F"], 825)
+            with self.assertRaisesRegex(_core.RecognitionError, "unknown key kb.colour"):
+                _core.optimise_cutting_in(kb, json.dumps({"kb": {"colour": "red"}}))

@@ -33,7 +33,12 @@ std::vector<Constraint> constraintsOf(const Problem& p) {
                  p.quality.raMax, true});
     c.push_back({K::SpindleMax, "spindle speed", "n_max", "r/min", 1, 1, 0, p.machine.maxSpindle, true});
     c.push_back({K::SpindleMin, "spindle speed", "n_min", "r/min", 1, 1, 0, p.machine.minSpindle, false});
-    c.push_back({K::FeedPerToothMax, "feed per tooth (search range)", "f_z,max", "mm", 1, 0, 1, p.feedPerTooth.max, true});
+    // The tool's chip load, when it has one below the search box, is the upper f_z limit.
+    if (p.cutter.maxChipLoad > 0 && p.cutter.maxChipLoad < p.feedPerTooth.max)
+        c.push_back({K::FeedPerToothMax, "chip load (tool)", "f_z,max", "mm", 1, 0, 1, p.cutter.maxChipLoad, true});
+    else
+        c.push_back({K::FeedPerToothMax, "feed per tooth (search range)", "f_z,max", "mm", 1, 0, 1, p.feedPerTooth.max,
+                     true});
     c.push_back({K::FeedPerToothMin, "feed per tooth (search range)", "f_z,min", "mm", 1, 0, 1, p.feedPerTooth.min, false});
     return c;
 }

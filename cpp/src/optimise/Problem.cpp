@@ -38,6 +38,8 @@ void validate(const Problem& p) {
         throw inputError("cutter corner radius r = " + num(c.cornerRadius) + " mm exceeds the radius of d_0 = " +
                          num(c.diameter) + " mm");
 
+    nonNegative(c.maxChipLoad, "cutter chip load f_z,max (0: none)");
+
     positive(p.cut.length, "cut length L");
     positive(p.cut.depth, "depth of cut a_p");
     positive(p.cut.width, "width of cut a_e");

@@ -83,10 +83,11 @@ Parameters parseParameters(const json& j) {
     p.name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : "";
 
     const Section cutter(j, "cutter", "the milling cutter: diameter_mm, teeth, corner_radius_mm",
-                         {"id", "diameter_mm", "teeth", "corner_radius_mm"});
+                         {"id", "diameter_mm", "teeth", "corner_radius_mm", "max_chip_load_mm"});
     p.cutter.diameter = cutter.number("diameter_mm", "cutter diameter d_0");
     p.cutter.teeth = cutter.whole("teeth", "number of teeth Z");
     p.cutter.cornerRadius = cutter.number("corner_radius_mm", "corner (nose) radius r");
+    p.cutter.maxChipLoad = cutter.number("max_chip_load_mm", 0.0);
 
     const Section cut(j, "cut", "the operation: length_mm, a_p_mm, a_e_mm", {"length_mm", "a_p_mm", "a_e_mm"});
     p.cut.length = cut.number("length_mm", "cut length L");

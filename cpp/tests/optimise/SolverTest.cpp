@@ -2,7 +2,10 @@
 // analytic optimum where there is one, and the seed example's printed result.
 #include "Fixtures.h"
 
+#include <aeronc/core/Error.h>
 #include <aeronc/optimise/Solver.h>
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -158,4 +161,35 @@ TEST(Solver, SteppedSpindleUsesAStepAndBeatsEveryOtherStep) {
         }
     // Off the steps nothing is feasible, even where the stepless problem would be.
     EXPECT_FALSE(r.contains(396.1, 0.15));
+}
+
+// An end mill in aluminium on a fast spindle: without a chip-load limit nothing stops f_z
+// before the search box; with the tool's chip load it is the active f_z limit, and the
+// optimum is still the best feasible point of the grids.
+TEST(Solver, ToolChipLoadLimitsTheFeedPerTooth) {
+    Problem p = test::seedProblem();
+    p.cutter = {10, 3, 5, 0};
+    p.cut = {500, 3, 5};
+    p.force = {206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0};
+    p.toolLife = {};
+    p.toolLife.cV = 1500, p.toolLife.m = 0.3;
+    p.machine.maxSpindle = 18000, p.machine.power = 25, p.machine.maxFeed = 30000, p.machine.maxForce = 6000;
+    p.machine.efficiency = 0.85;
+    p.quality.raMax = 12.5;
+    const Solution free = solve(p);
+    EXPECT_GT(free.combined.fz, 0.5);
+    EXPECT_TRUE(isActive(free.combined, ConstraintKind::FeedPerToothMax));
+
+    p.cutter.maxChipLoad = 0.12;
+    const Solution s = solve(p);
+    expectFeasible(s.combined);
+    EXPECT_NEAR(s.combined.fz, 0.12, 1e-9);
+    EXPECT_TRUE(isActive(s.combined, ConstraintKind::FeedPerToothMax));
+    const auto active = s.combined.activeConstraints();
+    EXPECT_NE(std::find(active.begin(), active.end(), "chip load (tool) f_z,max"), active.end())
+        << ::testing::PrintToString(active);
+    expectOptimalOnGrids(p);
+
+    p.cutter.maxChipLoad = -1;
+    EXPECT_THROW(solve(p), aeronc::Error);
 }

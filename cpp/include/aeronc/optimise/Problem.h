@@ -14,6 +14,8 @@ struct Cutter {
     double diameter = 0;      // d_0
     int teeth = 0;            // Z
     double cornerRadius = 0;  // r, the insert's nose radius (roughness)
+    // The largest feed per tooth the tool takes (its maker's chip load); 0: no such limit.
+    double maxChipLoad = 0;
 };
 
 struct Cut {

@@ -1,6 +1,6 @@
 #pragma once
 // The optimiser's parameter file (JSON). Layout, with units in the key names:
-//   cutter     {diameter_mm, teeth, corner_radius_mm}
+//   cutter     {diameter_mm, teeth, corner_radius_mm, max_chip_load_mm?}
 //   cut        {length_mm, a_p_mm, a_e_mm}
 //   machine    {name, min_spindle_rpm?, max_spindle_rpm, spindle_steps_rpm?, power_kw,
 //               max_feed_mm_min, max_force_n, efficiency}
