@@ -315,10 +315,9 @@ def propose_one(tc, ops, kb, material, machine, method="nlopt", ra_max=None, eco
             limit = ROUGHING_RA_MAX_UM
         if limit is not None:
             params["quality"] = {"ra_max_um": limit}
-        rpm, _, _ = prop.current
-        if rpm > 0 and prop.current[1] > 0:
-            params["references"] = [{"label": "now: " + tc.Label, "n_rpm": rpm,
-                                     "f_z_mm": prop.current[1] / (teeth * rpm)}]
+        rpm, feed, _ = prop.current
+        if rpm > 0 and feed > 0:
+            params["references"] = [{"label": "now: " + tc.Label, "n_rpm": rpm, "f_z_mm": feed / (teeth * rpm)}]
         prop.params = params
         try:
             text, result = _core.optimise_cutting_in(kb, json.dumps(params), method, 1, map_points)
@@ -360,9 +359,9 @@ def propose(target, material="", machine="", kb_path=None, method="nlopt", ra_ma
         raise CuttingOptimisationError("unknown machine {!r}; the knowledge base has {}".format(
             machine, ", ".join(kb.machine_names())))
     ops_of = {tc.Name: [] for tc in tcs}
-    for op in pathcompat.operations_using(job):
+    for op in pathcompat.tooled_operations(job):
         tc = pathcompat.tool_controller_of(op)
-        if tc is not None and tc.Name in ops_of:
+        if tc.Name in ops_of:
             ops_of[tc.Name].append(op)
     out = []
     for i, tc in enumerate(tcs):
@@ -395,9 +394,9 @@ def apply(proposals):
                 add_property(tc, "App::PropertyString", RESULT_PROPERTY, "AeroNC",
                              "What the cutting-parameter optimiser chose, and why", p.summary(), True)
             written = set(p.tc.Name for p in good)
-            jobs = {pathcompat.job_of(p.tc).Name: pathcompat.job_of(p.tc) for p in good}
-            ops = [op for job in jobs.values() for op in pathcompat.operations_using(job)
-                   if getattr(pathcompat.tool_controller_of(op), "Name", None) in written]
+            jobs = {job.Name: job for job in (pathcompat.job_of(p.tc) for p in good)}
+            ops = [op for job in jobs.values() for op in pathcompat.tooled_operations(job)
+                   if pathcompat.tool_controller_of(op).Name in written]
             if ops:
                 doc.recompute(ops)
         except BaseException:

@@ -25,6 +25,7 @@ def main():
 
     import aeronc
     from aeronc import picture
+    from aeronc.post.output import write_atomically
     from aeronc.objects import create_machining_features
     from aeronc.objects.machining_features import result_of
 
@@ -57,10 +58,7 @@ def main():
     t_opt = time.perf_counter() - t0
 
     doc.saveAs(os.path.join(out, name + ".FCStd"))
-    tmp = os.path.join(out, "recognition.json.part")
-    with open(tmp, "w") as f:
-        json.dump(result, f, indent=1)
-    os.replace(tmp, os.path.join(out, "recognition.json"))
+    write_atomically(os.path.join(out, "recognition.json"), json.dumps(result, indent=1))
     png = picture.render(part.Shape, result, os.path.join(out, name + "_features.png"),
                          title="{}: machining features".format(name))
 

@@ -116,18 +116,7 @@ def render(result, title="", width_in=6.0, height_in=4.6, dpi=90):
 
 
 def save(result, path, title=""):
-    """Write the picture to path (through a temporary file, then renamed)."""
-    import os
-    import tempfile
-    data = render(result, title)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".aeronc_plot_", suffix=".png", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as out:
-            out.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        raise
+    """Write the picture to path (through a temporary file, then renamed); returns path."""
+    from aeronc.post.output import write_atomically
+    write_atomically(path, render(result, title))
     return path

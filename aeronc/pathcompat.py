@@ -330,17 +330,11 @@ def job_of(obj):
     return None
 
 
-def operations_using(job, tc=None):
-    """The Job's active operations (dressups as listed in the Job) that use ToolController tc,
-    or that use any ToolController when tc is None."""
+def tooled_operations(job):
+    """The Job's active operations (dressups as listed in the Job) that use a ToolController."""
     ops = getattr(job, "Operations", None)
-    out = []
-    for op in (ops.Group if ops is not None else []):
-        if op_active(op):
-            used = tool_controller_of(op)
-            if used is not None and (tc is None or used is tc):
-                out.append(op)
-    return out
+    return [op for op in (ops.Group if ops is not None else [])
+            if op_active(op) and tool_controller_of(op) is not None]
 
 
 def create_pocket_shape(name="Pocket"):

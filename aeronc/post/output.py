@@ -1,15 +1,17 @@
-"""Atomic output: a program is complete on disk or not there at all."""
+"""Atomic output: a file (a program, a picture) is complete on disk or not there at all."""
 import os
 import tempfile
 
 
-def write_atomically(filename, text):
-    """Write text to a temporary file beside filename, then rename it into place."""
+def write_atomically(filename, data):
+    """Write data (str as UTF-8 text, or bytes) to a temporary file beside filename, then
+    rename it into place."""
     folder = os.path.dirname(os.path.abspath(filename))
     fd, tmp = tempfile.mkstemp(dir=folder, prefix="." + os.path.basename(filename) + ".", suffix=".part")
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
+        binary = isinstance(data, (bytes, bytearray))
+        with (os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", encoding="utf-8", newline="\n")) as f:
+            f.write(data)
             f.flush()
             os.fsync(f.fileno())
         # mkstemp makes the file private; give it the mode a plain open() would (or keep the old one's).

@@ -1,6 +1,7 @@
 #pragma once
-// The binding boundary: every C++ and OCCT exception becomes the module's RecognitionError
-// (a RuntimeError) with the core's message; Python exceptions pass through.
+// The binding boundary: every C++ and OCCT exception becomes a Python exception (the module's
+// RecognitionError, a RuntimeError, unless told otherwise) with the core's message; Python
+// exceptions pass through.
 #include <aeronc/core/Error.h>
 
 #include <Standard_Failure.hxx>
@@ -16,22 +17,29 @@ inline PyObject*& errorType() {
     return type;
 }
 
+// Runs f; any C++ exception becomes the Python exception `type` with its message.
 template <class F>
-auto guarded(F f) -> decltype(f()) {
+auto guardedAs(PyObject* type, F f) -> decltype(f()) {
     try {
         return f();
     } catch (const pybind11::error_already_set&) {
         throw;
     } catch (const Error& e) {
-        PyErr_SetString(errorType(), e.what());
+        PyErr_SetString(type, e.what());
     } catch (const Standard_Failure& e) {
-        PyErr_SetString(errorType(), (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
+        PyErr_SetString(type, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
     } catch (const std::exception& e) {
-        PyErr_SetString(errorType(), e.what());
+        PyErr_SetString(type, e.what());
     } catch (...) {
-        PyErr_SetString(errorType(), "unknown failure in the AeroNC core");
+        PyErr_SetString(type, "unknown failure in the AeroNC core");
     }
     throw pybind11::error_already_set();
+}
+
+// guardedAs() with the module's RecognitionError.
+template <class F>
+auto guarded(F f) -> decltype(f()) {
+    return guardedAs(errorType(), f);
 }
 
 

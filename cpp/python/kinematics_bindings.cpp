@@ -1,5 +1,7 @@
 // aeronc._core: the 5-axis kinematics and the posts. Every C++ exception stops here and becomes
 // PostError (a RuntimeError) with the core's message; the posting itself runs without the GIL.
+#include "Guarded.h"
+
 #include <aeronc/kinematics/Post.h>
 
 #include <nlohmann/json.hpp>
@@ -15,16 +17,7 @@ PyObject* g_postError = nullptr;
 
 template <class F>
 auto guardedPost(F f) -> decltype(f()) {
-    try {
-        return f();
-    } catch (const py::error_already_set&) {
-        throw;
-    } catch (const std::exception& e) {
-        PyErr_SetString(g_postError, e.what());
-    } catch (...) {
-        PyErr_SetString(g_postError, "unknown failure in the AeroNC post");
-    }
-    throw py::error_already_set();
+    return aeronc::python::guardedAs(g_postError, f);
 }
 
 template <class T>

@@ -1,5 +1,8 @@
 // aeronc._core: the cutting-parameter optimiser for Python. Parameters and results cross as
-// JSON text, like the rest of the module; every C++ exception becomes the module's error.
+// JSON text, like the rest of the module; every C++ exception becomes the module's error
+// (Guarded.h).
+#include "Guarded.h"
+
 #include <aeronc/core/Error.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/optimise/ObjectiveMap.h>
@@ -13,22 +16,6 @@
 namespace py = pybind11;
 
 namespace {
-
-PyObject* g_optimiseError = nullptr;  // the module's error class; the module keeps it alive
-
-template <class F>
-auto guardedOptimise(F f) -> decltype(f()) {
-    try {
-        return f();
-    } catch (const py::error_already_set&) {
-        throw;
-    } catch (const std::exception& e) {
-        PyErr_SetString(g_optimiseError, e.what());
-    } catch (...) {
-        PyErr_SetString(g_optimiseError, "unknown failure in the cutting-parameter optimiser");
-    }
-    throw py::error_already_set();
-}
 
 // The comparison (and, with mapPoints > 0, the objective map) of a complete parameter set, as
 // (text, JSON). Runs without the GIL.
@@ -67,12 +54,11 @@ nlohmann::json parseJson(const std::string& text) {
 // Registers optimise_cutting() and optimise_cutting_in() on m. Call it after the module's error
 // class and KnowledgeBase exist.
 void bindOptimise(py::module_& m) {
-    g_optimiseError = py::hasattr(m, "RecognitionError") ? m.attr("RecognitionError").ptr() : PyExc_RuntimeError;
     m.def(
         "optimise_cutting",
         [](const std::string& paramsJson, const std::string& method, unsigned long long seed, const std::string& kbPath,
            const std::string& sqlFolder, int mapPoints) {
-            return guardedOptimise([&] {
+            return aeronc::python::guarded([&] {
                 nlohmann::json params = parseJson(paramsJson);
                 if (!kbPath.empty()) {
                     py::gil_scoped_release nogil;
@@ -93,7 +79,7 @@ void bindOptimise(py::module_& m) {
         "optimise_cutting_in",
         [](const aeronc::kb::KnowledgeBase& kb, const std::string& paramsJson, const std::string& method,
            unsigned long long seed, int mapPoints) {
-            return guardedOptimise([&] {
+            return aeronc::python::guarded([&] {
                 // The knowledge base's connection stays with the GIL: Python may share the object.
                 const auto params = aeronc::kb::withKnowledgeBase(kb, parseJson(paramsJson));
                 return solveParameters(params, method, seed, mapPoints);

@@ -1,6 +1,8 @@
 // The FreeCAD tool bridge: a tool library imported into the knowledge base and exported again
 // is the same bytes; edits in the knowledge base reach the bit documents; bad libraries are
 // refused with the database left as it was.
+#include "ErrorOf.h"
+
 #include <aeronc/core/Error.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/FreeCadToolLibrary.h>
@@ -19,20 +21,12 @@ namespace fs = std::filesystem;
 using namespace aeronc;
 using namespace aeronc::kb;
 
+using aeronc::test::errorOf;
+
 namespace {
 
 // FreeCAD's own library, installed with the freecad package the set-up script installs.
 const fs::path kFreeCadTools = "/usr/share/freecad/Mod/Path/Tools";
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected an aeronc::Error";
-    return {};
-}
 
 class FreeCadToolLibraryTest : public ::testing::Test {
 protected:

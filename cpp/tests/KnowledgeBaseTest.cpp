@@ -1,7 +1,10 @@
 // The machining knowledge base: built from the shipped SQL, migrated from version 0, and
 // every bad input (impossible tool, bad import, corrupt or locked file, unknown material)
 // reported clearly with the database left as it was.
+#include "ErrorOf.h"
+
 #include <aeronc/core/Error.h>
+#include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 
 #include <gtest/gtest.h>
@@ -12,7 +15,6 @@
 #include <fstream>
 #include <functional>
 #include <random>
-#include <sstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -20,22 +22,16 @@ using aeronc::Error;
 using aeronc::kb::KnowledgeBase;
 using aeronc::toolselect::Tool;
 
+using aeronc::test::inputErrorOf;
+
 namespace {
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    EXPECT_TRUE(in) << "cannot read " << p;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 const std::string& schemaSql() {
-    static const std::string s = readText(fs::path(AERONC_RESOURCES) / "kb" / "schema.sql");
+    static const std::string s = aeronc::readTextFile(AERONC_RESOURCES "/kb/schema.sql", "schema");
     return s;
 }
 const std::string& dataSql() {
-    static const std::string s = readText(fs::path(AERONC_RESOURCES) / "kb" / "default_data.sql");
+    static const std::string s = aeronc::readTextFile(AERONC_RESOURCES "/kb/default_data.sql", "default data");
     return s;
 }
 
@@ -62,17 +58,6 @@ Tool tool(const std::string& id, double d, double r = 0, const std::string& type
     t.fluteLength = 2 * d;
     t.reach = 3 * d;
     return t;
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        EXPECT_EQ(e.kind(), Error::Kind::Input) << e.what();
-        return e.what();
-    }
-    ADD_FAILURE() << "expected an aeronc::Error";
-    return {};
 }
 
 class KnowledgeBaseTest : public ::testing::Test {
@@ -155,7 +140,7 @@ TEST_F(KnowledgeBaseTest, Thresholds) {
     KnowledgeBase kb = openDefault(file());
     EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.85);
     EXPECT_DOUBLE_EQ(kb.threshold("mu_merge"), 0.7);
-    const std::string e = errorOf([&] { kb.threshold("no_such"); });
+    const std::string e = inputErrorOf([&] { kb.threshold("no_such"); });
     EXPECT_NE(e.find("unknown threshold 'no_such'"), std::string::npos) << e;
     EXPECT_NE(e.find("eta_min"), std::string::npos) << e;
 }
@@ -174,23 +159,23 @@ TEST_F(KnowledgeBaseTest, AddToolPersists) {
 TEST_F(KnowledgeBaseTest, ImpossibleToolRejectedAndDatabaseUnchanged) {
     KnowledgeBase kb = openDefault(file());
     Tool bad = tool("BAD-1", 10, 6, "bull");  // corner radius larger than the radius
-    std::string e = errorOf([&] { kb.addTool(bad); });
+    std::string e = inputErrorOf([&] { kb.addTool(bad); });
     EXPECT_NE(e.find("BAD-1"), std::string::npos) << e;
     Tool negative = tool("BAD-2", -4);
-    e = errorOf([&] { kb.addTool(negative); });
+    e = inputErrorOf([&] { kb.addTool(negative); });
     EXPECT_NE(e.find("BAD-2"), std::string::npos) << e;
     Tool shortReach = tool("BAD-3", 10);
     shortReach.reach = 5;
-    e = errorOf([&] { kb.addTool(shortReach); });
+    e = inputErrorOf([&] { kb.addTool(shortReach); });
     EXPECT_NE(e.find("BAD-3"), std::string::npos) << e;
     EXPECT_EQ(kb.tools().size(), 29u);
 
     // A duplicate id and an unknown tool material are named too.
-    e = errorOf([&] { kb.addTool(tool("EM-F10", 10)); });
+    e = inputErrorOf([&] { kb.addTool(tool("EM-F10", 10)); });
     EXPECT_NE(e.find("already exists"), std::string::npos) << e;
     Tool ceramic = tool("CER-1", 10);
     ceramic.material = "ceramic";
-    e = errorOf([&] { kb.addTool(ceramic); });
+    e = inputErrorOf([&] { kb.addTool(ceramic); });
     EXPECT_NE(e.find("unknown tool material 'ceramic'"), std::string::npos) << e;
     EXPECT_EQ(kb.tools().size(), 29u);
 }
@@ -221,13 +206,13 @@ TEST_F(KnowledgeBaseTest, DatabaseCheckConstraintsRefuseImpossibleTools) {
 TEST_F(KnowledgeBaseTest, ImportIsAllOrNothing) {
     KnowledgeBase kb = openDefault(file());
     std::vector<Tool> batch = {tool("IMP-1", 5), tool("IMP-2", 7), tool("IMP-3", 9, 10, "bull"), tool("IMP-4", 11)};
-    const std::string e = errorOf([&] { kb.importTools(batch); });
+    const std::string e = inputErrorOf([&] { kb.importTools(batch); });
     EXPECT_NE(e.find("IMP-3"), std::string::npos) << e;
     EXPECT_EQ(kb.tools().size(), 29u);
 
     // A batch that fails inside the database (a duplicate in the middle) is rolled back too.
     batch = {tool("IMP-1", 5), tool("EM-F6", 6), tool("IMP-4", 11)};
-    const std::string dup = errorOf([&] { kb.importTools(batch); });
+    const std::string dup = inputErrorOf([&] { kb.importTools(batch); });
     EXPECT_NE(dup.find("EM-F6"), std::string::npos) << dup;
     EXPECT_NE(dup.find("nothing was imported"), std::string::npos) << dup;
     EXPECT_EQ(kb.tools().size(), 29u);
@@ -338,7 +323,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionOneKeepingUserRows) {
         kb.addTool(probe);
         EXPECT_EQ(kb.tools().size(), 2u);
         // The old constraint still holds in the rebuilt table.
-        EXPECT_NE(errorOf([&] { kb.addTool(tool("BAD", 4, 3, "bull")); }), "");
+        EXPECT_NE(inputErrorOf([&] { kb.addTool(tool("BAD", 4, 3, "bull")); }), "");
     }
     EXPECT_TRUE(fs::exists(p.string() + ".v1.bak"));
 }
@@ -354,7 +339,7 @@ TEST_F(KnowledgeBaseTest, CuttingDataByDiameterRange) {
     EXPECT_DOUBLE_EQ(*kb.cuttingCondition("7050-T7451", "carbide", "roughing", 40.0).dMin, 25.0);
     // Unranged rows serve any diameter; without a diameter, ranged rows cannot be chosen.
     EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "finishing", 6.0).fz, 0.06);
-    const std::string e = errorOf([&] { kb.cuttingCondition("7050-T7451", "carbide", "roughing"); });
+    const std::string e = inputErrorOf([&] { kb.cuttingCondition("7050-T7451", "carbide", "roughing"); });
     EXPECT_NE(e.find("diameter"), std::string::npos) << e;
 }
 
@@ -362,13 +347,13 @@ TEST_F(KnowledgeBaseTest, NewerSchemaVersionRefused) {
     const fs::path p = file();
     openDefault(p);
     rawExec(p, "UPDATE schema_version SET version = 99");
-    const std::string e = errorOf([&] { openDefault(p); });
+    const std::string e = inputErrorOf([&] { openDefault(p); });
     EXPECT_NE(e.find("newer"), std::string::npos) << e;
 }
 
 TEST_F(KnowledgeBaseTest, MissingDirectory) {
     const fs::path p = dir_ / "no" / "such" / "kb.sqlite";
-    const std::string e = errorOf([&] { openDefault(p); });
+    const std::string e = inputErrorOf([&] { openDefault(p); });
     EXPECT_NE(e.find("does not exist"), std::string::npos) << e;
     EXPECT_FALSE(fs::exists(dir_ / "no"));
 }
@@ -381,7 +366,7 @@ TEST_F(KnowledgeBaseTest, CorruptFile) {
         for (int i = 0; i < 8192; ++i) out.put(static_cast<char>(rng() & 0xff));
     }
     const auto sizeBefore = fs::file_size(p);
-    const std::string e = errorOf([&] { openDefault(p); });
+    const std::string e = inputErrorOf([&] { openDefault(p); });
     EXPECT_NE(e.find("file is not a database"), std::string::npos) << e;
     EXPECT_NE(e.find(p.string()), std::string::npos) << e;
     EXPECT_EQ(fs::file_size(p), sizeBefore);  // not overwritten
@@ -390,7 +375,7 @@ TEST_F(KnowledgeBaseTest, CorruptFile) {
 TEST_F(KnowledgeBaseTest, NotAKnowledgeBase) {
     const fs::path p = file();
     rawExec(p, "CREATE TABLE other (x INTEGER)");
-    const std::string e = errorOf([&] { openDefault(p); });
+    const std::string e = inputErrorOf([&] { openDefault(p); });
     EXPECT_NE(e.find("not an AeroNC knowledge base"), std::string::npos) << e;
 }
 
@@ -402,11 +387,11 @@ TEST_F(KnowledgeBaseTest, LockedDatabase) {
     ASSERT_EQ(sqlite3_open(p.c_str(), &other), SQLITE_OK);
     ASSERT_EQ(sqlite3_exec(other, "BEGIN EXCLUSIVE", nullptr, nullptr, nullptr), SQLITE_OK);
 
-    std::string e = errorOf([&] { openDefault(p); });
+    std::string e = inputErrorOf([&] { openDefault(p); });
     EXPECT_NE(e.find("locked"), std::string::npos) << e;
-    e = errorOf([&] { kb.addTool(tool("LOCK-1", 5)); });
+    e = inputErrorOf([&] { kb.addTool(tool("LOCK-1", 5)); });
     EXPECT_NE(e.find("locked"), std::string::npos) << e;
-    e = errorOf([&] { kb.tools(); });
+    e = inputErrorOf([&] { kb.tools(); });
     EXPECT_NE(e.find("locked"), std::string::npos) << e;
 
     sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
@@ -417,14 +402,14 @@ TEST_F(KnowledgeBaseTest, LockedDatabase) {
 
 TEST_F(KnowledgeBaseTest, UnknownMaterial) {
     KnowledgeBase kb = openDefault(file());
-    std::string e = errorOf([&] { kb.cuttingCondition("unobtainium", "carbide", "roughing"); });
+    std::string e = inputErrorOf([&] { kb.cuttingCondition("unobtainium", "carbide", "roughing"); });
     EXPECT_NE(e.find("unknown workpiece material 'unobtainium'"), std::string::npos) << e;
     EXPECT_NE(e.find("Ti-6Al-4V"), std::string::npos) << e;  // lists the known ones
-    e = errorOf([&] { kb.cuttingCondition("45 steel", "diamond", "roughing"); });
+    e = inputErrorOf([&] { kb.cuttingCondition("45 steel", "diamond", "roughing"); });
     EXPECT_NE(e.find("unknown tool material 'diamond'"), std::string::npos) << e;
-    e = errorOf([&] { kb.cuttingCondition("45 steel", "carbide", "threading"); });
+    e = inputErrorOf([&] { kb.cuttingCondition("45 steel", "carbide", "threading"); });
     EXPECT_NE(e.find("no cutting condition"), std::string::npos) << e;
-    e = errorOf([&] { kb.machine("Unknown mill"); });
+    e = inputErrorOf([&] { kb.machine("Unknown mill"); });
     EXPECT_NE(e.find("unknown machine"), std::string::npos) << e;
 }
 
@@ -436,7 +421,7 @@ TEST_F(KnowledgeBaseTest, EmptyFileIsFilledInPlace) {
 
 TEST_F(KnowledgeBaseTest, BadShippedSqlLeavesNoFile) {
     const fs::path p = file();
-    const std::string e = errorOf([&] { KnowledgeBase::open(p.string(), schemaSql(), "INSERT INTO nowhere VALUES (1);"); });
+    const std::string e = inputErrorOf([&] { KnowledgeBase::open(p.string(), schemaSql(), "INSERT INTO nowhere VALUES (1);"); });
     EXPECT_NE(e.find("default data"), std::string::npos) << e;
     EXPECT_FALSE(fs::exists(p));
     EXPECT_FALSE(fs::exists(p.string() + ".creating"));
@@ -461,17 +446,17 @@ TEST_F(KnowledgeBaseTest, TableEditingIsOneTransactionWithNamedErrors) {
     };
 
     // A good edit and a bad one in one batch: neither is applied; the message names the row.
-    std::string e = errorOf([&] { kb.editTable("tool", {{f12, "diameter", "11.5"}, {f10, "diameter", "-1"}}); });
+    std::string e = inputErrorOf([&] { kb.editTable("tool", {{f12, "diameter", "11.5"}, {f10, "diameter", "-1"}}); });
     EXPECT_NE(e.find("row 'EM-F10'"), std::string::npos) << e;
     EXPECT_NE(e.find("nothing was changed"), std::string::npos) << e;
     EXPECT_DOUBLE_EQ(diameterOf("EM-F12"), 12);
-    e = errorOf([&] { kb.editTable("tool", {{f10, "diameter", "ten"}}); });
+    e = inputErrorOf([&] { kb.editTable("tool", {{f10, "diameter", "ten"}}); });
     EXPECT_NE(e.find("'ten' is not a number"), std::string::npos) << e;
-    e = errorOf([&] { kb.editTable("tool", {{f10, "flutes", "2.5"}}); });
+    e = inputErrorOf([&] { kb.editTable("tool", {{f10, "flutes", "2.5"}}); });
     EXPECT_NE(e.find("whole number"), std::string::npos) << e;
-    e = errorOf([&] { kb.editTable("tool", {{f10, "tool_material", "diamond"}}); });
+    e = inputErrorOf([&] { kb.editTable("tool", {{f10, "tool_material", "diamond"}}); });
     EXPECT_NE(e.find("refers to a row that does not exist"), std::string::npos) << e;
-    e = errorOf([&] { kb.editTable("sqlite_master", {}); });
+    e = inputErrorOf([&] { kb.editTable("sqlite_master", {}); });
     EXPECT_NE(e.find("no editable table"), std::string::npos) << e;
 
     // Good edits persist; inserts and deletes work.

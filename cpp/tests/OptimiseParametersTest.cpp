@@ -1,40 +1,36 @@
 // The knowledge base as the optimiser's source: the cutting condition's coefficients, the
 // machine's limits and the tool reach the optimiser unchanged, the file's own values win,
 // and bad names are refused clearly.
+#include "ErrorOf.h"
+
 #include <aeronc/core/Error.h>
+#include <aeronc/core/TextFile.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/optimise/Report.h>
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
 using aeronc::kb::KnowledgeBase;
 using namespace aeronc::optimise;
+using aeronc::readTextFile;
+using aeronc::test::errorOf;
 
 namespace {
-
-std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    EXPECT_TRUE(in) << "cannot read " << p;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 class OptimiseParametersTest : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("aeronc-optkb-" + std::to_string(getpid()));
         fs::create_directories(dir_);
-        const fs::path res(AERONC_RESOURCES);
-        kb_.emplace(KnowledgeBase::open((dir_ / "kb.sqlite").string(), readText(res / "kb" / "schema.sql"),
-                                        readText(res / "kb" / "default_data.sql")));
-        params_ = nlohmann::json::parse(readText(res / "optimise" / "kb_45_steel_face_mill.json"));
+        const std::string res = AERONC_RESOURCES;
+        kb_.emplace(KnowledgeBase::open((dir_ / "kb.sqlite").string(), readTextFile(res + "/kb/schema.sql", "schema"),
+                                        readTextFile(res + "/kb/default_data.sql", "default data")));
+        params_ = nlohmann::json::parse(readTextFile(res + "/optimise/kb_45_steel_face_mill.json", "parameter file"));
     }
     void TearDown() override {
         kb_.reset();
@@ -44,16 +40,6 @@ protected:
     std::optional<KnowledgeBase> kb_;
     nlohmann::json params_;
 };
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const aeronc::Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no error";
-    return "";
-}
 
 }  // namespace
 

@@ -1,4 +1,6 @@
 // Forward and inverse kinematics of the two machines, the pole, winding and branch choice.
+#include "Fixtures.h"
+
 #include <aeronc/kinematics/Kinematics.h>
 #include <aeronc/kinematics/RotaryChoice.h>
 
@@ -7,17 +9,9 @@
 #include <random>
 
 using namespace aeronc::kinematics;
+using namespace aeronc::kinematics::test;
 
 namespace {
-
-MachineModel machine(const std::string& name) { return loadMachineFile(std::string(AERONC_MACHINES) + "/" + name + ".json"); }
-
-double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
-
-Vec3 axisAt(double polarDeg, double azimuthDeg) {
-    const double p = toRadians(polarDeg), a = toRadians(azimuthDeg);
-    return {std::sin(p) * std::cos(a), std::sin(p) * std::sin(a), std::cos(p)};
-}
 
 // Every solution the inverse kinematics gives must take the machine to the pose.
 void expectRoundTrip(const Kinematics& kin, const ToolPose& pose, const std::array<double, 2>& keep) {

@@ -1,5 +1,6 @@
 // The posts end to end: FreeCAD-style Path text with tool axes -> NC text -> independent
 // readback -> forward kinematics -> the input tip and axis again (1e-6 mm, 1e-9 rad).
+#include "Fixtures.h"
 #include "NcReadback.h"
 
 #include <aeronc/kinematics/Post.h>
@@ -11,17 +12,9 @@
 #include <regex>
 
 using namespace aeronc::kinematics;
+using namespace aeronc::kinematics::test;
 
 namespace {
-
-MachineModel machine(const std::string& name) { return loadMachineFile(std::string(AERONC_MACHINES) + "/" + name + ".json"); }
-
-double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
-
-Vec3 axisAt(double polarDeg, double azimuthDeg) {
-    const double p = toRadians(polarDeg), a = toRadians(azimuthDeg);
-    return {std::sin(p) * std::cos(a), std::sin(p) * std::sin(a), std::cos(p)};
-}
 
 struct InputPose {
     Vec3 tip, axis;

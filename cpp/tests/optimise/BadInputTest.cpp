@@ -1,5 +1,7 @@
 // Bad input: an infeasible problem names its conflicting limits and the nearest relaxation
 // (which must then work); missing coefficients and non-physical values are named.
+#include "../ErrorOf.h"
+
 #include "Fixtures.h"
 
 #include <aeronc/core/Error.h>
@@ -8,23 +10,14 @@
 using namespace aeronc::optimise;
 using aeronc::Error;
 
-namespace {
+using aeronc::test::inputErrorOf;
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        EXPECT_EQ(e.kind(), Error::Kind::Input) << e.what();
-        return e.what();
-    }
-    ADD_FAILURE() << "no error";
-    return "";
-}
+namespace {
 
 std::string parseError(const std::function<void(nlohmann::json&)>& edit) {
     nlohmann::json j = test::seedJson();
     edit(j);
-    return errorOf([&] { parseParameters(j); });
+    return inputErrorOf([&] { parseParameters(j); });
 }
 
 bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
@@ -37,7 +30,7 @@ TEST(BadInput, TooLittlePowerNamesPowerAndTheRelaxationWorks) {
     Problem p = test::seedProblem();
     p.machine.power = 0.05;
     p.feedPerTooth.min = 0.05;
-    const std::string m = errorOf([&] { solve(p); });
+    const std::string m = inputErrorOf([&] { solve(p); });
     EXPECT_TRUE(has(m, "infeasible")) << m;
     EXPECT_TRUE(has(m, "raise P_max from 0.05 to")) << m;
     const Region r = Region::of(p);
@@ -68,7 +61,7 @@ TEST(BadInput, TooLittlePowerNamesPowerAndTheRelaxationWorks) {
 TEST(BadInput, RoughnessAgainstTheFeedRangeNamesBoth) {
     Problem p = test::seedProblem();
     p.quality.raMax = 0.0001;
-    const std::string m = errorOf([&] { solve(p); });
+    const std::string m = inputErrorOf([&] { solve(p); });
     EXPECT_TRUE(has(m, "R_a,max")) << m;
     EXPECT_TRUE(has(m, "f_z,min")) << m;
     EXPECT_TRUE(has(m, "lower f_z,min from 0.005 to")) << m;
@@ -77,7 +70,7 @@ TEST(BadInput, RoughnessAgainstTheFeedRangeNamesBoth) {
 TEST(BadInput, NoStepInsideTheSpindleRange) {
     Problem p = test::seedProblem();
     p.machine.spindleSteps = {2000, 2500};
-    const std::string m = errorOf([&] { solve(p); });
+    const std::string m = inputErrorOf([&] { solve(p); });
     EXPECT_TRUE(has(m, "spindle steps")) << m;
     EXPECT_TRUE(has(m, "raise n_max from 1800 to")) << m;
 }
@@ -85,7 +78,7 @@ TEST(BadInput, NoStepInsideTheSpindleRange) {
 TEST(BadInput, FeedLimitBelowTheLeastFeed) {
     Problem p = test::seedProblem();
     p.machine.maxFeed = 0.1;  // less than Z * n_min * f_z,min = 4*30*0.005 = 0.6 mm/min
-    const std::string m = errorOf([&] { solve(p); });
+    const std::string m = inputErrorOf([&] { solve(p); });
     EXPECT_TRUE(has(m, "raise v_f,max from 0.1 to 0.6 mm/min")) << m;
 }
 
@@ -127,5 +120,5 @@ TEST(BadInput, NonPhysicalValuesAreNamed) {
 }
 
 TEST(BadInput, UnknownMethod) {
-    EXPECT_TRUE(has(errorOf([] { parseMethod("simplex"); }), "nlopt, ga or both"));
+    EXPECT_TRUE(has(inputErrorOf([] { parseMethod("simplex"); }), "nlopt, ga or both"));
 }
