@@ -1,5 +1,6 @@
 #pragma once
 #include <aeronc/recognition/DomainTree.h>
+#include <aeronc/recognition/DomainTreeJson.h>  // toJson / fromJson, for the callers of recognise()
 
 #include <TopoDS_Shape.hxx>
 #include <functional>
@@ -30,8 +31,5 @@ struct RecogniseOptions {
 
 // Layered-slicing recognition of generalised pockets, openings and holes.
 DomainTree recognise(const TopoDS_Shape& solid, const RecogniseOptions& options = {});
-
-// JSON text of the tree (the CLI's --json output and the Python binding's result).
-std::string toJson(const DomainTree& tree, int indent = 1);
 
 }  // namespace aeronc::recognition
