@@ -4,13 +4,17 @@
 //   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
 //   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
 //                       [--machine NAME] [--resources DIR]
+//   aeronc select-tools --tree RECOGNITION.json --kb KB.sqlite --material NAME [--json OUT]
+//                       [--machine NAME] [--resources DIR]
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
+#include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/optimise/Report.h>
+#include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
@@ -38,7 +42,10 @@ const char* kUsage =
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
     "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
-    "      (a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
+    "  aeronc select-tools --tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+    "                      [--json OUT] [--resources DIR]\n"
+    "      (PART is recognised first; --tree plans a stored recognition, e.g. recognise's --json;\n"
+    "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
     "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
     "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n";
 
@@ -78,11 +85,11 @@ void writeText(const std::string& path, const std::string& text) {
 
 using Next = std::function<std::string()>;
 
-// Calls handle(option, next) for every option after the part argument; `next` takes the
-// option's value. An option handle() does not know is an error.
+// Calls handle(option, next) for every option from argv[first] on (by default, after the part
+// argument); `next` takes the option's value. An option handle() does not know is an error.
 template <class Handle>
-void forEachOption(int argc, char** argv, Handle handle) {
-    for (int i = 3; i < argc; ++i) {
+void forEachOption(int argc, char** argv, Handle handle, int first = 3) {
+    for (int i = first; i < argc; ++i) {
         const std::string a = argv[i];
         const Next next = [&]() -> std::string {
             if (i + 1 >= argc) throw aeronc::inputError(a + " needs a value");
@@ -187,23 +194,46 @@ std::filesystem::path kbResources(const std::string& given, const char* argv0) {
                              "; pass --resources DIR");
 }
 
+// select-tools PART ... recognises the part, then plans; select-tools --tree FILE ... plans the
+// tree a recognition stored (recognise --json, or a Machining Features group's Result).
 int selectToolsCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("select-tools needs a part file");
-    std::string part = argv[2], jsonOut, kbPath, material, resources, machine;
+    if (argc < 3) throw aeronc::inputError("select-tools needs a part file or --tree RECOGNITION.json");
+    const bool fromTree = std::string(argv[2]) == "--tree";
+    if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
+    const std::string input = argv[fromTree ? 3 : 2];
+    std::string jsonOut, kbPath, material, resources, machine;
+    bool directions = false;
     aeronc::recognition::RecogniseOptions opt;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--json") jsonOut = next();
-        else if (a == "--kb") kbPath = next();
-        else if (a == "--material") material = next();
-        else if (a == "--machine") machine = next();
-        else if (a == "--directions") opt.directions = parseDirections(next());
-        else if (a == "--resources") resources = next();
-        else return false;
-        return true;
-    });
+    forEachOption(
+        argc, argv,
+        [&](const std::string& a, const Next& next) {
+            if (a == "--json") jsonOut = next();
+            else if (a == "--kb") kbPath = next();
+            else if (a == "--material") material = next();
+            else if (a == "--machine") machine = next();
+            else if (a == "--directions") {
+                opt.directions = parseDirections(next());
+                directions = true;
+            } else if (a == "--resources") resources = next();
+            else return false;
+            return true;
+        },
+        fromTree ? 4 : 3);
+    if (fromTree && directions)
+        throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
     if (kbPath.empty()) throw aeronc::inputError("select-tools needs --kb KB.sqlite (created when missing)");
     if (material.empty()) throw aeronc::inputError("select-tools needs --material NAME, e.g. 7050-T7451");
 
+    // A stored tree is read first: bad input stops before a knowledge base is made.
+    aeronc::recognition::DomainTree tree;
+    if (fromTree) {
+        const std::string text = aeronc::readTextFile(input, "recognition file");
+        try {
+            tree = aeronc::recognition::fromJson(text);
+        } catch (const aeronc::Error& e) {
+            throw aeronc::inputError(input + ": " + e.what());
+        }
+    }
     const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
         kbPath, [&] { return kbResources(resources, argv[0]).string(); });
     // Check the material before the (slow) recognition.
@@ -215,8 +245,7 @@ int selectToolsCmd(int argc, char** argv) {
                                  ")");
     }
 
-    const TopoDS_Shape solid = aeronc::loadPart(part);
-    const auto tree = aeronc::recognition::recognise(solid, opt);
+    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt);
     const auto plan = aeronc::toolselect::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
@@ -225,7 +254,7 @@ int selectToolsCmd(int argc, char** argv) {
     int failed = 0;
     for (const auto& c : plan.elements) failed += !c.error.empty();
     for (const auto& h : plan.holes) failed += !h.error.empty();
-    std::cerr << part << ": " << plan.elements.size() << " milled element(s), " << plan.holes.size()
+    std::cerr << input << ": " << plan.elements.size() << " milled element(s), " << plan.holes.size()
               << " hole(s), " << failed << " without a tool; tool changes " << plan.merge.toolChangesBefore << " -> "
               << plan.merge.toolChangesAfter << ", roughing time " << plan.merge.timeBefore << " -> "
               << plan.merge.timeAfter << " min\n";

@@ -51,6 +51,24 @@ else
   failed=$((failed + 1)); echo "FAIL select-tools writes JSON"
 fi
 
+# Tool selection from a stored recognition: the same plan as from the part, bad trees refused.
+"$cli" recognise "$tmp/p.step" --directions +Z --json "$tmp/tree.json" 2>/dev/null
+if "$cli" select-tools --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --json "$tmp/tree_tools.json" 2>/dev/null &&
+   grep -q '"roughingTool"' "$tmp/tree_tools.json" && cmp -s "$tmp/tools.json" "$tmp/tree_tools.json"; then
+  passed=$((passed + 1)); echo "ok   select-tools --tree plans as the part form does"
+else
+  failed=$((failed + 1)); echo "FAIL select-tools --tree plans as the part form does"
+fi
+echo '{"faceCount": 2}' > "$tmp/short.json"
+sed 's/"type": "closed_pocket"/"type": "slot"/' "$tmp/tree.json" > "$tmp/slot.json"
+expect_error "select-tools --tree without a file" "--tree needs a value" "$cli" select-tools --tree
+expect_error "select-tools --tree missing file" "cannot be read" "$cli" select-tools --tree "$tmp/none.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools --tree not JSON" "not valid JSON" "$cli" select-tools --tree "$tmp/notes.step" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools --tree missing field" "missing field 'setups'" "$cli" select-tools --tree "$tmp/short.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools --tree unknown type" "elements\[0\].type: unknown element type 'slot'" "$cli" select-tools --tree "$tmp/slot.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools --tree with directions" "a --tree has its setups" "$cli" select-tools --tree "$tmp/tree.json" --directions +Z --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools --tree unknown material" "unknown workpiece material" "$cli" select-tools --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material unobtainium
+
 # Cutting-parameter optimisation: the paper's example solves; bad parameter files are refused.
 opt="$(dirname "$0")/../../resources/optimise/xa5032_face_mill_45_steel.json"
 if "$cli" optimise "$opt" --method both --json "$tmp/opt.json" >/dev/null 2>&1 &&
