@@ -2,14 +2,16 @@
 
 The user's knowledge base lives in FreeCAD's user data folder (AeroNC/knowledge.sqlite);
 it is built from the SQL shipped in resources/kb the first time it is needed, and migrated
-by the core when an older version is opened, so a user's edits survive an upgrade.
+by the core when an older version is opened, so a user's edits survive an upgrade. The
+planner works on a recognised machining-domain tree (recognition's result), never on the
+part itself.
 """
 import json
 import os
 
 import FreeCAD
 
-from aeronc.recognition import RecognitionError, check_solid, shape_of
+from aeronc.recognition import RecognitionError
 
 
 class KnowledgeBaseError(RecognitionError):
@@ -42,20 +44,22 @@ def open_kb(kb_path=None):
         raise KnowledgeBaseError(str(e))
 
 
-def select_tools(source, material, directions=None, machine="", kb_path=None, allowance=0.0, blank=None,
-                 linear_tolerance=1e-3, angular_tolerance=1e-3, chord_tolerance=0.01, progress=None):
-    """Recognise `source` (shape or document object) and plan finishing and roughing tools,
-    drills and merged tool groups from the knowledge base; returns the plan as a dict."""
+def plan_tools(tree, material, machine="", kb_path=None):
+    """Plan finishing and roughing tools, drills and merged tool groups for a recognised
+    machining-domain tree from the knowledge base at kb_path (default: the user's).
+
+    tree is recognition's result, as a dict or as its JSON text (a Machining Features group's
+    stored result). Returns the plan as a dict. Raises KnowledgeBaseError with the core's
+    message for a malformed tree (naming the field at fault), an unknown material or machine,
+    or a knowledge base that cannot be opened."""
     from aeronc import _core
-    shape, label = shape_of(source)
-    check_solid(shape, label)
+    text = tree if isinstance(tree, str) else json.dumps(tree)
     path = kb_path or user_kb_path()
-    os.makedirs(os.path.dirname(path), exist_ok=True)
+    folder = os.path.dirname(path)
+    if folder:
+        os.makedirs(folder, exist_ok=True)
     try:
-        text = _core.select_tools_brep(shape.exportBrepToString(), path, material, sql_folder(),
-                                       [tuple(float(c) for c in d) for d in (directions or [])], machine,
-                                       allowance, tuple(blank) if blank else None, linear_tolerance,
-                                       angular_tolerance, chord_tolerance, progress)
+        plan = _core.select_tools_tree(text, path, material, sql_folder(), machine)
     except RuntimeError as e:
-        raise KnowledgeBaseError("{}: {}".format(label, e))
-    return json.loads(text)
+        raise KnowledgeBaseError(str(e))
+    return json.loads(plan)

@@ -1,5 +1,7 @@
 """Select tools for a Machining Features tree: the plan of the core written into the document.
 
+The plan is made from the tree the group stored when its features were recognised, so the
+tools belong to exactly the elements the document shows; the part is not recognised again.
 Each milled DomainElement gets its finishing tool, roughing tool and machinable ratio eta,
 each hole its drill, and the MachiningFeatures group the tool changes and roughing time
 before and after merging. A ToolController is made in the part's Path Job for every tool
@@ -100,11 +102,15 @@ def _tool_controllers(doc, job, plan, kb):
 
 
 def select_tools(group, material, machine="", kb_path=None, job=None, progress=None):
-    """Plan the tools of a MachiningFeatures group and record them (one undo step).
+    """Plan the tools of a MachiningFeatures group from its stored tree and record them (one
+    undo step).
 
+    progress, if given, is called as progress(fraction, stage) when planning starts and when
+    the plan is about to be recorded; returning False cancels, leaving the document as it was.
     Returns (plan dict, Job, ToolControllers). Raises KnowledgeBaseError with a clear message
-    for a group without a source, a source changed since recognition, an unknown material or
-    machine, or a knowledge base that cannot be opened."""
+    for a group without a source or a stored recognition, a source changed since recognition,
+    a stored tree the core cannot read, an unknown material or machine, a knowledge base that
+    cannot be opened, or a cancel."""
     if not machining_features.is_machining_features(group):
         raise knowledge_base.KnowledgeBaseError("{} is not a Machining Features group".format(group.Label))
     part = group.Source
@@ -114,16 +120,28 @@ def select_tools(group, material, machine="", kb_path=None, job=None, progress=N
     if group.Outdated:
         raise knowledge_base.KnowledgeBaseError(
             "{}: {} changed since its features were recognised; recognise again first".format(group.Label, part.Label))
+    try:
+        tree = machining_features.result_of(group)
+    except ValueError as e:
+        raise knowledge_base.KnowledgeBaseError(
+            "{}: the stored recognition is not valid JSON ({}); recognise again".format(group.Label, e))
+    if not tree:
+        raise knowledge_base.KnowledgeBaseError("{}: no stored recognition; recognise first".format(group.Label))
+
+    def going_on(fraction, stage):
+        if progress is not None and progress(fraction, stage) is False:
+            raise knowledge_base.KnowledgeBaseError("{}: tool selection cancelled".format(group.Label))
+
+    going_on(0.0, "Planning tools")
     kb = knowledge_base.open_kb(kb_path)
     if not machine:
         names = kb.machine_names()
         machine = names[0] if names else ""
-    settings = machining_features.settings_of(group)
-    plan = knowledge_base.select_tools(part, material, machine=machine, kb_path=kb.path, progress=progress, **settings)
-    result = machining_features.result_of(group)
-    if len(plan["elements"]) + len(plan["holes"]) != len(result.get("elements", [])):
-        raise knowledge_base.KnowledgeBaseError(
-            "{}: the plan does not match the stored recognition; recognise again first".format(group.Label))
+    try:
+        plan = knowledge_base.plan_tools(tree, material, machine=machine, kb_path=kb.path)
+    except knowledge_base.KnowledgeBaseError as e:
+        raise knowledge_base.KnowledgeBaseError("{}: {}".format(group.Label, e))
+    going_on(0.9, "Recording the plan")
     doc = group.Document
 
     def work():

@@ -1,6 +1,6 @@
 """Task panel of AeroNC_SelectTools: workpiece material and machine, then the plan.
 
-"Select tools" plans (recognition of the source again, with a progress dialog), records the
+"Select tools" plans from the stored tree (with a progress dialog), records the
 tools on the elements and makes the ToolControllers in one undo step, and lists the result
 here: per element its finishing and roughing tool, eta and any error, with the tool changes
 and roughing time before and after merging. Errors go to the report view and a message box;
@@ -76,7 +76,7 @@ class SelectToolsPanel:
         return True
 
     def run(self):
-        progress = QtGui.QProgressDialog("Recognising and planning tools...", "Cancel", 0, 100,
+        progress = QtGui.QProgressDialog("Planning tools...", "Cancel", 0, 100,
                                          FreeCADGui.getMainWindow())
         progress.setWindowModality(QtCore.Qt.WindowModal)
         progress.setMinimumDuration(300)

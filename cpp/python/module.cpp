@@ -2,6 +2,7 @@
 // Every C++ and OCCT exception stops here and becomes RecognitionError.
 #include <aeronc/core/Error.h>
 #include <aeronc/core/PartIO.h>
+#include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/testparts/PanelGenerator.h>
@@ -100,25 +101,21 @@ PYBIND11_MODULE(_core, m) {
         "Recognise the machining features of a STEP or BREP file; returns JSON text.");
 
     m.def(
-        "select_tools_brep",
-        [](const std::string& brep, const std::string& kbPath, const std::string& material, const std::string& sqlFolder,
-           const std::vector<std::array<double, 3>>& directions, const std::string& machine, double allowance,
-           const py::object& blank, double lin, double ang, double chord, const py::object& progress) {
+        "select_tools_tree",
+        [](const std::string& treeJson, const std::string& kbPath, const std::string& material,
+           const std::string& sqlFolder, const std::string& machine) {
             return guarded([&] {
-                const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                const TopoDS_Shape solid = partFromBrepText(brep);
                 py::gil_scoped_release nogil;
+                const auto tree = recognition::fromJson(treeJson);
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
-                const auto tree = recognition::recognise(solid, o);
                 return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
             });
         },
-        py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),
-        py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("machine") = std::string(),
-        py::arg("allowance") = 0.0, py::arg("blank") = py::none(), py::arg("linear_tolerance") = 1e-3,
-        py::arg("angular_tolerance") = 1e-3, py::arg("chord_tolerance") = 0.01, py::arg("progress") = py::none(),
-        "Recognise a solid (same options as recognise_brep) and plan its tools from the knowledge base at "
-        "kb_path (built from sql_folder's schema.sql and default_data.sql when missing); returns JSON text.");
+        py::arg("tree_json"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),
+        py::arg("machine") = std::string(),
+        "Plan the tools of a recognised machining-domain tree (the JSON text recognise_* returned) from "
+        "the knowledge base at kb_path (built from sql_folder's schema.sql and default_data.sql when "
+        "missing); returns JSON text.");
 
     m.def(
         "make_panel",

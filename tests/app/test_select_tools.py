@@ -1,17 +1,22 @@
 """Select tools on a Machining Features tree, headless: element properties, ToolControllers
 in the part's Job with the knowledge base's speeds and feeds, one undo step, save/reopen,
-bad input leaving the document as it was; and the FreeCAD tool library round trip."""
+bad input leaving the document as it was; planning from the stored tree, with the plan the
+command line makes from the part; and the FreeCAD tool library round trip."""
+import contextlib
 import filecmp
 import json
 import math
 import os
 import shutil
+import subprocess
 import tempfile
 import unittest
 
 import FreeCAD
+import Part
 
-from aeronc import knowledge_base, pathcompat, tool_planning
+import aeronc
+from aeronc import _core, knowledge_base, pathcompat, recognition, tool_planning
 from aeronc.objects import machining_features
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
 
@@ -108,6 +113,129 @@ class SelectToolsTest(unittest.TestCase):
         self.assertIn("not a database", str(ctx.exception))
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
         self.assertFalse(hasattr(self.group, "Material"))
+
+
+@contextlib.contextmanager
+def recognition_unavailable():
+    """Every way into recognition fails while inside: a plan made here came from a stored tree."""
+    def refuse(*args, **kwargs):
+        raise AssertionError("recognition ran again")
+
+    saved = [(m, name, getattr(m, name)) for m, name in
+             ((_core, "recognise_brep"), (_core, "recognise_file"), (recognition, "recognise"))]
+    for m, name, _ in saved:
+        setattr(m, name, refuse)
+    try:
+        yield
+    finally:
+        for m, name, f in saved:
+            setattr(m, name, f)
+
+
+class PlanFromStoredTreeTest(unittest.TestCase):
+    """Select tools plans the tree stored in the group, without recognising the part again, and
+    gets the plan the command line makes from the part itself (and from the stored tree)."""
+    MATERIAL = "7050-T7451"
+    MACHINE = "AC-5AX"
+
+    def setUp(self):
+        self.doc = new_document("AeroNCStoredTree")
+        self.tmp = tempfile.mkdtemp(prefix="aeronc_tree_")
+        self.kb_path = os.path.join(self.tmp, "kb.sqlite")
+        self.cli = os.path.join(os.path.dirname(aeronc.PACKAGE_DIR), "bin", "aeronc")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def _cli_plan(self, *args):
+        out = os.path.join(self.tmp, "cli_plan.json")
+        run = subprocess.run([self.cli, "select-tools"] + list(args) +
+                             ["--kb", self.kb_path, "--material", self.MATERIAL, "--machine", self.MACHINE,
+                              "--json", out], stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        with open(out) as f:
+            return json.load(f)
+
+    def _check(self, path, directions, cli_directions):
+        self.assertTrue(os.path.isfile(self.cli), self.cli)
+        part = self.doc.addObject("Part::Feature", "Part")
+        part.Shape = Part.read(path)
+        self.doc.recompute()
+        group = machining_features.create_machining_features(self.doc, part, directions=directions)
+        with recognition_unavailable():
+            plan, job, tcs = tool_planning.select_tools(group, self.MATERIAL, machine=self.MACHINE,
+                                                        kb_path=self.kb_path)
+        # Not an empty plan: elements with tools, ToolControllers made.
+        self.assertGreaterEqual(len(plan["elements"]) + len(plan["holes"]), 10)
+        self.assertGreater(sum(1 for e in plan["elements"] if e["roughingTool"]), 0)
+        self.assertEqual(len(plan["elements"]) + len(plan["holes"]), group.ElementCount)
+        self.assertTrue(tcs)
+
+        # The command line's part form recognises the same shape itself and plans the same.
+        brep = os.path.join(self.tmp, "part.brep")
+        part.Shape.exportBrep(brep)
+        self.assertEqual(plan, self._cli_plan(brep, "--directions", cli_directions))
+        # And its --tree form plans the tree the group stored to the same result.
+        stored = os.path.join(self.tmp, "stored.json")
+        with open(stored, "w") as f:
+            f.write(group.Result)
+        self.assertEqual(plan, self._cli_plan("--tree", stored))
+        return group
+
+    def test_sample_panel_both_sides(self):
+        self._check(os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step"),
+                    [(0, 0, 1), (0, 0, -1)], "+Z,-Z")
+
+    def test_nist_part(self):
+        path = os.path.join(os.environ.get("AERONC_SHARED_DATA", ""), "nist", "nist_ftc_07_asme1_rd.stp")
+        if not os.path.isfile(path):
+            self.skipTest("no {} (set AERONC_SHARED_DATA)".format(path))
+        self._check(path, None, "auto")
+
+    def test_changed_or_damaged_tree_is_refused(self):
+        part, _ = make_panel_object(self.doc, PLAIN)
+        group = machining_features.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
+        before = set(o.Name for o in self.doc.Objects)
+        # A stored tree the core cannot read: the error names the field, nothing is recorded.
+        good = group.Result
+        tree = json.loads(good)
+        tree["elements"][0]["parent"] = 7
+        group.Result = json.dumps(tree)
+        with self.assertRaises(knowledge_base.KnowledgeBaseError) as ctx:
+            tool_planning.select_tools(group, self.MATERIAL, kb_path=self.kb_path)
+        self.assertIn("elements[0].parent", str(ctx.exception))
+        self.assertIn(group.Label, str(ctx.exception))
+        group.Result = ""
+        with self.assertRaises(knowledge_base.KnowledgeBaseError) as ctx:
+            tool_planning.select_tools(group, self.MATERIAL, kb_path=self.kb_path)
+        self.assertIn("no stored recognition", str(ctx.exception))
+        group.Result = good
+        # A part changed since recognition: refused before planning.
+        part.Shape = Part.makeBox(10, 10, 10)
+        self.doc.recompute()
+        with self.assertRaises(knowledge_base.KnowledgeBaseError) as ctx:
+            tool_planning.select_tools(group, self.MATERIAL, kb_path=self.kb_path)
+        self.assertIn("changed since its features were recognised", str(ctx.exception))
+        self.assertEqual(set(o.Name for o in self.doc.Objects), before)
+        self.assertFalse(hasattr(group, "Material"))
+
+    def test_cancel_leaves_the_document_as_it_was(self):
+        part, _ = make_panel_object(self.doc, PLAIN)
+        group = machining_features.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
+        before = set(o.Name for o in self.doc.Objects)
+        stages = []
+
+        def progress(fraction, stage):
+            stages.append(stage)
+            return fraction < 0.5  # go on planning, stop before recording
+
+        with self.assertRaises(knowledge_base.KnowledgeBaseError) as ctx:
+            tool_planning.select_tools(group, self.MATERIAL, kb_path=self.kb_path, progress=progress)
+        self.assertIn("cancelled", str(ctx.exception))
+        self.assertEqual(stages, ["Planning tools", "Recording the plan"])
+        self.assertEqual(set(o.Name for o in self.doc.Objects), before)
+        self.assertFalse(hasattr(group, "Material"))
 
 
 class ToolLibraryBridgeTest(unittest.TestCase):
