@@ -9,11 +9,8 @@ import os
 
 import FreeCAD
 
-from aeronc.recognition import RecognitionError, check_solid, shape_of
-
-
-class KnowledgeBaseError(RecognitionError):
-    """The knowledge base or the tool planning failed; the message says why."""
+from aeronc.errors import KnowledgeBaseError, from_core
+from aeronc.recognition import check_solid, shape_of
 
 
 def user_kb_path():
@@ -30,16 +27,14 @@ def open_kb(kb_path=None):
 
     Returns the core's KnowledgeBase: tools(), table(), edit_table(), import_freecad_library(),
     export_freecad_library(), export_tools(), bit_document(), cutting_condition(), ...;
-    its methods raise RuntimeError with the core's message."""
+    its methods raise the core's exception (call them inside errors.from_core)."""
     from aeronc import _core
     path = kb_path or user_kb_path()
     folder = os.path.dirname(path)
     if folder:
         os.makedirs(folder, exist_ok=True)
-    try:
+    with from_core(KnowledgeBaseError):
         return _core.KnowledgeBase(path, sql_folder())
-    except RuntimeError as e:
-        raise KnowledgeBaseError(str(e))
 
 
 def select_tools(source, material, directions=None, machine="", kb_path=None, allowance=0.0, blank=None,
