@@ -12,7 +12,8 @@ import unittest
 import FreeCAD
 
 from aeronc import knowledge_base, pathcompat, tool_planning
-from aeronc.objects import machining_features
+from aeronc import makers
+from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
 
 PLAIN = {"pocketsX": 2, "pocketsY": 1, "islands": False, "openings": False, "lighteningHoles": False,
@@ -26,7 +27,7 @@ class SelectToolsTest(unittest.TestCase):
         self.tmp = tempfile.mkdtemp(prefix="aeronc_kb_")
         self.kb_path = os.path.join(self.tmp, "kb.sqlite")
         self.part, _ = make_panel_object(self.doc, PLAIN)
-        self.group = machining_features.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
+        self.group = makers.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
 
     def tearDown(self):
         FreeCAD.closeDocument(self.doc.Name)
@@ -107,7 +108,8 @@ class SelectToolsTest(unittest.TestCase):
             tool_planning.select_tools(self.group, "7050-T7451", kb_path=corrupt)
         self.assertIn("not a database", str(ctx.exception))
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
-        self.assertFalse(hasattr(self.group, "Material"))
+        self.assertEqual((self.group.Material, self.group.ToolPlan), ("", ""))
+        self.assertFalse(any(getattr(o, "RoughingTool", "") for o in self.doc.Objects))
 
 
 class ToolLibraryBridgeTest(unittest.TestCase):
@@ -133,8 +135,7 @@ class ToolLibraryBridgeTest(unittest.TestCase):
         doc = new_document("AeroNCBits")
         try:
             files = self.kb.export_tools("Chosen", ["EM-B16R2"], out)
-            from PathScripts import PathToolBit
-            bit = PathToolBit.Factory.CreateFrom(files[1], "ToolBit")
+            bit = test_pathcompat.tool_bit_from_file(files[1])
             self.assertAlmostEqual(bit.Diameter.Value, 16.0, places=6)
             self.assertAlmostEqual(bit.FlatRadius.Value, 8.0 - 2.0, places=6)
         finally:
