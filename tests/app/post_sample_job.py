@@ -12,7 +12,6 @@ in AeroNC's tool-axis convention (U V W on every move, docs/post.md); and the AP
 camera program over datum holes.
 """
 import math
-import os
 
 CHAMFER_TILT = 45.0
 BEVEL_TILT = 30.0
