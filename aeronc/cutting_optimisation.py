@@ -24,8 +24,8 @@ import FreeCAD
 
 from aeronc import knowledge_base, pathcompat
 from aeronc.objects.base import add_property
+from aeronc.errors import CuttingOptimisationError, from_core
 from aeronc.objects.transaction import in_transaction
-from aeronc.recognition import RecognitionError
 
 TC_TAG = "AeroNCTool"  # set by Select tools: "<tool id>/<operation>"
 RESULT_PROPERTY = "CuttingOptimum"
@@ -42,10 +42,6 @@ CHIP_LOAD_FACTOR = 1.5
 # A ToolController no operation uses yet: the cut is priced over this feed length.
 NOMINAL_LENGTH_MM = 1000.0
 _CUTTING_MOVES = {"G1", "G01", "G2", "G02", "G3", "G03"}
-
-
-class CuttingOptimisationError(RecognitionError):
-    """The cutting-parameter optimisation cannot run or write; the message says why."""
 
 
 class OperationCut:
@@ -279,9 +275,10 @@ def propose_one(tc, ops, kb, material, machine, method="nlopt", ra_max=None, eco
             return prop
         prop.operation, prop.tool_material = operation, tool_material
         try:
-            condition = kb.cutting_condition(material, tool_material, operation, d)
-        except (_core.RecognitionError, RuntimeError, ValueError) as e:
-            raise CuttingOptimisationError(str(e))
+            with from_core(CuttingOptimisationError):
+                condition = kb.cutting_condition(material, tool_material, operation, d)
+        except ValueError as e:  # an argument the binding refuses
+            raise CuttingOptimisationError(str(e)) from None
         chip_load = _length(tc.Tool, "Chipload") or 0.0
         chip_note = "from the bit"
         if chip_load <= 0:
@@ -319,10 +316,8 @@ def propose_one(tc, ops, kb, material, machine, method="nlopt", ra_max=None, eco
         if rpm > 0 and feed > 0:
             params["references"] = [{"label": "now: " + tc.Label, "n_rpm": rpm, "f_z_mm": feed / (teeth * rpm)}]
         prop.params = params
-        try:
+        with from_core(CuttingOptimisationError):
             text, result = _core.optimise_cutting_in(kb, json.dumps(params), method, 1, map_points)
-        except (_core.RecognitionError, RuntimeError) as e:
-            raise CuttingOptimisationError(str(e))
         prop.text, prop.result = text, json.loads(result)
         best = prop.optimum
         ratio = kb.threshold("plunge_feed_ratio")

@@ -11,11 +11,7 @@ import os
 
 import FreeCAD
 
-from aeronc.recognition import RecognitionError
-
-
-class KnowledgeBaseError(RecognitionError):
-    """The knowledge base or the tool planning failed; the message says why."""
+from aeronc.errors import KnowledgeBaseError, from_core
 
 
 def user_kb_path():
@@ -32,16 +28,14 @@ def open_kb(kb_path=None):
 
     Returns the core's KnowledgeBase: tools(), table(), edit_table(), import_freecad_library(),
     export_freecad_library(), export_tools(), bit_document(), cutting_condition(), ...;
-    its methods raise RuntimeError with the core's message."""
+    its methods raise the core's exception (call them inside errors.from_core)."""
     from aeronc import _core
     path = kb_path or user_kb_path()
     folder = os.path.dirname(path)
     if folder:
         os.makedirs(folder, exist_ok=True)
-    try:
+    with from_core(KnowledgeBaseError):
         return _core.KnowledgeBase(path, sql_folder())
-    except RuntimeError as e:
-        raise KnowledgeBaseError(str(e))
 
 
 def plan_tools(tree, material, machine="", kb_path=None):
@@ -58,8 +52,6 @@ def plan_tools(tree, material, machine="", kb_path=None):
     folder = os.path.dirname(path)
     if folder:
         os.makedirs(folder, exist_ok=True)
-    try:
+    with from_core(KnowledgeBaseError):
         plan = _core.select_tools_tree(text, path, material, sql_folder(), machine)
-    except RuntimeError as e:
-        raise KnowledgeBaseError(str(e))
     return json.loads(plan)

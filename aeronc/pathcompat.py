@@ -261,55 +261,6 @@ def op_property(op, name):
     return _path_util().opProperty(op, name)
 
 
-def post_processor(name):
-    """Load a post by its dropdown name the way the Job's Post command does; the result has
-    export(objects, filename, argstring) and tooltip."""
-    try:
-        from Path.Post.Processor import PostProcessorFactory  # FreeCAD 1.x
-        return PostProcessorFactory.get_post_processor(None, name)
-    except ImportError:
-        from PathScripts.PathPostProcessor import PostProcessor  # FreeCAD 0.20
-        return PostProcessor.load(name)
-
-
-def available_posts():
-    """Names in the Job's post-processor dropdown (every *_post.py on the post search path)."""
-    try:
-        from Path import Preferences  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathPreferences as Preferences  # FreeCAD 0.20
-    return Preferences.allAvailablePostProcessors()
-
-
-def builtin_post(name):
-    """One of the posts FreeCAD ships, as a module (e.g. "linuxcnc")."""
-    import importlib
-    try:
-        return importlib.import_module("Path.Post.scripts.{}_post".format(name))  # FreeCAD 1.x
-    except ImportError:
-        return importlib.import_module("PathScripts.post.{}_post".format(name))  # FreeCAD 0.20
-
-
-def create_profile(name="Profile"):
-    """FreeCAD's Profile operation in the active document's Job (headless)."""
-    try:
-        from Path.Op import Profile  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathProfile as Profile  # FreeCAD 0.20
-    return Profile.Create(name)
-
-
-def add_tool_controller(job, label, number):
-    """A new tool controller (FreeCAD's default tool bit) in the Job."""
-    try:
-        from Path.Tool import Controller  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathToolController as Controller  # FreeCAD 0.20
-    tc = Controller.Create(label, toolNumber=number)
-    job.Proxy.addToolController(tc)
-    return tc
-
-
 # --- Operations and their tool controllers ---------------------------------------------------
 
 # Operations that make holes point by point; the milling force and roughness model does not
@@ -335,23 +286,3 @@ def tooled_operations(job):
     ops = getattr(job, "Operations", None)
     return [op for op in (ops.Group if ops is not None else [])
             if op_active(op) and tool_controller_of(op) is not None]
-
-
-def create_pocket_shape(name="Pocket"):
-    """FreeCAD's Pocket Shape operation in the active document's Job (headless)."""
-    try:
-        from Path.Op import PocketShape  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathPocketShape as PocketShape  # FreeCAD 0.20
-    return PocketShape.Create(name)
-
-
-def create_custom_operation(name, gcode):
-    """FreeCAD's Custom operation (G-code lines given) in the active document's Job (headless)."""
-    try:
-        from Path.Op import Custom  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathCustom as Custom  # FreeCAD 0.20
-    op = Custom.Create(name)
-    op.Gcode = list(gcode)
-    return op

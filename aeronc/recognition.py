@@ -8,17 +8,11 @@ import json
 
 import FreeCAD
 
+from aeronc.errors import RecognitionCancelled, RecognitionError, from_core
+
 DEFAULT_LINEAR_TOLERANCE = 1e-3   # mm
 DEFAULT_ANGULAR_TOLERANCE = 1e-3  # rad
 DEFAULT_CHORD_TOLERANCE = 0.01    # mm
-
-
-class RecognitionError(RuntimeError):
-    """Recognition failed; the message says why in words an NC programmer understands."""
-
-
-class RecognitionCancelled(RecognitionError):
-    """The progress callback asked to stop."""
 
 
 def _core():
@@ -98,13 +92,12 @@ def recognise(source, directions=None, allowance=0.0, blank=None,
             chord_tolerance=float(chord_tolerance),
             progress=on_progress if progress is not None else None)
         try:
-            text = core.recognise_brep(shape.exportBrepToString(), **kwargs)
-        except core.RecognitionError as e:
+            with from_core(RecognitionError, label):
+                text = core.recognise_brep(shape.exportBrepToString(), **kwargs)
+        except RecognitionError:
             if cancelled:
-                raise RecognitionCancelled("{}: recognition cancelled".format(label))
-            raise RecognitionError("{}: {}".format(label, e))
-        except RuntimeError as e:  # a C++ exception that is not one of the core's own
-            raise RecognitionError("{}: recognition failed: {}".format(label, e))
+                raise RecognitionCancelled("{}: recognition cancelled".format(label)) from None
+            raise
         result = json.loads(text)
         for w in result.get("warnings", []):
             FreeCAD.Console.PrintWarning("AeroNC: {}: {}\n".format(label, w))

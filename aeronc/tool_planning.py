@@ -15,7 +15,7 @@ import FreeCAD
 
 from aeronc import knowledge_base, pathcompat
 from aeronc.objects import machining_features
-from aeronc.objects.base import add_property, descendants, proxy_type
+from aeronc.objects.base import descendants, proxy_type
 from aeronc.objects.transaction import in_transaction
 from aeronc.objects.domain_element import TYPE as ELEMENT_TYPE
 
@@ -27,40 +27,27 @@ def _element_objects(group):
 
 
 def _set_plan_properties(group, plan, material, machine):
-    g = "Tools"
-    add_property(group, "App::PropertyString", "Material", g, "Workpiece material of the tool plan", material, True)
-    add_property(group, "App::PropertyString", "Machine", g, "Machine of the tool plan (spindle limit)", machine, True)
-    add_property(group, "App::PropertyInteger", "ToolChangesBefore", g, "Roughing tool changes before merging",
-                 plan["toolChanges"]["before"], True)
-    add_property(group, "App::PropertyInteger", "ToolChangesAfter", g, "Roughing tool changes after merging",
-                 plan["toolChanges"]["after"], True)
-    add_property(group, "App::PropertyFloat", "RoughingMinutesBefore", g, "Estimated roughing time before merging",
-                 plan["timeMin"]["before"] or 0.0, True)
-    add_property(group, "App::PropertyFloat", "RoughingMinutesAfter", g, "Estimated roughing time after merging",
-                 plan["timeMin"]["after"] or 0.0, True)
-    add_property(group, "App::PropertyString", "ToolPlan", g, "Tool plan (JSON)",
-                 json.dumps(plan, separators=(",", ":")), True, hidden=True)
+    """Write the plan into the properties the proxies declare (group "Tools")."""
+    group.Material, group.Machine = material, machine
+    group.ToolChangesBefore, group.ToolChangesAfter = plan["toolChanges"]["before"], plan["toolChanges"]["after"]
+    group.RoughingMinutesBefore = plan["timeMin"]["before"] or 0.0
+    group.RoughingMinutesAfter = plan["timeMin"]["after"] or 0.0
+    group.ToolPlan = json.dumps(plan, separators=(",", ":"))
 
     objs = _element_objects(group)
     for e in plan["elements"]:
         obj = objs.get(e["id"])
         if obj is None:
             continue
-        add_property(obj, "App::PropertyString", "FinishingTool", g, "Largest tool that finishes the element",
-                     e["finishingTool"] or "", True)
-        add_property(obj, "App::PropertyString", "RoughingTool", g,
-                     "First tool, largest down, whose machinable ratio meets eta_min", e["roughingTool"] or "", True)
-        add_property(obj, "App::PropertyFloat", "MachinableRatio", g, "eta = A_m / A of the roughing tool",
-                     e["eta"] if e["eta"] is not None else 0.0, True)
-        add_property(obj, "App::PropertyInteger", "NarrowPassages", g,
-                     "Passages narrower than the roughing tool", e["narrowPassages"] or 0, True)
-        add_property(obj, "App::PropertyString", "ToolError", g, "Why a tool is missing", e["error"] or "", True)
+        obj.FinishingTool, obj.RoughingTool = e["finishingTool"] or "", e["roughingTool"] or ""
+        obj.MachinableRatio = e["eta"] if e["eta"] is not None else 0.0
+        obj.NarrowPassages = e["narrowPassages"] or 0
+        obj.ToolError = e["error"] or ""
     for h in plan["holes"]:
         obj = objs.get(h["id"])
         if obj is None:
             continue
-        add_property(obj, "App::PropertyString", "Drill", g, "Drill of the hole's diameter", h["drill"] or "", True)
-        add_property(obj, "App::PropertyString", "ToolError", g, "Why a tool is missing", h["error"] or "", True)
+        obj.Drill, obj.ToolError = h["drill"] or "", h["error"] or ""
 
 
 def _tool_controllers(doc, job, plan, kb):

@@ -1,5 +1,10 @@
-"""GUI commands of AeroNC (installed as aeronc.commands). Cheap to import: FreeCAD
-registers them at start-up; the work they do is imported when they run."""
+"""GUI commands of AeroNC and the hook into the Path workbench, imported as aeronc.commands.
+
+The folder is commands/ at the top of the source tree; it installs as
+<Mod>/AeroNC/aeronc/commands, so that no module with a generic name (commands, panels) lands
+on FreeCAD's sys.path. Cheap to import: FreeCAD registers the commands at start-up; the work
+they do is imported when they run. base.py holds what every command shares.
+"""
 import FreeCADGui
 
 COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_EditKnowledgeBase"]

@@ -1,19 +1,16 @@
 """AeroNC_EditKnowledgeBase: browse and edit the machining knowledge base."""
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
-class EditKnowledgeBase:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("KnowledgeBase"),
-                "MenuText": "Knowledge base...",
-                "ToolTip": "Browse and edit the machining knowledge base: tools, cutting data, machines, "
-                           "materials and rules; import and export FreeCAD tool libraries"}
+class EditKnowledgeBase(Command):
+    ICON = "KnowledgeBase"
+    MENU_TEXT = "Knowledge base..."
+    TOOLTIP = ("Browse and edit the machining knowledge base: tools, cutting data, machines, "
+               "materials and rules; import and export FreeCAD tool libraries")
+    NEEDS_DOCUMENT = False
 
-    def IsActive(self):
-        return not FreeCADGui.Control.activeDialog()
-
-    def Activated(self):
+    def run(self, target):
         from aeronc.panels.knowledge_base_panel import KnowledgeBasePanel
         FreeCADGui.Control.showDialog(KnowledgeBasePanel())

@@ -2,7 +2,7 @@
 ToolController of the selected Job, by the cutting-parameter optimiser."""
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
 def selected_target():
@@ -24,22 +24,17 @@ def selected_target():
     return None
 
 
-class OptimiseCutting:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("OptimiseCutting"),
-                "MenuText": "Optimise cutting parameters",
-                "ToolTip": "Choose the spindle speed and feed per tooth of the selected ToolController (or of every "
-                           "ToolController of the selected Job) for least time and cost, within the machine's force, "
-                           "power, feed and speed limits and the roughness limit; a_p and a_e come from the "
-                           "operations' paths"}
+class OptimiseCutting(Command):
+    ICON = "OptimiseCutting"
+    MENU_TEXT = "Optimise cutting parameters"
+    TOOLTIP = ("Choose the spindle speed and feed per tooth of the selected ToolController (or of every "
+               "ToolController of the selected Job) for least time and cost, within the machine's force, "
+               "power, feed and speed limits and the roughness limit; a_p and a_e come from the "
+               "operations' paths")
 
-    def IsActive(self):
-        return FreeCADGui.ActiveDocument is not None and not FreeCADGui.Control.activeDialog() \
-            and selected_target() is not None
+    def target(self):
+        return selected_target()
 
-    def Activated(self):
-        target = selected_target()
-        if target is None:
-            return
+    def run(self, target):
         from aeronc.panels.optimise_cutting_panel import OptimiseCuttingPanel
         FreeCADGui.Control.showDialog(OptimiseCuttingPanel(target))

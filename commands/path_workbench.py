@@ -17,8 +17,10 @@ TOOLBAR = "AeroNC"
 
 
 def install():
-    """Register the commands and hook into the Path workbench (called from InitGui)."""
-    from aeronc import commands
+    """Register the commands and the view providers, and hook into the Path workbench (called
+    from InitGui)."""
+    from aeronc import commands, viewproviders
+    viewproviders.install()
     commands.register()
     FreeCADGui.getMainWindow().workbenchActivated.connect(_on_workbench_activated)
 

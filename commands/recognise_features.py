@@ -1,7 +1,7 @@
 """AeroNC_RecogniseFeatures: open the recognition task panel for the selected solid part."""
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
 def selected_solid():
@@ -18,21 +18,16 @@ def selected_solid():
         return None
 
 
-class RecogniseFeatures:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("RecogniseFeatures"),
-                "MenuText": "Recognise machining features",
-                "ToolTip": "Recognise the pockets, openings and holes of the selected solid part "
-                           "by layered slicing, per setup direction, and add the machining-domain "
-                           "tree to the document"}
+class RecogniseFeatures(Command):
+    ICON = "RecogniseFeatures"
+    MENU_TEXT = "Recognise machining features"
+    TOOLTIP = ("Recognise the pockets, openings and holes of the selected solid part "
+               "by layered slicing, per setup direction, and add the machining-domain "
+               "tree to the document")
 
-    def IsActive(self):
-        return FreeCADGui.ActiveDocument is not None and not FreeCADGui.Control.activeDialog() \
-            and selected_solid() is not None
+    def target(self):
+        return selected_solid()
 
-    def Activated(self):
-        part = selected_solid()
-        if part is None:
-            return
+    def run(self, part):
         from aeronc.panels.recognise_panel import RecognisePanel
         FreeCADGui.Control.showDialog(RecognisePanel(part=part))

@@ -1,7 +1,7 @@
 """AeroNC_SelectTools: plan the tools of the selected Machining Features tree."""
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
 def selected_machining_features():
@@ -21,21 +21,16 @@ def selected_machining_features():
     return None
 
 
-class SelectTools:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("SelectTools"),
-                "MenuText": "Select tools",
-                "ToolTip": "Choose the finishing and roughing tool of every pocket and the drill of every hole "
-                           "of the selected Machining Features from the knowledge base, merge roughing tool "
-                           "groups, and make the ToolControllers in the part's Job"}
+class SelectTools(Command):
+    ICON = "SelectTools"
+    MENU_TEXT = "Select tools"
+    TOOLTIP = ("Choose the finishing and roughing tool of every pocket and the drill of every hole "
+               "of the selected Machining Features from the knowledge base, merge roughing tool "
+               "groups, and make the ToolControllers in the part's Job")
 
-    def IsActive(self):
-        return FreeCADGui.ActiveDocument is not None and not FreeCADGui.Control.activeDialog() \
-            and selected_machining_features() is not None
+    def target(self):
+        return selected_machining_features()
 
-    def Activated(self):
-        group = selected_machining_features()
-        if group is None:
-            return
+    def run(self, group):
         from aeronc.panels.select_tools_panel import SelectToolsPanel
         FreeCADGui.Control.showDialog(SelectToolsPanel(group))

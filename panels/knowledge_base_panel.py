@@ -13,6 +13,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import knowledge_base
+from aeronc.errors import KnowledgeBaseError, from_core
 
 
 def show_error(text):
@@ -152,9 +153,10 @@ class KnowledgeBasePanel:
             if not t.pending():
                 continue
             try:
-                t.save(self.kb)
-                t.load(self.kb)
-            except RuntimeError as e:
+                with from_core(KnowledgeBaseError):
+                    t.save(self.kb)
+                    t.load(self.kb)
+            except KnowledgeBaseError as e:
                 ok = False
                 self.tabs.setCurrentWidget(t.widget)
                 show_error(str(e))
@@ -173,8 +175,9 @@ class KnowledgeBasePanel:
             if not path:
                 return 0
         try:
-            n = self.kb.import_freecad_library(path, tool_material)
-        except RuntimeError as e:
+            with from_core(KnowledgeBaseError):
+                n = self.kb.import_freecad_library(path, tool_material)
+        except KnowledgeBaseError as e:
             show_error(str(e))
             return 0
         FreeCAD.Console.PrintMessage("AeroNC: imported {} tools from {}\n".format(n, path))
@@ -198,8 +201,9 @@ class KnowledgeBasePanel:
             if not folder:
                 return []
         try:
-            written = self.kb.export_freecad_library(name, folder)
-        except RuntimeError as e:
+            with from_core(KnowledgeBaseError):
+                written = self.kb.export_freecad_library(name, folder)
+        except KnowledgeBaseError as e:
             FreeCAD.Console.PrintLog(traceback.format_exc())
             show_error(str(e))
             return []

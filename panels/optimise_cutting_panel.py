@@ -15,6 +15,7 @@ from PySide import QtCore, QtGui
 
 from aeronc import cutting_optimisation as co
 from aeronc import knowledge_base
+from aeronc.errors import AeroNCError
 from aeronc.panels.result_table import add_run_and_results
 
 COLUMNS = ["ToolController", "Operation", "a_p \u00d7 a_e mm", "n r/min", "v_f mm/min", "Active limits / problem"]
@@ -179,11 +180,16 @@ class OptimiseCuttingPanel:
                                         self.kb_path, self.method.currentData(),
                                         {"roughing": self.ra_roughing.value(), "finishing": self.ra_finishing.value()},
                                         self._economics(), MAP_POINTS, report)
-        except Exception as e:
-            FreeCAD.Console.PrintLog(traceback.format_exc())
+        except AeroNCError as e:
             self.proposals = []
             self._fill()
             show_error(str(e))
+            return False
+        except Exception as e:  # a bug: report it with its traceback, keep FreeCAD alive
+            FreeCAD.Console.PrintError(traceback.format_exc())
+            self.proposals = []
+            self._fill()
+            show_error("unexpected error: {}".format(e))
             return False
         finally:
             progress.close()
@@ -267,9 +273,12 @@ class OptimiseCuttingPanel:
     def accept(self):
         try:
             written = co.apply(self.proposals)
-        except Exception as e:
-            FreeCAD.Console.PrintLog(traceback.format_exc())
+        except AeroNCError as e:
             show_error(str(e))
+            return False
+        except Exception as e:  # a bug: report it with its traceback, keep FreeCAD alive
+            FreeCAD.Console.PrintError(traceback.format_exc())
+            show_error("unexpected error: {}".format(e))
             return False
         FreeCAD.Console.PrintMessage("AeroNC: cutting parameters written to {}\n".format(
             ", ".join(tc.Label for tc in written)))

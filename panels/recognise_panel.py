@@ -139,7 +139,7 @@ class RecognisePanel:
         self.chord.setValue(s["chord_tolerance"])
 
     def settings(self):
-        """The form as keyword arguments of create/update_machining_features."""
+        """The form as keyword arguments of makers.create/update_machining_features."""
         dirs = DIRECTION_CHOICES[self.direction.currentIndex()][1]
         if dirs is None:
             v = [s.value() for s in self.custom]
@@ -159,7 +159,7 @@ class RecognisePanel:
     def run(self):
         """Recognise with the form's settings; returns the group, or None on failure or
         cancel (reported). Never raises."""
-        from aeronc import objects
+        from aeronc import makers, objects
         dialog = QtGui.QProgressDialog("Recognising machining features\u2026", "Cancel", 0, 1000,
                                        FreeCADGui.getMainWindow())
         dialog.setWindowTitle("AeroNC")
@@ -176,10 +176,10 @@ class RecognisePanel:
         try:
             settings = self.settings()
             if self.group is None:
-                group = objects.create_machining_features(self.doc, self.part, progress=progress,
+                group = makers.create_machining_features(self.doc, self.part, progress=progress,
                                                           report=False, **settings)
             else:
-                group = objects.update_machining_features(self.group, progress=progress,
+                group = makers.update_machining_features(self.group, progress=progress,
                                                           report=False, **settings)
         except recognition.RecognitionCancelled:
             FreeCAD.Console.PrintMessage("AeroNC: recognition cancelled\n")
@@ -189,7 +189,7 @@ class RecognisePanel:
             self.status.setText("Failed: {}".format(e))
             show_error(str(e))
             return None
-        except Exception as e:  # a bug: report it, keep FreeCAD alive
+        except Exception as e:  # a bug: report it with its traceback, keep FreeCAD alive
             FreeCAD.Console.PrintError(traceback.format_exc())
             self.status.setText("Failed: {}".format(e))
             show_error("unexpected error: {}".format(e))

@@ -13,6 +13,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import knowledge_base, tool_planning
+from aeronc.errors import AeroNCError
 from aeronc.panels.result_table import add_run_and_results
 
 COLUMNS = ["Element", "Type", "Finishing", "Roughing", "\u03b7", "Narrow", "Problem"]
@@ -91,9 +92,12 @@ class SelectToolsPanel:
             self.plan, job, tcs = tool_planning.select_tools(self.group, self.material.currentText(),
                                                              self.machine.currentText(), self.kb_path,
                                                              progress=report)
-        except Exception as e:
-            FreeCAD.Console.PrintLog(traceback.format_exc())
+        except AeroNCError as e:
             show_error(str(e))
+            return False
+        except Exception as e:  # a bug: report it with its traceback, keep FreeCAD alive
+            FreeCAD.Console.PrintError(traceback.format_exc())
+            show_error("unexpected error: {}".format(e))
             return False
         finally:
             progress.close()

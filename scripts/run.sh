@@ -20,6 +20,7 @@ if [ ! -f "$BUILD/build.ninja" ]; then
   cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$BUILD" -j "$(nproc)"
+rm -rf "$STAGE/AeroNC"  # afresh: a module moved or removed in the source must not linger here
 cmake --install "$BUILD" --prefix "$STAGE" > /dev/null
 
 # FreeCAD run with a private HOME so nothing touches the user's settings.
@@ -34,12 +35,12 @@ case "${1:-}" in
   demo)
     out=$ROOT/out/demo
     mkdir -p "$out"
-    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/demo.py"
+    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py"
     ;;
   post)
     out=$ROOT/out/post
     mkdir -p "$out"
-    HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/post/sample.py"
+    HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$ROOT/scripts/post_sample.py"
     ;;
   test)
     ctest --test-dir "$BUILD" --output-on-failure
@@ -48,7 +49,7 @@ case "${1:-}" in
     cmake --build "$BUILD" --target bench
     ;;
   install)
-    cmake --install "$BUILD"
+    cmake --install "$BUILD" --component addon  # without the tests
     ;;
   *)
     echo "usage: scripts/run.sh demo|post|test|bench|install" >&2

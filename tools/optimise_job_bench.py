@@ -14,6 +14,7 @@ import time
 
 def build(doc, tcs, ops):
     from aeronc import pathcompat
+    from aeronc.tests import pathcompat as test_pathcompat
     from aeronc.tests.app.support import end_mill, make_pocket_job
     _, job, pocket = make_pocket_job(doc)
     controllers = []
@@ -25,7 +26,7 @@ def build(doc, tcs, ops):
     doc.recompute()
     gcode = [line for line in pocket.Path.toGCode().splitlines() if line and not line.startswith("(")]
     for k in range(ops - 1):
-        op = pathcompat.create_custom_operation("Copy{}".format(k), gcode)
+        op = test_pathcompat.create_custom_operation("Copy{}".format(k), gcode)
         op.ToolController = controllers[(k + 1) % tcs]
     doc.recompute()
     return job, sum(len(o.Path.Commands) for o in job.Operations.Group)

@@ -50,7 +50,8 @@ def timed(post, objects, filename, args):
 def main():
     import FreeCAD
     from aeronc import pathcompat
-    linuxcnc_post = pathcompat.builtin_post("linuxcnc")
+    from aeronc.tests import pathcompat as test_pathcompat
+    linuxcnc_post = test_pathcompat.builtin_post("linuxcnc")
 
     moves = int(os.environ.get("AERONC_BENCH_MOVES", "200000"))
     out = tempfile.mkdtemp(prefix="aeronc_post_bench_")
@@ -65,12 +66,12 @@ def main():
         note = " (ignores the tool axis)" if oriented else ""
         print("  {:<34} {:>8} lines {:7.2f} s {:>10.0f} lines/s{}".format("FreeCAD linuxcnc_post", base_lines, base_t, base, note))
         for name, args, ext in (("aeronc_linuxcnc", "", "ngc"), ("aeronc_840d", "", "mpf")):
-            t, lines = timed(pathcompat.post_processor(name), objects, os.path.join(out, name + "." + ext), args)
+            t, lines = timed(test_pathcompat.post_processor(name), objects, os.path.join(out, name + "." + ext), args)
             print("  {:<34} {:>8} lines {:7.2f} s {:>10.0f} lines/s  {:5.1f}x linuxcnc_post".format(
                 name, lines, t, lines / t, (lines / t) / base))
         FreeCAD.closeDocument(doc.Name)
 
 
-from aeronc.script import run  # noqa: E402  (on the path from the installed addon)
+from aeronc.tests.script import run  # noqa: E402  (on the path from the installed addon)
 
 run(main)

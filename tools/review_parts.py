@@ -42,6 +42,6 @@ def main():
     os.replace(os.path.join(out, "summary.md.part"), os.path.join(out, "summary.md"))
 
 
-from aeronc.script import run  # noqa: E402
+from aeronc.tests.script import run  # noqa: E402
 
 run(main)

@@ -2,8 +2,28 @@
 
 The proxy keeps no state of its own: everything lives in document properties, so a saved
 document reopens with the proxy rebuilt from its class path (`aeronc.objects.<module>.<class>`).
+Each proxy declares every property its objects have (`declare`); a document saved by an
+older version gets the ones it lacks when it is opened.
+
+The App side never imports the GUI. View providers are given by whatever the GUI registers
+with `set_view_attacher` at start-up (aeronc.viewproviders.install); headless, nothing is.
 """
-import FreeCAD
+
+_view_attacher = None
+
+
+def set_view_attacher(attach):
+    """Register attach(obj, restoring) as the one that gives AeroNC's objects their view
+    providers (the GUI does, at start-up); None unregisters it."""
+    global _view_attacher
+    _view_attacher = attach
+
+
+def attach_views(objs, restoring=False):
+    """Ask the GUI, if it registered, for the view providers of objs."""
+    if _view_attacher is not None:
+        for obj in objs:
+            _view_attacher(obj, restoring)
 
 
 class BaseProxy:
@@ -13,11 +33,14 @@ class BaseProxy:
         obj.Proxy = self
         self.Type = type(self).Type
 
+    def declare(self, obj):
+        """Add the properties of this kind of object that obj lacks (all of them for a new
+        object); existing ones keep their values."""
+
     def onDocumentRestored(self, obj):
+        self.declare(obj)  # properties newer than the document
         # A document made headless (freecadcmd) has no view-provider proxies; give it some.
-        if FreeCAD.GuiUp:
-            from aeronc import viewproviders
-            viewproviders.attach(obj, restoring=True)
+        attach_views([obj], restoring=True)
 
     # FreeCAD 0.20 pickles proxies with __getstate__/__setstate__, 0.21+ with dumps/loads.
     def __getstate__(self):
@@ -33,10 +56,19 @@ class BaseProxy:
         self.__setstate__(state)
 
 
+def declare_property(obj, type_, name, group, doc, default=None, read_only=False, hidden=False):
+    """Add a property obj lacks and give it its default; an existing one is left as it is."""
+    if name in obj.PropertiesList:
+        return
+    obj.addProperty(type_, name, group, doc, 0, read_only, hidden)
+    if default is not None:
+        setattr(obj, name, default)
+
+
 def add_property(obj, type_, name, group, doc, value=None, read_only=False, hidden=False):
-    """Add a dynamic property once (restored documents already have it) and set its value."""
-    if name not in obj.PropertiesList:
-        obj.addProperty(type_, name, group, doc, 0, read_only, hidden)
+    """Add a dynamic property once and set its value: for AeroNC's marks on objects it does not
+    own (FreeCAD's ToolControllers)."""
+    declare_property(obj, type_, name, group, doc, None, read_only, hidden)
     if value is not None:
         setattr(obj, name, value)
 
@@ -52,9 +84,3 @@ def descendants(obj):
     for child in getattr(obj, "Group", []):
         out += descendants(child) + [child]
     return out
-
-
-def face_links(part, face_numbers):
-    """PropertyLinkSubList value: [(part, ("Face3", ...))] for 1-based face numbers."""
-    subs = tuple("Face{}".format(n) for n in sorted(set(face_numbers)))
-    return [(part, subs)] if subs and part is not None else []

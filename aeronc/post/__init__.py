@@ -7,8 +7,6 @@
   apt          APT CL files: write from FreeCAD objects, post an APT file to NC
   install      the thin *_post.py files in FreeCAD's post search folder
 The per-move work (parsing, kinematics, formatting) runs in the C++ core (aeronc._core).
+Imported as aeronc.post (installed in <Mod>/AeroNC/aeronc/post); runs without FreeCAD too.
 """
-
-
-class PostError(RuntimeError):
-    """A post failed; the message names the operation and the move, and says what to change."""
+from aeronc.errors import PostError  # noqa: F401  (the posts' error, aeronc.post.PostError)

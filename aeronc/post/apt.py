@@ -12,7 +12,7 @@ From a shell, with the built core on the path (no FreeCAD needed):
 import os
 import sys
 
-from aeronc.post import PostError
+from aeronc.errors import PostError, from_core
 from aeronc.post.output import write_atomically
 
 TOOLTIP = """AeroNC APT CL output: the tool tip and tool axis of every move (GOTO/x,y,z,i,j,k)
@@ -24,10 +24,9 @@ def export(objectslist, filename, argstring):
     from aeronc import _core
     from aeronc.post import job, nc_post
     opts, _ = nc_post.options(argstring, "840d", filename, nc_post._job_label(objectslist))
-    try:
-        text = _core.write_apt(job.sections_for(objectslist), opts["program_name"])
-    except _core.PostError as e:
-        raise PostError(str(e)) from None
+    sections = job.sections_for(objectslist)
+    with from_core(PostError):
+        text = _core.write_apt(sections, opts["program_name"])
     if filename and filename != "-":
         write_atomically(filename, text)
     return text
@@ -39,10 +38,8 @@ def post_apt_text(apt_text, argstring="", dialect="840d", program_name="AERONC")
     from aeronc.post import machines, nc_post
     opts, a = nc_post.options(argstring, dialect, None, program_name)
     machine_json, source = machines.load(a.machine, a.machine_file)
-    try:
+    with from_core(PostError):
         data, summary = _core.post_apt(apt_text, machine_json, source, __import__("json").dumps(opts))
-    except _core.PostError as e:
-        raise PostError(str(e)) from None
     return data.decode("utf-8"), summary
 
 

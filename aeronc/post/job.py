@@ -5,7 +5,7 @@ a clearance move), tool controllers, operations (dressups and compounds included
 itself in the list is expanded the same way. Every Path is handed over as its G-code text
 (Path.toGCode(), the form FreeCAD saves), so the per-move work happens in C++."""
 from aeronc import pathcompat
-from aeronc.post import PostError
+from aeronc.errors import PostError
 
 
 def _quantity(v):

@@ -5,7 +5,7 @@ and offset vectors, so the posts read the whole geometry from the machine file; 
 the file's limits equal to the knowledge base's."""
 import os
 
-from aeronc.post import PostError
+from aeronc.errors import PostError
 
 DEFAULT_MACHINE = "AC-5AX"
 

@@ -9,7 +9,8 @@ import json
 import os
 import shlex
 
-from aeronc.post import PostError, machines
+from aeronc.errors import PostError, from_core
+from aeronc.post import machines
 from aeronc.post.output import write_atomically
 
 TOOLTIP_840D = """AeroNC 5-axis post for a Siemens Sinumerik 840D: CYCLE800 planes for 3+2
@@ -113,10 +114,8 @@ def post_sections(sections, argstring, dialect, filename=None, default_name="AER
     from aeronc import _core
     opts, a = options(argstring, dialect, filename, default_name)
     machine_json, source = machines.load(a.machine, a.machine_file)
-    try:
+    with from_core(PostError):
         data, summary = _core.post_nc(sections, machine_json, source, json.dumps(opts))
-    except _core.PostError as e:
-        raise PostError(str(e)) from None
     return data.decode("utf-8"), summary
 
 

@@ -1,5 +1,13 @@
-"""GUI side of AeroNC's document objects. Import only when FreeCAD.GuiUp."""
-from aeronc.objects.base import proxy_type
+"""GUI side of AeroNC's document objects, imported as aeronc.viewproviders. GUI only: no App
+module imports it; install() (at GUI start-up) registers attach() with the App side, which
+calls it for the objects the makers create and for objects restored without view providers.
+"""
+from aeronc.objects.base import proxy_type, set_view_attacher
+
+
+def install():
+    """Give AeroNC's objects their view providers from now on (called once at GUI start-up)."""
+    set_view_attacher(attach)
 
 
 def attach(obj, restoring=False):

@@ -76,7 +76,8 @@ class ViewMachiningFeatures(BaseView):
         self.saved_colours, self.source_name = None, None
 
     def onDelete(self, vobj, subelements):
-        # Deleting the root deletes the whole tree, and the part gets its colours back.
+        # Deleting the root deletes the whole tree, and the part gets its colours back
+        # (makers.remove_machining_features hides the group first, which does the same).
         self.restore_source()
         obj = vobj.Object
         doc = obj.Document

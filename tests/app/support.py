@@ -39,6 +39,7 @@ def make_pocket_job(doc):
     headless, Path's operations cannot choose between several). Returns (part, job, pocket)."""
     import Part
     from aeronc import pathcompat
+    from aeronc.tests import pathcompat as test_pathcompat
     block = Part.makeBox(120, 80, 30).cut(Part.makeBox(60, 40, 10, FreeCAD.Vector(30, 20, 20)))
     part = doc.addObject("Part::Feature", "Block")
     part.Shape = block
@@ -48,7 +49,7 @@ def make_pocket_job(doc):
     floor = [i + 1 for i, f in enumerate(block.Faces)
              if abs(f.Surface.Axis.z) > 0.99 and abs(f.CenterOfMass.z - 20) < 1e-6]
     assert len(floor) == 1, floor
-    pocket = pathcompat.create_pocket_shape("Pocket")
+    pocket = test_pathcompat.create_pocket_shape("Pocket")
     pocket.Base = [(job.Model.Group[0], ["Face{}".format(floor[0])])]  # the Job's clone of the block
     pocket.setExpression("StepDown", None)  # the setup sheet's default is the tool diameter
     pocket.StepDown = "3 mm"

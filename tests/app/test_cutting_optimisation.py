@@ -9,8 +9,7 @@ import unittest
 import FreeCAD
 
 from aeronc import cutting_optimisation as co
-from aeronc import knowledge_base, pathcompat, tool_planning
-from aeronc.objects import machining_features
+from aeronc import knowledge_base, makers, pathcompat, tool_planning
 from aeronc.tests.app.support import end_mill, make_panel_object, make_pocket_job, new_document, temp_fcstd
 
 
@@ -188,7 +187,7 @@ class SelectedToolsTest(unittest.TestCase):
         try:
             kb_path = os.path.join(tmp, "kb.sqlite")
             part, _ = make_panel_object(doc, {"pocketsX": 2, "pocketsY": 1})
-            group = machining_features.create_machining_features(doc, part, directions=[(0, 0, 1)])
+            group = makers.create_machining_features(doc, part, directions=[(0, 0, 1)])
             _, job, tcs = tool_planning.select_tools(group, "7050-T7451", machine="AC-5AX", kb_path=kb_path)
             # Material and machine come from what Select tools recorded.
             proposals = co.propose(job, kb_path=kb_path)

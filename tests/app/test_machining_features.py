@@ -5,7 +5,7 @@ import unittest
 import FreeCAD
 import Part
 
-from aeronc import objects, recognition
+from aeronc import makers, objects, recognition
 from aeronc.objects.domain_element import DomainElement
 from aeronc.objects.machining_features import MachiningFeatures
 from aeronc.objects.setup_direction import SetupDirection
@@ -81,7 +81,7 @@ class TestMachiningFeatures(unittest.TestCase):
                               if objects.proxy_type(o) == objects.DOMAIN_ELEMENT]), len(elements))
 
     def test_build_save_reopen(self):
-        group = objects.create_machining_features(self.doc, self.part, directions=BOTH_SIDES, allowance=2.0)
+        group = makers.create_machining_features(self.doc, self.part, directions=BOTH_SIDES, allowance=2.0)
         self.assertTrue(objects.is_machining_features(group))
         self.assertGreater(group.ElementCount, 0)
         self.assertTreeMatches(group, self.part)
@@ -107,9 +107,49 @@ class TestMachiningFeatures(unittest.TestCase):
         self.assertTreeMatches(group, part)
         self.assertEqual(objects.settings_of(group)["allowance"], 2.0)
 
+    def test_a_document_of_an_older_version_gets_the_properties_it_lacks(self):
+        group = makers.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
+        elements = [o for o in aeronc_objects(self.doc) if objects.proxy_type(o) == objects.DOMAIN_ELEMENT]
+        holes = [o for o in elements if o.ElementType == "hole"]
+        milled = [o for o in elements if o.ElementType != "hole"]
+        self.assertTrue(holes and milled)
+        # Before Select tools kept its plan in the proxies' properties, a tree had none of them.
+        plan_props = ["Material", "Machine", "ToolChangesBefore", "ToolChangesAfter", "RoughingMinutesBefore",
+                      "RoughingMinutesAfter", "ToolPlan"]
+        for name in plan_props:
+            group.removeProperty(name)
+        for o in milled:
+            for name in ("FinishingTool", "RoughingTool", "MachinableRatio", "NarrowPassages", "ToolError",
+                         "FloorFilletRadius"):
+                o.removeProperty(name)
+        for o in holes:
+            for name in ("Drill", "ToolError"):
+                o.removeProperty(name)
+        self.assertNotIn("Material", group.PropertiesList)
+        depths = {o.Name: o.Depth.Value for o in elements}
+        name, path = group.Name, support.temp_fcstd("older")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        group = self.doc.getObject(name)
+        for name in plan_props:
+            self.assertIn(name, group.PropertiesList)
+        self.assertEqual((group.Material, group.ToolPlan, group.ToolChangesAfter), ("", "", 0))
+        for name, depth in depths.items():
+            o = self.doc.getObject(name)
+            self.assertAlmostEqual(o.Depth.Value, depth, places=9)  # restored values stay
+            self.assertEqual(o.ToolError, "")
+            if o.ElementType == "hole":
+                self.assertEqual(o.Drill, "")
+                self.assertNotIn("RoughingTool", o.PropertiesList)
+            else:
+                self.assertEqual((o.RoughingTool, o.MachinableRatio, o.FloorFilletRadius.Value), ("", 0.0, 0.0))
+                self.assertNotIn("HoleDiameter", o.PropertiesList)
+        self.assertTreeMatches(group, self.doc.getObject("Panel"))
+
     def test_undo_removes_the_whole_tree_in_one_step(self):
         before = self.doc.UndoCount
-        objects.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
+        makers.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
         self.assertEqual(self.doc.UndoCount, before + 1)
         self.assertTrue(aeronc_objects(self.doc))
         self.doc.undo()
@@ -124,7 +164,7 @@ class TestMachiningFeatures(unittest.TestCase):
         self.doc.recompute()
         names, undo = [o.Name for o in self.doc.Objects], self.doc.UndoCount
         with self.assertRaises(recognition.RecognitionError) as ctx:
-            objects.create_machining_features(self.doc, face)
+            makers.create_machining_features(self.doc, face)
         self.assertIn("Face", str(ctx.exception))  # names the object
         self.assertIn("not a solid", str(ctx.exception))
         self.assertEqual([o.Name for o in self.doc.Objects], names)
@@ -132,40 +172,39 @@ class TestMachiningFeatures(unittest.TestCase):
 
     def test_failure_while_building_rolls_back(self):
         # A failure after recognition, while objects are being made, must not leave half a tree.
-        from aeronc.objects import machining_features
         names, undo = [o.Name for o in self.doc.Objects], self.doc.UndoCount
 
         def boom(objs):
             raise RuntimeError("boom")
-        saved = machining_features._attach_view
-        machining_features._attach_view = boom
+        saved = makers.attach_views
+        makers.attach_views = boom
         try:
             with self.assertRaisesRegex(RuntimeError, "boom"):
-                objects.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
+                makers.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
         finally:
-            machining_features._attach_view = saved
+            makers.attach_views = saved
         self.assertEqual([o.Name for o in self.doc.Objects], names)
         self.assertEqual(self.doc.UndoCount, undo)
 
     def test_cancel_leaves_the_document_unchanged(self):
         names = [o.Name for o in self.doc.Objects]
         with self.assertRaises(recognition.RecognitionCancelled):
-            objects.create_machining_features(self.doc, self.part, progress=lambda f, s: False)
+            makers.create_machining_features(self.doc, self.part, progress=lambda f, s: False)
         self.assertEqual([o.Name for o in self.doc.Objects], names)
 
     def test_update_and_remove(self):
-        group = objects.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
         self.assertEqual(group.SetupCount, 1)
         undo = self.doc.UndoCount
-        objects.update_machining_features(group, directions=BOTH_SIDES)
+        makers.update_machining_features(group, directions=BOTH_SIDES)
         self.assertEqual(self.doc.UndoCount, undo + 1)
         self.assertEqual(group.SetupCount, 2)
         self.assertTreeMatches(group, self.part)
-        objects.remove_machining_features(group)
+        makers.remove_machining_features(group)
         self.assertEqual(aeronc_objects(self.doc), [])
 
     def test_outdated_when_the_part_changes(self):
-        group = objects.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
         self.part.Shape = Part.makeBox(10, 10, 10)
         group.touch()
         self.doc.recompute()
@@ -183,7 +222,7 @@ class TestMachiningFeatures(unittest.TestCase):
         self.assertEqual(len(box), 6)
         self.assertLessEqual(box[0], bb.XMin)
         self.assertGreaterEqual(box[5], bb.ZMax)
-        group = objects.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)], blank=box)
+        group = makers.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)], blank=box)
         self.assertEqual(tuple(group.Blank), tuple(box))
         self.assertEqual(objects.settings_of(group)["blank"], tuple(box))
         self.assertTreeMatches(group, self.part)

@@ -16,6 +16,7 @@ import Path
 
 import aeronc
 from aeronc import pathcompat
+from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.post import PostError, apt, machines
 from aeronc.tests.app import post_support as ps
 
@@ -23,7 +24,7 @@ EXACT = "--precision 9 --angle-precision 10"
 
 
 def _load(name):
-    return pathcompat.post_processor(name)  # FreeCAD's own loader, as the Job uses
+    return test_pathcompat.post_processor(name)  # FreeCAD's own loader, as the Job uses
 
 
 class PostTest(unittest.TestCase):
@@ -52,7 +53,7 @@ class PostTest(unittest.TestCase):
 
     # -- listing -------------------------------------------------------------------------
     def test_posts_are_listed_in_the_job_dropdown_and_load(self):
-        posts = pathcompat.available_posts()
+        posts = test_pathcompat.available_posts()
         for name in ("aeronc_840d", "aeronc_linuxcnc", "aeronc_apt"):
             self.assertIn(name, posts)
             self.assertTrue(_load(name).tooltip)
@@ -130,8 +131,8 @@ class PostTest(unittest.TestCase):
         self.assertEqual(self.post("aeronc_840d", ""), before)
 
     def test_freecad_profile_posts_where_freecads_linuxcnc_post_puts_it(self):
-        linuxcnc_post = pathcompat.builtin_post("linuxcnc")
-        pathcompat.create_profile("Profile")
+        linuxcnc_post = test_pathcompat.builtin_post("linuxcnc")
+        test_pathcompat.create_profile("Profile")
         self.doc.recompute()
         ours = self.post("aeronc_linuxcnc", "--no-inverse-time")
         theirs = linuxcnc_post.export(pathcompat.job_post_objects(self.job), "-", "--no-show-editor")

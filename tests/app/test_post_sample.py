@@ -1,4 +1,4 @@
-"""The posts on the sample panel (aeronc/post/sample.py): FreeCAD's own Profile, 3+2 bevels, a
+"""The posts on the sample panel (post_sample_job.py): FreeCAD's own Profile, 3+2 bevels, a
 5-axis chamfer and drilling along the recognised hole axes. Every pose of the job comes back
 from the 840D and LinuxCNC programs through the forward kinematics, and LinuxCNC's rs274 (when
 installed) reads the LinuxCNC program without an error at the same positions."""
@@ -15,7 +15,8 @@ import Part
 
 import aeronc
 from aeronc import pathcompat
-from aeronc.post import machines, nc_post, sample
+from aeronc.post import machines, nc_post
+from aeronc.tests.app import post_sample_job
 from aeronc.tests.app import post_support as ps
 
 
@@ -47,7 +48,7 @@ class SamplePanelPostTest(unittest.TestCase):
         part = cls.doc.addObject("Part::Feature", "Part")
         part.Shape = Part.read(os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step"))
         cls.doc.recompute()
-        cls.job, cls.holes = sample.build_job(cls.doc, part)
+        cls.job, cls.holes = post_sample_job.build_job(cls.doc, part)
         cls.objects = pathcompat.job_post_objects(cls.job)
         cls.poses = expected_poses(cls.job)
         cls.machine_json, _ = machines.load("AC-5AX")

@@ -16,8 +16,9 @@ import FreeCAD
 import Part
 
 import aeronc
-from aeronc import _core, knowledge_base, pathcompat, recognition, tool_planning
+from aeronc import _core, knowledge_base, makers, pathcompat, recognition, tool_planning
 from aeronc.objects import machining_features
+from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
 
 PLAIN = {"pocketsX": 2, "pocketsY": 1, "islands": False, "openings": False, "lighteningHoles": False,
@@ -31,7 +32,7 @@ class SelectToolsTest(unittest.TestCase):
         self.tmp = tempfile.mkdtemp(prefix="aeronc_kb_")
         self.kb_path = os.path.join(self.tmp, "kb.sqlite")
         self.part, _ = make_panel_object(self.doc, PLAIN)
-        self.group = machining_features.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
+        self.group = makers.create_machining_features(self.doc, self.part, directions=[(0, 0, 1)])
 
     def tearDown(self):
         FreeCAD.closeDocument(self.doc.Name)
@@ -112,7 +113,8 @@ class SelectToolsTest(unittest.TestCase):
             tool_planning.select_tools(self.group, "7050-T7451", kb_path=corrupt)
         self.assertIn("not a database", str(ctx.exception))
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
-        self.assertFalse(hasattr(self.group, "Material"))
+        self.assertEqual((self.group.Material, self.group.ToolPlan), ("", ""))
+        self.assertFalse(any(getattr(o, "RoughingTool", "") for o in self.doc.Objects))
 
 
 @contextlib.contextmanager
@@ -162,7 +164,7 @@ class PlanFromStoredTreeTest(unittest.TestCase):
         part = self.doc.addObject("Part::Feature", "Part")
         part.Shape = Part.read(path)
         self.doc.recompute()
-        group = machining_features.create_machining_features(self.doc, part, directions=directions)
+        group = makers.create_machining_features(self.doc, part, directions=directions)
         with recognition_unavailable():
             plan, job, tcs = tool_planning.select_tools(group, self.MATERIAL, machine=self.MACHINE,
                                                         kb_path=self.kb_path)
@@ -195,7 +197,7 @@ class PlanFromStoredTreeTest(unittest.TestCase):
 
     def test_changed_or_damaged_tree_is_refused(self):
         part, _ = make_panel_object(self.doc, PLAIN)
-        group = machining_features.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
         before = set(o.Name for o in self.doc.Objects)
         # A stored tree the core cannot read: the error names the field, nothing is recorded.
         good = group.Result
@@ -222,7 +224,7 @@ class PlanFromStoredTreeTest(unittest.TestCase):
 
     def test_cancel_leaves_the_document_as_it_was(self):
         part, _ = make_panel_object(self.doc, PLAIN)
-        group = machining_features.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
         before = set(o.Name for o in self.doc.Objects)
         stages = []
 
@@ -261,8 +263,7 @@ class ToolLibraryBridgeTest(unittest.TestCase):
         doc = new_document("AeroNCBits")
         try:
             files = self.kb.export_tools("Chosen", ["EM-B16R2"], out)
-            from PathScripts import PathToolBit
-            bit = PathToolBit.Factory.CreateFrom(files[1], "ToolBit")
+            bit = test_pathcompat.tool_bit_from_file(files[1])
             self.assertAlmostEqual(bit.Diameter.Value, 16.0, places=6)
             self.assertAlmostEqual(bit.FlatRadius.Value, 8.0 - 2.0, places=6)
         finally:

@@ -27,14 +27,14 @@ from aeronc.tests.gui.harness import (  # noqa: E402
 
 HEADLESS_SCRIPT = """
 import os, FreeCAD, Part
-from aeronc import _core, objects
+from aeronc import _core, makers
 doc = FreeCAD.newDocument("Headless")
 shape = Part.Shape()
 shape.importBrepFromString(_core.make_panel('{{"pocketsX": 2, "pocketsY": 1}}')[0])
 part = doc.addObject("Part::Feature", "Panel")
 part.Shape = shape
 doc.recompute()
-objects.create_machining_features(doc, part, directions=[(0, 0, 1)])
+makers.create_machining_features(doc, part, directions=[(0, 0, 1)])
 doc.saveAs({path!r})
 os._exit(0)
 """
@@ -272,6 +272,23 @@ def run():
           all(o.ViewObject.Proxy is not None for o in aeronc_objects(doc)))
     check("headless document: tree shown, part coloured", group.ViewObject.Visibility and
           len(part.ViewObject.DiffuseColor) == len(part.Shape.Faces))
+
+    # removed from a script (the App side, no view provider called): the part gets its colours
+    # back, and undo brings the tree and the colours back
+    from aeronc import makers
+    count = len(aeronc_objects(doc))
+    doc.UndoMode = 1
+    makers.remove_machining_features(group)
+    pump()
+    check("script removal removes the tree", not aeronc_objects(doc), [o.Name for o in aeronc_objects(doc)])
+    check("script removal restores the part colours", len(part.ViewObject.DiffuseColor) == 1,
+          len(part.ViewObject.DiffuseColor))
+    doc.undo()
+    pump()
+    group = doc.getObject("MachiningFeatures")
+    check("undo of the removal brings the tree and the colours back", len(aeronc_objects(doc)) == count and
+          group.ViewObject.Visibility and len(part.ViewObject.DiffuseColor) == len(part.Shape.Faces),
+          (len(aeronc_objects(doc)), count, len(part.ViewObject.DiffuseColor)))
 
     # the panel offers the stock of a Path Job as the blank; Cancel closes it
     from aeronc import pathcompat

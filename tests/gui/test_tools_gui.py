@@ -28,7 +28,7 @@ from aeronc.tests.gui.harness import (  # noqa: E402
 def run():
     import json
     import tempfile
-    from aeronc import _core, knowledge_base, objects, pathcompat
+    from aeronc import _core, knowledge_base, makers, pathcompat
     from aeronc.panels import knowledge_base_panel, select_tools_panel
     from aeronc.panels.knowledge_base_panel import KnowledgeBasePanel
     from aeronc.panels.select_tools_panel import SelectToolsPanel
@@ -50,7 +50,7 @@ def run():
     part = doc.addObject("Part::Feature", "Panel")
     part.Shape = shape
     doc.recompute()
-    group = objects.create_machining_features(doc, part, directions=[(0, 0, 1)])
+    group = makers.create_machining_features(doc, part, directions=[(0, 0, 1)])
     pump()
 
     cmd = Gui.Command.get("AeroNC_SelectTools")
@@ -112,6 +112,23 @@ def run():
           sorted(set(o.Name for o in doc.Objects) - names_before))
 
     # -- the knowledge-base editor --------------------------------------------------------
+    # A knowledge base that cannot be opened: the command says why in a message box, opens nothing.
+    from aeronc.commands import base as command_base
+    shown = []
+    original_show_error = command_base.show_error
+    command_base.show_error = lambda title, text: shown.append((title, text))
+    os.rename(kb_path, kb_path + ".good")
+    try:
+        with open(kb_path, "wb") as f:
+            f.write(b"this is not a database" * 100)
+        Gui.runCommand("AeroNC_EditKnowledgeBase")
+        pump()
+        check("unreadable knowledge base: the command shows why",
+              len(shown) == 1 and shown[0][0] == "Knowledge base" and "not a database" in shown[0][1], shown)
+        check("unreadable knowledge base: no panel", not Gui.Control.activeDialog())
+    finally:
+        command_base.show_error = original_show_error
+        os.replace(kb_path + ".good", kb_path)
     Gui.runCommand("AeroNC_EditKnowledgeBase")
     pump()
     kbp = KnowledgeBasePanel.current

@@ -1,23 +1,17 @@
-"""The posts on the embedded sample panel, headless:
+"""The sample Job of the posts on the embedded sample panel, imported as
+aeronc.tests.app.post_sample_job (test_post_sample.py checks it; scripts/post_sample.py posts
+it to out/post).
 
-    AERONC_OUT=out/post freecadcmd <Mod>/AeroNC/aeronc/post/sample.py
-
-Builds a Path Job on resources/samples/sample_panel.step (top setup) with
+A Path Job on resources/samples/sample_panel.step (top setup) with
   1. Profile       FreeCAD's own 3-axis Profile of the outline (tool T1),
   2. EndBevels     30-degree bevels of the two short top edges, one indexed (3+2) plane each,
   3. EdgeChamfer   a 45-degree chamfer round the top edge, the tool turning round each corner
                    (simultaneous 5-axis),
   4. Holes         the recognised 6.6 mm holes drilled along their axes (tool T2),
-in AeroNC's tool-axis convention (U V W on every move, docs/post.md), and writes to AERONC_OUT
-  sample_panel.mpf   Sinumerik 840D program (machine AC-5AX)
-  sample_panel.ngc   LinuxCNC program (machine AC-5AX)
-  sample_panel.apt   APT CL file of the same job
-  camera.apt, camera.mpf   camera positions over four datum holes, normal to the surface,
-                     as APT and posted through the drilling/camera head (machine AC-HEAD)
-Exit code 0 on success.
+in AeroNC's tool-axis convention (U V W on every move, docs/post.md); and the APT file of a
+camera program over datum holes.
 """
 import math
-import os
 
 CHAMFER_TILT = 45.0
 BEVEL_TILT = 30.0
@@ -113,6 +107,7 @@ def _add_op(doc, job, label, commands, tc):
 def build_job(doc, part):
     """The sample Job on `part`; returns (job, recognised 6.6 mm holes)."""
     from aeronc import pathcompat, recognition
+    from aeronc.tests import pathcompat as test_pathcompat
 
     job = pathcompat.create_job(doc, [part])
     doc.recompute()
@@ -120,10 +115,10 @@ def build_job(doc, part):
     mill.Label = "TC: 5 mm end mill"
     mill.HorizFeed, mill.VertFeed, mill.SpindleSpeed = "1500 mm/min", "400 mm/min", 12000
     # FreeCAD 0.20 asks which tool to use (a dialog) when a Job has several: profile first.
-    profile = pathcompat.create_profile("Profile")
+    profile = test_pathcompat.create_profile("Profile")
     profile.ToolController = mill
     doc.recompute()
-    drill = pathcompat.add_tool_controller(job, "TC: 6.6 mm drill", 2)
+    drill = test_pathcompat.add_tool_controller(job, "TC: 6.6 mm drill", 2)
     drill.Tool.Diameter = 6.6
     drill.Tool.Label = "Drill 6.6"
     drill.HorizFeed, drill.VertFeed, drill.SpindleSpeed = "300 mm/min", "300 mm/min", 4000
@@ -151,45 +146,3 @@ def camera_apt(holes, standoff=60.0):
         lines += ["RAPID", "GOTO/{:.4f},{:.4f},{:.4f},{:.6f},{:.6f},{:.6f}".format(*(q + list(u))), "DELAY/0.5"]
     lines.append("FINI")
     return "\n".join(lines) + "\n"
-
-
-def main():
-    import FreeCAD
-    import Part
-
-    import aeronc
-    from aeronc import pathcompat
-    from aeronc.post import apt, nc_post
-    from aeronc.post.output import write_atomically
-
-    out = os.path.abspath(os.environ.get("AERONC_OUT", "out/post"))
-    os.makedirs(out, exist_ok=True)
-    path = os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step")
-    doc = FreeCAD.newDocument("SamplePanel")
-    part = doc.addObject("Part::Feature", "Part")
-    part.Label = "sample_panel"
-    part.Shape = Part.read(path)
-    doc.recompute()
-    job, holes = build_job(doc, part)
-    objects = pathcompat.job_post_objects(job)
-
-    written = []
-    for name, post in (("sample_panel.mpf", lambda f: nc_post.export(objects, f, "--line-numbers", "840d")),
-                       ("sample_panel.ngc", lambda f: nc_post.export(objects, f, "", "linuxcnc")),
-                       ("sample_panel.apt", lambda f: apt.export(objects, f, ""))):
-        post(os.path.join(out, name))
-        written.append(name)
-    datum = [h for h in holes if h["through"]][:4]
-    cl = os.path.join(out, "camera.apt")
-    write_atomically(cl, camera_apt(datum))
-    apt.post_apt_file(cl, os.path.join(out, "camera.mpf"), "--machine AC-HEAD")
-    written += ["camera.apt", "camera.mpf"]
-    doc.saveAs(os.path.join(out, "sample_panel_post.FCStd"))
-    print("sample panel: {} holes drilled along their axes, {} datum holes for the camera".format(len(holes), len(datum)))
-    print("wrote " + ", ".join(os.path.join(out, n) for n in written))
-
-
-# freecadcmd runs a script as a module named after the file; an import (the tests) must not run it.
-if __name__ in ("__main__", "sample"):
-    from aeronc.script import run
-    run(main)

@@ -1,6 +1,8 @@
-"""The main job on the embedded sample part, headless:
+"""The main job on the embedded sample part, headless, against the installed addon:
 
-    AERONC_OUT=out/demo freecadcmd <Mod>/AeroNC/aeronc/demo.py
+    HOME=<a FreeCAD home with AeroNC installed> AERONC_OUT=out/demo freecadcmd scripts/demo.py
+
+(`scripts/run.sh demo` does this.)
 
 Opens resources/samples/sample_panel.step (an integral panel with pockets on both faces,
 islands, openings, lightening and bolt holes, a flange and a joggle), recognises its machining
@@ -26,8 +28,8 @@ def main():
     import aeronc
     from aeronc import picture
     from aeronc.post.output import write_atomically
-    from aeronc.objects import create_machining_features
-    from aeronc.objects.machining_features import result_of
+    from aeronc.makers import create_machining_features
+    from aeronc.objects import result_of
 
     part_path = os.environ.get("AERONC_PART") or os.path.join(aeronc.PACKAGE_DIR, "resources", "samples",
                                                                "sample_panel.step")
@@ -88,6 +90,6 @@ def main():
                                         png, plot))
 
 
-from aeronc.script import run  # noqa: E402
+from aeronc.tests.script import run  # noqa: E402  (on the path from the installed addon)
 
 run(main)
