@@ -220,7 +220,7 @@ class PlanFromStoredTreeTest(unittest.TestCase):
             tool_planning.select_tools(group, self.MATERIAL, kb_path=self.kb_path)
         self.assertIn("changed since its features were recognised", str(ctx.exception))
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
-        self.assertFalse(hasattr(group, "Material"))
+        self.assertEqual((group.Material, group.ToolPlan), ("", ""))
 
     def test_cancel_leaves_the_document_as_it_was(self):
         part, _ = make_panel_object(self.doc, PLAIN)
@@ -237,7 +237,7 @@ class PlanFromStoredTreeTest(unittest.TestCase):
         self.assertIn("cancelled", str(ctx.exception))
         self.assertEqual(stages, ["Planning tools", "Recording the plan"])
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
-        self.assertFalse(hasattr(group, "Material"))
+        self.assertEqual((group.Material, group.ToolPlan), ("", ""))
 
 
 class ToolLibraryBridgeTest(unittest.TestCase):
