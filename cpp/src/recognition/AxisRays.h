@@ -1,8 +1,9 @@
 #pragma once
 // Rays along one setup axis against the part's faces, with a grid over the slicing plane
 // so each ray meets only the faces above or below its foot point.
+#include <aeronc/recognition/SetupFrame.h>
+
 #include "FaceCatalogue.h"
-#include "SetupFrame.h"
 
 #include <IntCurvesFace_Intersector.hxx>
 #include <memory>

@@ -39,6 +39,8 @@ public:
     const FaceInfo& operator[](int i) const { return faces_[static_cast<std::size_t>(i)]; }
     // 0-based index of a face of the solid, -1 if foreign.
     int indexOf(const TopoDS_Shape& face) const { return map_.FindIndex(face) - 1; }
+    // The solid's edges, 1-based, in TopExp::MapShapes order.
+    const TopTools_IndexedMapOfShape& edges() const { return edges_; }
     double area(int i) const;
     // Height range of face i along unit direction d (conservative: from its box).
     void heightRange(int i, const Vec3& d, double& lo, double& hi) const;

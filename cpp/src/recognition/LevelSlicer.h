@@ -1,8 +1,9 @@
 #pragma once
 // Sections the part with the plane h = const of a setup frame and joins the section
 // edges into closed loops, each segment labelled with the face it came from.
+#include <aeronc/recognition/SetupFrame.h>
+
 #include "FaceCatalogue.h"
-#include "SetupFrame.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "../recognition/SetupFrame.h"
+#include <aeronc/recognition/SetupFrame.h>
 
 #include <aeronc/core/Error.h>
 #include <aeronc/kb/KnowledgeBase.h>

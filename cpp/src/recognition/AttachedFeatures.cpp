@@ -1,0 +1,141 @@
+#include "AttachedFeatures.h"
+
+#include "FaceLists.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace aeronc::recognition {
+
+void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& view) {
+    const FaceCatalogue& faces = view.faces;
+    const std::vector<FaceInSetup>& fs = view.fs;
+    const double tol = 10 * view.tol.linear;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (ElementDraft& in : made) {
+        DomainElement& e = in.el;
+        std::set<int> inLoops(e.contourFaces.begin(), e.contourFaces.end());
+        for (auto& isl : e.islandFaces) inLoops.insert(isl.begin(), isl.end());
+        // Floor fillets: curved faces between the floor and the walls.
+        double ff = kInf;
+        std::vector<int> fillets;
+        for (int f : e.floorFaces)
+            for (int n : faces[f - 1].neighbours) {
+                const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                const SurfaceKind k = faces[n].kind;
+                if (s.att != Attitude::Curved || k == SurfaceKind::Cone) continue;
+                if (std::find(fillets.begin(), fillets.end(), n + 1) != fillets.end()) continue;
+                fillets.push_back(n + 1);
+                if (k == SurfaceKind::Cylinder || k == SurfaceKind::Torus || k == SurfaceKind::Sphere)
+                    ff = std::min(ff, faces[n].radius);
+            }
+        // Fillet corners (tori, spheres) touching the fillets found.
+        for (std::size_t q = 0; q < fillets.size(); ++q)
+            for (int n : faces[fillets[q] - 1].neighbours) {
+                const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                if (s.att == Attitude::Curved && faces[n].kind != SurfaceKind::Cone &&
+                    std::fabs(s.lo - e.level) <= tol && !inLoops.count(n + 1) &&
+                    std::find(fillets.begin(), fillets.end(), n + 1) == fillets.end())
+                    fillets.push_back(n + 1);
+            }
+        e.filletFaces = fillets;
+        e.floorFilletRadius = std::isfinite(ff) ? ff : 0;
+        if (!fillets.empty()) {
+            AttachedFeature a;
+            a.kind = "floor_fillet";
+            a.faces = fillets;
+            a.radius = e.floorFilletRadius;
+            e.attached.push_back(a);
+        }
+        // Chamfers and bevels on the side walls.
+        std::set<int> seen;
+        for (int w : inLoops) {
+            const FaceInSetup& ws = fs[static_cast<std::size_t>(w - 1)];
+            if (ws.att == Attitude::Inclined) {
+                AttachedFeature a;
+                const double c = dot(faces[w - 1].normal, view.frame.w);
+                a.kind = c > 0 ? "open_corner" : "closed_corner";
+                a.faces = {w};
+                a.size = std::asin(std::min(1.0, std::fabs(c))) * 180 / M_PI;
+                e.attached.push_back(a);
+            }
+            for (int n : faces[w - 1].neighbours) {
+                if (inLoops.count(n + 1) || seen.count(n)) continue;
+                const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                if (s.att == Attitude::Inclined) {
+                    seen.insert(n);
+                    e.chamferFaces.push_back(n + 1);
+                }
+            }
+        }
+        if (!e.chamferFaces.empty()) {
+            AttachedFeature a;
+            a.kind = "chamfer";
+            a.faces = e.chamferFaces;
+            e.attached.push_back(a);
+        }
+        // Island tops: faces normal to the axis on top of the island walls.
+        for (auto& isl : e.islandFaces) {
+            double islTop = -kInf;
+            for (int f : isl) islTop = std::max(islTop, fs[static_cast<std::size_t>(f - 1)].hi);
+            AttachedFeature a;
+            a.kind = "island_top";
+            for (int f : isl)
+                for (int n : faces[f - 1].neighbours) {
+                    const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                    if (s.att == Attitude::Up && std::fabs(s.h - islTop) <= tol && islTop < e.top - tol)
+                        pushUnique(a.faces, n + 1);
+                }
+            if (!a.faces.empty()) e.attached.push_back(a);
+        }
+        // Top constraint: faces normal to the axis at the top of the walls.
+        for (int w : e.contourFaces)
+            for (int n : faces[w - 1].neighbours) {
+                const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+                if (s.att == Attitude::Up && std::fabs(s.h - e.top) <= tol) pushUnique(e.topFaces, n + 1);
+            }
+    }
+}
+
+void attachTreeFeatures(std::vector<ElementDraft>& made) {
+    // Joggle: a shallow child pocket that shares a side wall with its parent.
+    for (ElementDraft& in : made) {
+        DomainElement& e = in.el;
+        if (e.parent < 0 || e.hole || e.type == ElementType::Opening) continue;
+        DomainElement& p = made[static_cast<std::size_t>(e.parent)].el;
+        const double step = p.level - e.level;
+        bool shares = false;
+        for (int f : e.contourFaces)
+            shares |= std::find(p.contourFaces.begin(), p.contourFaces.end(), f) != p.contourFaces.end();
+        if (shares && step < 0.5 * p.depth) {
+            AttachedFeature a;
+            a.kind = "joggle";
+            a.element = e.id;
+            a.size = step;
+            a.faces = e.floorFaces;
+            p.attached.push_back(a);
+        }
+    }
+    // Rib: the floor of a region joining several pockets is the top of the rib between them.
+    for (ElementDraft& in : made) {
+        DomainElement& e = in.el;
+        if (e.children.size() >= 2 && e.floorArea < 0.5 * e.area && !e.floorFaces.empty()) {
+            AttachedFeature a;
+            a.kind = "rib";
+            a.faces = e.floorFaces;
+            e.attached.push_back(a);
+        }
+        if (e.type == ElementType::OpenPocket && !e.openEdges.empty() && e.minWidth > 0 &&
+            e.area > 4 * e.minWidth * e.minWidth) {
+            AttachedFeature a;
+            a.kind = "flange";
+            a.faces = e.floorFaces;
+            a.size = e.minWidth;
+            e.attached.push_back(a);
+        }
+    }
+}
+
+}  // namespace aeronc::recognition

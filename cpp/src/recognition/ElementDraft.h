@@ -1,0 +1,17 @@
+#pragma once
+// An element while its setup is recognised. Its region at the slicing level and a point
+// inside it place it in the pocket tree; ids and face numbers are final only once the
+// setup's faces are claimed.
+#include <aeronc/recognition/DomainTree.h>
+
+#include "Region.h"
+
+namespace aeronc::recognition {
+
+struct ElementDraft {
+    DomainElement el;  // id, parent and children index the setup's drafts
+    Region region;
+    P2 sample;
+};
+
+}  // namespace aeronc::recognition

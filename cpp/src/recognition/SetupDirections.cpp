@@ -1,0 +1,152 @@
+#include "SetupDirections.h"
+
+#include <aeronc/core/Error.h>
+#include <aeronc/recognition/SetupFrame.h>
+
+#include "AxisRays.h"
+#include "FaceInSetup.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+
+namespace aeronc::recognition {
+
+std::string directionName(const Vec3& d) {
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (int k = 0; k < 3; ++k) {
+        if (std::fabs(std::fabs(d[k]) - 1) < 1e-9) return std::string(d[k] > 0 ? "+" : "-") + axes[k];
+    }
+    std::ostringstream s;
+    s.precision(4);
+    s << "(" << d[0] << ", " << d[1] << ", " << d[2] << ")";
+    return s.str();
+}
+
+std::vector<Vec3> principalAxes(const FaceCatalogue& faces, const Tolerances& tol) {
+    int a = -1, b = -1;
+    for (int i = 0; i < faces.size(); ++i)
+        if (faces[i].kind == SurfaceKind::Plane && (a < 0 || faces.area(i) > faces.area(a))) a = i;
+    if (a < 0) return {};
+    const Vec3 n1 = faces[a].normal;
+    for (int i = 0; i < faces.size(); ++i)
+        if (faces[i].kind == SurfaceKind::Plane && std::fabs(dot(faces[i].normal, n1)) <= tol.squareSin &&
+            (b < 0 || faces.area(i) > faces.area(b)))
+            b = i;
+    std::vector<Vec3> out{n1, {-n1[0], -n1[1], -n1[2]}};
+    if (b < 0) return out;
+    const Vec3 n2 = faces[b].normal;
+    const Vec3 n3{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2], n1[0] * n2[1] - n1[1] * n2[0]};
+    for (const Vec3& n : {n2, n3}) out.push_back(n), out.push_back({-n[0], -n[1], -n[2]});
+    return out;
+}
+
+Vec3 checkedDirection(const FaceCatalogue& faces, const Tolerances& tol, const Vec3& dir, std::size_t k) {
+    const double n = norm(dir);
+    if (!(n > 1e-12) || !std::isfinite(n))
+        throw inputError("setup direction " + std::to_string(k + 1) + " is not a valid vector");
+    const Vec3 d{dir[0] / n, dir[1] / n, dir[2] / n};
+    for (int i = 0; i < faces.size(); ++i)
+        if (faces[i].kind == SurfaceKind::Plane && std::fabs(dot(faces[i].normal, d)) >= tol.parallelCos) return d;
+    throw inputError("the part has no planar face normal to the setup direction " + directionName(d) +
+                     "; pick a direction along a face normal");
+}
+
+SetupDirectionSearch::SetupDirectionSearch(const FaceCatalogue& faces, const Tolerances& tol)
+    : faces_(faces), tol_(tol), consumed_(static_cast<std::size_t>(faces.size()), false) {}
+
+std::optional<Vec3> SetupDirectionSearch::next(const std::vector<bool>& claimed) {
+    std::vector<Vec3> cands;
+    for (int i = 0; i < faces_.size(); ++i) {
+        const FaceInfo& f = faces_[i];
+        if (claimed[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
+        if (f.kind == SurfaceKind::Plane) cands.push_back(f.normal);
+        if (f.kind == SurfaceKind::Cylinder && f.concave) {
+            cands.push_back(f.axisDir);
+            cands.push_back({-f.axisDir[0], -f.axisDir[1], -f.axisDir[2]});
+        }
+    }
+    // Unique directions.
+    std::vector<Vec3> dirs;
+    for (const Vec3& c : cands) {
+        bool seen = false;
+        for (const Vec3& d : dirs) seen |= dot(d, c) >= tol_.parallelCos;
+        for (const Vec3& d : tried_) seen |= dot(d, c) >= tol_.parallelCos;
+        if (!seen) dirs.push_back(c);
+    }
+    double bestScore = 0;
+    Vec3 best{0, 0, 0};
+    const auto ts = std::chrono::steady_clock::now();
+    for (const Vec3& d : dirs) {
+        const double s = score(d, claimed, false);
+        // Ties resolve by the score only up to rounding, then by the first found.
+        if (s > bestScore * (1 + 1e-9) + 1e-9) bestScore = s, best = d;
+    }
+    if (std::getenv("AERONC_TRACE"))
+        std::fprintf(stderr, "scored %zu directions: %.3f s\n", dirs.size(),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
+    if (bestScore <= 0) return std::nullopt;
+    tried_.push_back(best);
+    score(best, claimed, true);
+    return best;
+}
+
+std::vector<Vec3> SetupDirectionSearch::untriedPrincipalAxes() {
+    std::vector<Vec3> out;
+    for (const Vec3& d : principalAxes(faces_, tol_)) {
+        bool seen = false;
+        for (const Vec3& t : tried_) seen |= dot(d, t) >= tol_.parallelCos;
+        if (seen) continue;
+        tried_.push_back(d);
+        out.push_back(d);
+    }
+    return out;
+}
+
+// Unclaimed floor area seen from d plus half the unclaimed concave cylinder area along d.
+double SetupDirectionSearch::score(const Vec3& d, const std::vector<bool>& claimed, bool consume) {
+    const SetupFrame frame(d);
+    const std::vector<FaceInSetup> fs = classifyFaces(faces_, frame, tol_);
+    std::unique_ptr<AxisRays> rays;  // built on the first floor that needs it
+    double s = 0;
+    for (int i = 0; i < faces_.size(); ++i) {
+        if (claimed[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
+        const double before = s;
+        const FaceInfo& f = faces_[i];
+        const FaceInSetup& fi = fs[static_cast<std::size_t>(i)];
+        if (fi.att == Attitude::Up) {
+            bool rising = false;
+            for (int n : f.neighbours) rising |= fs[static_cast<std::size_t>(n)].hi > fi.h + 10 * tol_.linear;
+            if (rising && !rays) rays = std::make_unique<AxisRays>(faces_, frame);
+            if (rising && rays->reachable(i)) s += faces_.area(i);
+        } else if (f.kind == SurfaceKind::Cylinder && f.concave && fi.att == Attitude::Vertical) {
+            s += 0.5 * faces_.area(i);
+        }
+        if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;
+    }
+    return s;
+}
+
+namespace {
+void renumberSetup(DomainTree& tree, int e, int setup) {
+    DomainElement& el = tree.elements[static_cast<std::size_t>(e)];
+    el.setup = setup;
+    for (int c : el.children) renumberSetup(tree, c, setup);
+}
+}  // namespace
+
+void dropEmptySetups(DomainTree& tree) {
+    std::vector<SetupDirection> keep;
+    for (SetupDirection& s : tree.setups)
+        if (!s.elements.empty()) {
+            for (int e : s.elements) renumberSetup(tree, e, static_cast<int>(keep.size()));
+            s.id = static_cast<int>(keep.size());
+            keep.push_back(std::move(s));
+        }
+    tree.setups = std::move(keep);
+}
+
+}  // namespace aeronc::recognition
