@@ -10,6 +10,7 @@
 #include <aeronc/core/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
@@ -217,7 +218,7 @@ int selectToolsCmd(int argc, char** argv) {
 
     const TopoDS_Shape solid = aeronc::loadPart(part);
     const auto tree = aeronc::recognition::recognise(solid, opt);
-    const auto plan = aeronc::toolselect::planTools(tree, kb, material, machine);
+    const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
     else writeText(jsonOut, text);

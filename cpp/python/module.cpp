@@ -4,6 +4,7 @@
 #include <aeronc/core/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
@@ -110,7 +111,7 @@ PYBIND11_MODULE(_core, m) {
                 py::gil_scoped_release nogil;
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
                 const auto tree = recognition::recognise(solid, o);
-                return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
+                return toolselect::toJson(kb::planTools(tree, kb, material, machine), material, -1);
             });
         },
         py::arg("brep_text"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),

@@ -2,7 +2,7 @@
 // Rays along one setup axis against the part's faces, with a grid over the slicing plane
 // so each ray meets only the faces above or below its foot point.
 #include "FaceCatalogue.h"
-#include "SetupFrame.h"
+#include <aeronc/recognition/SetupFrame.h>
 
 #include <IntCurvesFace_Intersector.hxx>
 #include <memory>

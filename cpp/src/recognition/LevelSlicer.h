@@ -2,7 +2,7 @@
 // Sections the part with the plane h = const of a setup frame and joins the section
 // edges into closed loops, each segment labelled with the face it came from.
 #include "FaceCatalogue.h"
-#include "SetupFrame.h"
+#include <aeronc/recognition/SetupFrame.h>
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // Planar regions at a slicing level, held as Clipper integer polygons.
-#include "SetupFrame.h"
+#include <aeronc/recognition/SetupFrame.h>
 
 #include <polyclipping/clipper.hpp>
 #include <vector>

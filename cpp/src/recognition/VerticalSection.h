@@ -2,7 +2,7 @@
 // Fast section of a face with the plane h = const, done in the face's parameter space where
 // the section is a straight line: planes not parallel to the slice, cylinders and cones
 // about the setup axis. Other faces go through OCCT's general section.
-#include "SetupFrame.h"
+#include <aeronc/recognition/SetupFrame.h>
 
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
