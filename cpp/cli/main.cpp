@@ -7,7 +7,7 @@
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/kb/ToolPlanning.h>

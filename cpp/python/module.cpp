@@ -1,7 +1,7 @@
 // aeronc._core: the binding between FreeCAD's Python and the C++ core.
 // Every C++ and OCCT exception stops here and becomes RecognitionError.
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/ToolPlanning.h>

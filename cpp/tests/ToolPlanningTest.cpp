@@ -2,7 +2,7 @@
 // and holes are known by construction, planned with the shipped knowledge base, checked
 // against hand computation.
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/recognition/Recogniser.h>
