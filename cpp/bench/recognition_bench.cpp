@@ -2,7 +2,7 @@
 // beside the STEP import time of the same file and the peak memory.
 // Usage: aeronc_bench [--sizes 10,100,1000] [--dir FOLDER]
 // Each size runs in a child process so its peak memory is its own.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 

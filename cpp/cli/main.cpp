@@ -9,10 +9,11 @@
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
@@ -246,7 +247,7 @@ int selectToolsCmd(int argc, char** argv) {
     }
 
     if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt);
-    const auto plan = aeronc::toolselect::planTools(tree, kb, material, machine);
+    const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
     else writeText(jsonOut, text);

@@ -2,7 +2,7 @@
 // PostError (a RuntimeError) with the core's message; the posting itself runs without the GIL.
 #include "Guarded.h"
 
-#include <aeronc/kinematics/Post.h>
+#include <aeronc/post/Post.h>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
@@ -10,6 +10,7 @@
 
 namespace py = pybind11;
 using namespace aeronc::kinematics;
+using namespace aeronc::post;
 
 namespace {
 
@@ -38,7 +39,7 @@ std::vector<PathSection> sectionsFrom(const py::list& list) {
         if (kind == "offset") s.kind = PathSection::Kind::WorkOffset;
         else if (kind == "tool") s.kind = PathSection::Kind::ToolChange;
         else if (kind == "operation") s.kind = PathSection::Kind::Operation;
-        else throw kinematicsError("unknown section kind '" + kind + "'");
+        else throw aeronc::inputError("unknown section kind '" + kind + "'");
         s.label = item<std::string>(d, "label", "");
         s.gcode = item<std::string>(d, "gcode", "");
         if (d.contains("tool")) {
@@ -70,7 +71,7 @@ std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
             const auto d = v.get<std::string>();
             if (d == "840d") nc.dialect = Dialect::Sinumerik840D;
             else if (d == "linuxcnc") nc.dialect = Dialect::LinuxCnc;
-            else throw kinematicsError("unknown dialect '" + d + "' (840d, linuxcnc)");
+            else throw aeronc::inputError("unknown dialect '" + d + "' (840d, linuxcnc)");
         } else if (k == "vectors") nc.vectors = v.get<bool>();
         else if (k == "precision") nc.precision = v.get<int>();
         else if (k == "angle_precision") nc.anglePrecision = v.get<int>();
@@ -84,11 +85,11 @@ std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
         else if (k == "program_name") nc.programName = v.get<std::string>();
         else if (k == "part_zero") {
             const auto p = v.get<std::vector<double>>();
-            if (p.size() != 3) throw kinematicsError("part_zero must be [x, y, z]");
+            if (p.size() != 3) throw aeronc::inputError("part_zero must be [x, y, z]");
             plan.partZero = Vec3(p[0], p[1], p[2]);
         } else if (k == "retract") plan.retractDistance = v.get<double>();
         else if (k == "chord") plan.chordTolerance = v.get<double>();
-        else throw kinematicsError("unknown post option '" + k + "'");
+        else throw aeronc::inputError("unknown post option '" + k + "'");
     }
     return {nc, plan};
 }

@@ -1,10 +1,11 @@
 // aeronc._core: the binding between FreeCAD's Python and the C++ core.
 // Every C++ and OCCT exception stops here and becomes RecognitionError.
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
@@ -108,7 +109,7 @@ PYBIND11_MODULE(_core, m) {
                 py::gil_scoped_release nogil;
                 const auto tree = recognition::fromJson(treeJson);
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
-                return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
+                return toolselect::toJson(kb::planTools(tree, kb, material, machine), material, -1);
             });
         },
         py::arg("tree_json"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),

@@ -1,5 +1,5 @@
 // Recognition on parts nobody here made: the NIST CTC/FTC test parts (shared/data/nist).
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 
 #include <gp_Ax1.hxx>

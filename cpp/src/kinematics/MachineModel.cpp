@@ -17,7 +17,7 @@ struct Reader {
     const std::string& source;
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw kinematicsError(source + ": " + what);
+        throw inputError(source + ": " + what);
     }
     const json& need(const json& j, const char* key, const std::string& where) const {
         if (!j.is_object() || !j.contains(key)) fail("missing \"" + std::string(key) + "\"" + where);
@@ -60,7 +60,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
     try {
         j = json::parse(text);
     } catch (const json::exception& e) {
-        throw kinematicsError(source + ": not valid JSON (" + e.what() + ")");
+        throw inputError(source + ": not valid JSON (" + e.what() + ")");
     }
     const Reader r{source};
     MachineModel m;
@@ -136,7 +136,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
 
 MachineModel loadMachineFile(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw kinematicsError("cannot read machine file " + path);
+    if (!in) throw inputError("cannot read machine file " + path);
     std::ostringstream s;
     s << in.rdbuf();
     return machineFromJson(s.str(), path);

@@ -11,7 +11,7 @@
 // operation, the command number and the command.
 #include <aeronc/kinematics/ClProgram.h>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
 
 // One object of the post's object list, already taken apart by the Python side.
 struct PathSection {
@@ -19,17 +19,17 @@ struct PathSection {
     Kind kind = Kind::Operation;
     std::string label;
     std::string gcode;        // Path.toGCode() of the object (WorkOffset, Operation)
-    ClTool tool;              // ToolChange
+    kinematics::ClTool tool;  // ToolChange
     double rpm = 0.0;         // ToolChange
     int spindleDir = 0;       // ToolChange
     std::string coolant;      // Operation: "none", "flood", "mist"
     bool hasToolController = true;  // Operation: false when the operation has none
 };
 
-ClProgram readFreeCadPath(const std::vector<PathSection>& sections, const std::string& programName);
+kinematics::ClProgram readFreeCadPath(const std::vector<PathSection>& sections, const std::string& programName);
 
 // Tolerance on |(U,V,W)| - 1. FreeCAD keeps 6 decimals of each parameter, so a unit vector
 // comes back off by up to ~1e-6; anything further off is a wrong vector, not rounding.
 constexpr double kUnitTolerance = 1e-4;
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -1,13 +1,15 @@
 // APT CL file -> CL program (see Apt.h and AptWriter.cpp for the drilling distances).
-#include <aeronc/kinematics/Apt.h>
-#include <aeronc/kinematics/PathReader.h>
+#include <aeronc/post/Apt.h>
+#include <aeronc/post/PathReader.h>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <optional>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
+
+using namespace kinematics;
 
 namespace {
 
@@ -67,7 +69,7 @@ public:
 
 private:
     [[noreturn]] void fail(int line, const std::string& msg) const {
-        throw kinematicsError("APT line " + std::to_string(line) + ": " + msg);
+        throw inputError("APT line " + std::to_string(line) + ": " + msg);
     }
 
     Statement split(const std::string& text, int line) const {
@@ -367,4 +369,4 @@ private:
 
 ClProgram readApt(const std::string& text) { return AptReader(text).run(); }
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -5,14 +5,14 @@
 // PPRINT/..., PARTNO/..., FINI. `$$` starts a comment, a trailing `$` continues a statement.
 #include <aeronc/kinematics/ClProgram.h>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
 
 // Writes the CL program; positions and vectors with `decimals` decimals. Moves that do not
 // yet know every coordinate (FreeCAD's first clearance moves) have no GOTO form and are left
 // as $$ comments.
-std::string writeApt(const ClProgram& program, int decimals = 10);
+std::string writeApt(const kinematics::ClProgram& program, int decimals = 10);
 
 // Reads an APT CL file; errors name the line.
-ClProgram readApt(const std::string& text);
+kinematics::ClProgram readApt(const std::string& text);
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -3,55 +3,48 @@
 // fixed spindle), A and C the table angles. On a table-table machine the tool axis is the
 // machine's Z, so arcs at a constant orientation are G17 arcs in machine coordinates and
 // drilling cycles drill along machine Z.
-#include "NcWriter.h"
+#include "NcFormatter.h"
 
 #include <cmath>
 #include <cstdio>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
+
+using namespace kinematics;
 
 namespace {
 
-class LinuxCnc {
+class LinuxCncFormatter : public NcFormatter {
 public:
-    LinuxCnc(const Plan& plan, const NcOptions& o)
-        : plan_(plan), prog_(*plan.program), m_(plan.machine), o_(o), w_(o.lineNumbers, false) {
+    LinuxCncFormatter(const Plan& plan, const NcOptions& o) : NcFormatter(plan, o, false, "G4 P") {
         for (const auto& a : m_.rotary) {
             if (a.carrier != Carrier::Table)
-                throw kinematicsError("the LinuxCNC dialect is for table-table machines; machine " + m_.name + " has a " +
-                                      a.name + " axis in the head");
+                throw inputError("the LinuxCNC dialect is for table-table machines; machine " + m_.name + " has a " +
+                                 a.name + " axis in the head");
             if (a.name != "A" && a.name != "B" && a.name != "C")
-                throw kinematicsError("LinuxCNC names rotary axes A, B or C, not " + a.name);
+                throw inputError("LinuxCNC names rotary axes A, B or C, not " + a.name);
         }
         if ((m_.toolDirection - Vec3::UnitZ()).norm() > 1e-12)
-            throw kinematicsError("the LinuxCNC dialect needs the tool along machine +Z");
-    }
-
-    std::string run() {
-        if (o_.comments) {
-            w_.comment(o_.programName + ": posted by AeroNC for machine " + m_.name + " (" + m_.kinematicsName() + " " +
-                       m_.rotary[0].name + "/" + m_.rotary[1].name + ", LinuxCNC trivkins)");
-            w_.comment("machine coordinates of the tool tip in mm, rotary axes in degrees");
-        }
-        w_.line("G17 G21 G90 G40 G49 G80 G94");
-        for (const auto& s : plan_.steps) {
-            const ClRecord& r = prog_.records[s.record];
-            try {
-                step(s, r);
-            } catch (const Error& e) {
-                throw kinematicsError(prog_.where(r) + ": " + e.what());
-            }
-        }
-        endCycles();
-        if (inverse_) w_.line("G94");
-        w_.line("M5");
-        if (coolant_) w_.line("M9");
-        w_.line("G49");
-        w_.line("M2");
-        return std::move(w_.text());
+            throw inputError("the LinuxCNC dialect needs the tool along machine +Z");
     }
 
 private:
+    void header() override {
+        if (o_.comments) {
+            w_.comment(postedBy(o_.programName, "LinuxCNC trivkins"));
+            w_.comment("machine coordinates of the tool tip in mm, rotary axes in degrees");
+        }
+        w_.line("G17 G21 G90 G40 G49 G80 G94");
+    }
+
+    void footer() override {
+        endCycles();
+        if (inverse_) w_.line("G94");
+        stopSpindleAndCoolant();
+        w_.line("G49");
+        w_.line("M2");
+    }
+
     void endCycles() {
         if (!cycles_) return;
         w_.line("G80");
@@ -59,56 +52,25 @@ private:
         g_.forget();
     }
 
-    void step(const PlannedStep& s, const ClRecord& r) {
+    void beforeStep(const PlannedStep& s) override {
         if (s.kind != ClKind::Cycle) endCycles();
-        switch (s.kind) {
-            case ClKind::Comment:
-                if (o_.comments && !r.text.empty()) w_.comment(r.text);
-                return;
-            case ClKind::Operation:
-                if (o_.comments) w_.comment("operation: " + r.text);
-                forget();
-                return;
-            case ClKind::WorkOffset:
-                w_.line(r.text);
-                forget();
-                return;
-            case ClKind::LoadTool:
-                if (o_.comments) w_.comment("tool: " + r.tool.name);
-                w_.line("T" + std::to_string(r.tool.number) + " M6");
-                w_.line("G43 H" + std::to_string(r.tool.number));
-                forget();
-                return;
-            case ClKind::Spindle:
-                w_.spindle(r.rpm, r.spindleDir);
-                return;
-            case ClKind::Coolant:
-                coolant_ = w_.coolant(r.text);
-                return;
-            case ClKind::Dwell:
-                w_.value("G4 P", r.seconds, 3);
-                w_.end();
-                return;
-            case ClKind::Stop:
-                w_.line(r.text);
-                return;
-            case ClKind::Move:
-                move(s);
-                return;
-            case ClKind::Cycle:
-                cycle(s, r);
-                return;
-        }
     }
 
-    void forget() {
-        for (auto* m : {&x_, &y_, &z_, &a_[0], &a_[1], &f_, &g_}) m->forget();
+    void operation(const ClRecord& r) override {
+        NcFormatter::operation(r);
+        forgetModal();
     }
 
-    void motionWord(const char* g) {
-        if (!g_.valid || g_.last != g) w_.word(g);
-        g_.last = g;
-        g_.valid = true;
+    void workOffset(const ClRecord& r) override {
+        w_.line(r.text);
+        forgetModal();
+    }
+
+    void loadTool(const ClRecord& r) override {
+        if (o_.comments) w_.comment("tool: " + r.tool.name);
+        w_.line("T" + std::to_string(r.tool.number) + " M6");
+        w_.line("G43 H" + std::to_string(r.tool.number));
+        forgetModal();
     }
 
     bool atZero(const std::array<double, 2>& r) const {
@@ -118,14 +80,7 @@ private:
     // Feed of a move: inverse time (G93, F = 1/minutes) when it turns a rotary axis and the
     // option is on; else units per minute, scaled so that the machine takes the time the
     // tip needs at the programmed feed along the part (LinuxCNC's F applies to XYZ, or to
-    // the rotary axes when only they move). The mode word goes first in the block.
-    void feedMode(const PlannedStep& s) {
-        if (s.motion == Motion::Rapid) return;
-        const bool inv = o_.inverseTime && s.rotaryMoved && s.minutes > 0;
-        if (inv != inverse_) w_.word(inv ? "G93" : "G94"), f_.forget();
-        inverse_ = inv;
-    }
-
+    // the rotary axes when only they move).
     void feedWord(const PlannedStep& s) {
         if (s.motion == Motion::Rapid) return;
         if (inverse_) {
@@ -162,12 +117,12 @@ private:
         for (int k = 0; k < 2; ++k) w_.modal(m_.rotary[k].name, s.joints.rotary[k], o_.anglePrecision, a_[k]);
     }
 
-    void move(const PlannedStep& s) {
+    void move(const PlannedStep& s) override {
         if (!s.tipKnown() && !atZero(s.joints.rotary))
-            throw kinematicsError("a move that gives only some of X, Y, Z needs the rotary axes at zero; give the full tip position");
+            throw inputError("a move that gives only some of X, Y, Z needs the rotary axes at zero; give the full tip position");
         const bool arc = s.motion == Motion::ArcCW || s.motion == Motion::ArcCCW;
         feedMode(s);
-        motionWord(s.motion == Motion::Rapid ? "G0" : s.motion == Motion::Linear ? "G1" : s.motion == Motion::ArcCW ? "G2" : "G3");
+        motionWord(s.motion);
         axes(s);
         if (arc) {
             // The arc keeps its orientation: its centre turns with the table like the tip, and
@@ -179,7 +134,6 @@ private:
         }
         feedWord(s);
         w_.end();
-        if (o_.comments && s.origin == MoveOrigin::Reposition) w_.comment("branch change: retracted, repositioned, re-entering");
         lastLinear_ = s.joints.linear;
         lastRotary_ = s.joints.rotary;
     }
@@ -191,12 +145,11 @@ private:
         return rot;
     }
 
-    void cycle(const PlannedStep& s, const ClRecord& r) {
+    void cycle(const PlannedStep& s, const ClRecord& r) override {
         // The planner put the tool on the hole axis at the return level; the cycle drills along
         // machine Z from there.
         const bool toInitial = r.clearance > r.retract + 1e-9;
-        if (inverse_) w_.word("G94");
-        inverse_ = false;
+        unitsPerMinute();
         std::string g = toInitial ? "G98 " : "G99 ";
         g += r.cycle == CycleKind::Drill ? "G81" : r.cycle == CycleKind::DrillDwell ? "G82" : r.cycle == CycleKind::Peck ? "G83" : "G73";
         w_.word(g);
@@ -219,25 +172,13 @@ private:
         lastRotary_ = s.joints.rotary;
     }
 
-    const Plan& plan_;
-    const ClProgram& prog_;
-    const MachineModel& m_;
-    const NcOptions& o_;
-    NcWriter w_;
-    bool inverse_ = false;
     bool cycles_ = false;
-    bool coolant_ = false;
     Vec3 lastLinear_ = Vec3::Zero();
     std::array<double, 2> lastRotary_{0.0, 0.0};
-    Modal x_, y_, z_, a_[2], f_, g_;
 };
 
 }  // namespace
 
-std::string formatLinuxCnc(const Plan& plan, const NcOptions& o) { return LinuxCnc(plan, o).run(); }
+std::string formatLinuxCnc(const Plan& plan, const NcOptions& o) { return LinuxCncFormatter(plan, o).run(); }
 
-std::string formatNc(const Plan& plan, const NcOptions& o) {
-    return o.dialect == Dialect::LinuxCnc ? formatLinuxCnc(plan, o) : formatSinumerik(plan, o);
-}
-
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -1,15 +1,12 @@
 #pragma once
 // Block-by-block NC text: optional N numbers, comments in the dialect's form, and modal words
 // that are written only when their formatted value changes.
-#include <aeronc/kinematics/NcFormat.h>
+#include <aeronc/post/NcFormat.h>
 
 #include <string>
 #include <string_view>
 
-namespace aeronc::kinematics {
-
-std::string formatSinumerik(const Plan& plan, const NcOptions& options);
-std::string formatLinuxCnc(const Plan& plan, const NcOptions& options);
+namespace aeronc::post {
 
 // The last value written for one address; `valid` is false after anything that may have
 // changed the controller's idea of it (a new plane, TRAORI, a tool change).
@@ -103,4 +100,4 @@ private:
     std::string out_, block_, num_;
 };
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

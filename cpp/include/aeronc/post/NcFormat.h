@@ -11,7 +11,7 @@
 #include <cmath>
 #include <string>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
 
 enum class Dialect { Sinumerik840D, LinuxCnc };
 
@@ -30,7 +30,7 @@ struct NcOptions {
     std::string programName = "AERONC";
 };
 
-std::string formatNc(const Plan& plan, const NcOptions& options);
+std::string formatNc(const kinematics::Plan& plan, const NcOptions& options);
 
 // Appends v with `decimals` decimals, trailing zeros dropped ("12.5", "-3", "0"). The common
 // case (up to 9 decimals, |v| below 1e9) rounds the scaled value to an integer and writes its
@@ -74,4 +74,4 @@ inline void appendNumber(std::string& out, double v, int decimals) {
     out.append(buf, end);
 }
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -4,10 +4,12 @@
 // CYCLE distances are measured from it along the tool axis: FEDTO below it to the bottom,
 // RAPTO above it where the rapid approach stops (0 here), RTRCTO above it where the tool
 // returns.
-#include <aeronc/kinematics/Apt.h>
-#include <aeronc/kinematics/NcFormat.h>
+#include <aeronc/post/Apt.h>
+#include <aeronc/post/NcFormat.h>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
+
+using namespace kinematics;
 
 namespace {
 
@@ -155,4 +157,4 @@ private:
 
 std::string writeApt(const ClProgram& program, int decimals) { return AptWriter(program, decimals).run(); }
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

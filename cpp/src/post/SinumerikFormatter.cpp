@@ -6,16 +6,16 @@
 // _DIR picks the solution with the higher (+1) or lower (-1) value of the machine's
 // direction-reference axis. Simultaneous segments run under TRAORI: X Y Z are the tool tip in
 // the workpiece frame, orientation is machine A/C words or A3= B3= C3=.
-#include "NcWriter.h"
-
-#include <aeronc/kinematics/Planner.h>
+#include "NcFormatter.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
+
+using namespace kinematics;
 
 namespace {
 
@@ -47,10 +47,9 @@ std::string programName(const std::string& name) {
     return s;
 }
 
-class Sinumerik {
+class SinumerikFormatter : public NcFormatter {
 public:
-    Sinumerik(const Plan& plan, const NcOptions& o)
-        : plan_(plan), prog_(*plan.program), m_(plan.machine), o_(o), w_(o.lineNumbers, true) {
+    SinumerikFormatter(const Plan& plan, const NcOptions& o) : NcFormatter(plan, o, true, "G4 F") {
         // CYCLE832 smooths milling: segments with feed moves and no drilling cycle.
         milling_.assign(plan.segments.size(), 0);
         std::vector<char> drilling(plan.segments.size(), 0);
@@ -62,31 +61,16 @@ public:
         if (o.smoothing == "finish") smoothing_ = "_FINISH";
         else if (o.smoothing == "semifinish") smoothing_ = "_SEMIFIN";
         else if (o.smoothing == "rough") smoothing_ = "_ROUGH";
-        else if (o.smoothing != "off") throw kinematicsError("unknown smoothing '" + o.smoothing + "' (finish, semifinish, rough, off)");
-    }
-
-    std::string run() {
-        header();
-        for (const auto& s : plan_.steps) {
-            const ClRecord& r = prog_.records[s.record];
-            try {
-                step(s, r);
-            } catch (const Error& e) {
-                throw kinematicsError(prog_.where(r) + ": " + e.what());
-            }
-        }
-        footer();
-        return std::move(w_.text());
+        else if (o.smoothing != "off") throw inputError("unknown smoothing '" + o.smoothing + "' (finish, semifinish, rough, off)");
     }
 
 private:
-    void header() {
+    void header() override {
         const std::string name = programName(o_.programName);
         w_.raw("%_N_" + name + "_MPF");
         w_.raw(";$PATH=/_N_MPF_DIR");
         if (o_.comments) {
-            w_.comment(name + ": posted by AeroNC for machine " + m_.name + " (" + m_.kinematicsName() + " " + m_.rotary[0].name +
-                       "/" + m_.rotary[1].name + ", " + (m_.controller.empty() ? "Sinumerik 840D" : m_.controller) + ")");
+            w_.comment(postedBy(name, m_.controller.empty() ? "Sinumerik 840D" : m_.controller));
             w_.comment("lengths in mm, angles in degrees; 3+2 planes by CYCLE800, simultaneous 5-axis under TRAORI");
             for (const auto& r : prog_.records) {
                 if (r.kind != ClKind::LoadTool) continue;
@@ -107,17 +91,17 @@ private:
         swivelled_ = false;
     }
 
-    void footer() {
+    void footer() override {
         leaveSegment();
         if (smoothingOn_) w_.line("CYCLE832(0,_OFF,1)");
-        w_.line("M5");
-        if (coolant_) w_.line("M9");
+        stopSpindleAndCoolant();
         resetPlane();
         w_.line("M30");
     }
 
     void forgetPosition() {
-        for (auto* m : {&x_, &y_, &z_, &a_[0], &a_[1], &f_, &g_, &v_[0], &v_[1], &v_[2]}) m->forget();
+        forgetModal();
+        for (auto& v : v_) v.forget();
     }
 
     void leaveSegment() {
@@ -190,28 +174,6 @@ private:
         }
     }
 
-    void motionWord(Motion m) {
-        static const char* words[] = {"G0", "G1", "G2", "G3"};
-        const char* g = words[static_cast<int>(m)];
-        if (!g_.valid || g_.last != g) w_.word(g);
-        g_.last = g;
-        g_.valid = true;
-    }
-
-    // G93 inverse time (F = 1/minutes) on feed moves that turn a rotary axis, when asked for.
-    bool inverseTime(const PlannedStep& s) const {
-        return o_.inverseTime && s.motion != Motion::Rapid && s.rotaryMoved && s.minutes > 0;
-    }
-
-    // The feed mode word goes first in the block, F last.
-    void feedMode(const PlannedStep& s) {
-        if (s.motion == Motion::Rapid) return;
-        const bool inv = inverseTime(s);
-        if (inv != inverse_) w_.word(inv ? "G93" : "G94");
-        if (inv != inverse_) f_.forget();
-        inverse_ = inv;
-    }
-
     void feedWord(const PlannedStep& s) {
         if (s.motion == Motion::Rapid) return;
         if (inverse_)
@@ -226,68 +188,38 @@ private:
         if (known[2]) w_.modal("Z", p.z(), o_.precision, z_);
     }
 
-    void step(const PlannedStep& s, const ClRecord& r) {
-        switch (s.kind) {
-            case ClKind::Comment:
-                if (o_.comments && !r.text.empty()) w_.comment(r.text);
-                return;
-            case ClKind::Operation:
-                if (o_.comments) w_.comment("operation: " + r.text);
-                return;
-            case ClKind::WorkOffset: {
-                static const char* allowed[] = {"G54", "G55", "G56", "G57"};
-                bool ok = false;
-                for (auto* a : allowed) ok |= r.text == a;
-                if (!ok) throw kinematicsError("work offset " + r.text + " has another meaning on a Sinumerik; use G54 to G57");
-                leaveSegment();
-                w_.line(r.text);
-                return;
-            }
-            case ClKind::LoadTool: {
-                leaveSegment();
-                if (!smoothing_.empty() && smoothingOn_) setSmoothing(false);
-                resetPlane();  // no tool change in a swivelled plane
-                if (o_.comments) w_.comment("tool: " + r.tool.name);
-                std::string t;
-                if (o_.toolByName) {
-                    std::string n = r.tool.name;
-                    for (char& c : n)
-                        if (c == '"') c = '\'';
-                    t = "T=\"" + n + "\" D1 M6";
-                } else {
-                    t = "T" + std::to_string(r.tool.number) + " D1 M6";
-                }
-                w_.line(t);
-                return;
-            }
-            case ClKind::Spindle:
-                w_.spindle(r.rpm, r.spindleDir);
-                return;
-            case ClKind::Coolant:
-                coolant_ = w_.coolant(r.text);
-                return;
-            case ClKind::Dwell:
-                w_.value("G4 F", r.seconds, 3);
-                w_.end();
-                return;
-            case ClKind::Stop:
-                w_.line(r.text);
-                return;
-            case ClKind::Move:
-                move(s);
-                return;
-            case ClKind::Cycle:
-                cycle(s, r);
-                return;
-        }
+    void workOffset(const ClRecord& r) override {
+        static const char* allowed[] = {"G54", "G55", "G56", "G57"};
+        bool ok = false;
+        for (auto* a : allowed) ok |= r.text == a;
+        if (!ok) throw inputError("work offset " + r.text + " has another meaning on a Sinumerik; use G54 to G57");
+        leaveSegment();
+        w_.line(r.text);
     }
 
-    void move(const PlannedStep& s) {
+    void loadTool(const ClRecord& r) override {
+        leaveSegment();
+        if (!smoothing_.empty() && smoothingOn_) setSmoothing(false);
+        resetPlane();  // no tool change in a swivelled plane
+        if (o_.comments) w_.comment("tool: " + r.tool.name);
+        std::string t;
+        if (o_.toolByName) {
+            std::string n = r.tool.name;
+            for (char& c : n)
+                if (c == '"') c = '\'';
+            t = "T=\"" + n + "\" D1 M6";
+        } else {
+            t = "T" + std::to_string(r.tool.number) + " D1 M6";
+        }
+        w_.line(t);
+    }
+
+    void move(const PlannedStep& s) override {
         if (s.segment != active_) enterSegment(s.segment, s);
         const Segment& seg = plan_.segments[s.segment];
         if (seg.mode == SegmentMode::Plane) {
             if (!s.tipKnown() && !frame_.identity)
-                throw kinematicsError("a move that gives only some of X, Y, Z cannot be written in a swivelled plane");
+                throw inputError("a move that gives only some of X, Y, Z cannot be written in a swivelled plane");
             const Vec3 p = frame_.local(s.pose.tip);
             feedMode(s);
             motionWord(s.motion);
@@ -301,7 +233,7 @@ private:
             w_.end();
         } else {
             if (s.motion == Motion::ArcCW || s.motion == Motion::ArcCCW)
-                throw kinematicsError("internal: an arc reached a TRAORI segment unlinearised");
+                throw inputError("internal: an arc reached a TRAORI segment unlinearised");
             feedMode(s);
             motionWord(s.motion);
             xyz(s.pose.tip, s.known);
@@ -325,18 +257,16 @@ private:
             feedWord(s);
             w_.end();
         }
-        if (o_.comments && s.origin == MoveOrigin::Reposition) w_.comment("branch change: retracted, repositioned, re-entering");
         last_ = s.pose.tip;
     }
 
-    void cycle(const PlannedStep& s, const ClRecord& r) {
+    void cycle(const PlannedStep& s, const ClRecord& r) override {
         if (s.segment != active_) enterSegment(s.segment, s);
         const Vec3 u = s.pose.axis;
         const double dp = frame_.local(s.pose.tip).z();
         const double rfp = frame_.local(s.pose.tip + r.retract * u).z();
         const double rtp = frame_.local(s.pose.tip + r.clearance * u).z();
-        if (inverse_) w_.word("G94"), f_.forget();
-        inverse_ = false;
+        unitsPerMinute();
         w_.modal("F", r.feed, std::min(o_.precision, 3), f_);
         w_.end();
         std::string call;
@@ -378,26 +308,19 @@ private:
         g_.forget();
     }
 
-    const Plan& plan_;
-    const ClProgram& prog_;
-    const MachineModel& m_;
-    const NcOptions& o_;
-    NcWriter w_;
     std::vector<char> milling_;
-    bool coolant_ = false;
     std::string smoothing_;
     bool smoothingOn_ = false;
     bool traori_ = false;
     bool swivelled_ = false;
-    bool inverse_ = false;
     int active_ = -1;
     Frame frame_;
     Vec3 last_ = Vec3::Zero();
-    Modal x_, y_, z_, a_[2], f_, g_, v_[3];
+    Modal v_[3];
 };
 
 }  // namespace
 
-std::string formatSinumerik(const Plan& plan, const NcOptions& o) { return Sinumerik(plan, o).run(); }
+std::string formatSinumerik(const Plan& plan, const NcOptions& o) { return SinumerikFormatter(plan, o).run(); }
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post

@@ -1,9 +1,9 @@
 // The posts end to end: FreeCAD-style Path text with tool axes -> NC text -> independent
 // readback -> forward kinematics -> the input tip and axis again (1e-6 mm, 1e-9 rad).
-#include "Fixtures.h"
+#include "kinematics/Fixtures.h"
 #include "NcReadback.h"
 
-#include <aeronc/kinematics/Post.h>
+#include <aeronc/post/Post.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 
 using namespace aeronc::kinematics;
 using namespace aeronc::kinematics::test;
+using namespace aeronc::post;
 
 namespace {
 

@@ -1,16 +1,12 @@
 // FreeCAD Path commands (Path.toGCode() text) -> CL program. See PathReader.h for the convention.
-#include <aeronc/kinematics/PathReader.h>
+#include <aeronc/post/PathReader.h>
 
 #include <charconv>
 #include <cstring>
 
-namespace aeronc::kinematics {
+namespace aeronc::post {
 
-std::string ClProgram::where(const ClRecord& r) const {
-    if (fromApt) return "APT line " + std::to_string(r.line);
-    if (r.op < 0 || r.op >= static_cast<int>(operations.size())) return "command " + std::to_string(r.line);
-    return operations[r.op].label + ", move " + std::to_string(r.line);
-}
+using namespace kinematics;
 
 namespace {
 
@@ -142,7 +138,7 @@ private:
     [[noreturn]] void fail(int number, std::string_view text, const std::string& msg) const {
         std::string m = label_ + ", move " + std::to_string(number);
         if (!text.empty()) m += " (" + std::string(text) + ")";
-        throw kinematicsError(m + ": " + msg);
+        throw inputError(m + ": " + msg);
     }
 
     Command parse(std::string_view line, int number) const {
@@ -396,4 +392,4 @@ ClProgram readFreeCadPath(const std::vector<PathSection>& sections, const std::s
     return prog;
 }
 
-}  // namespace aeronc::kinematics
+}  // namespace aeronc::post
