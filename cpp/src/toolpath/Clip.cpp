@@ -105,7 +105,10 @@ bool contains(const Paths& region, const Point& p) {
     return winding > 0;
 }
 
-double distance(const Point& a, const Point& b) { return std::hypot(b[0] - a[0], b[1] - a[1]); }
+double distance(const Point& a, const Point& b) {
+    const double du = b[0] - a[0], dv = b[1] - a[1];
+    return std::sqrt(du * du + dv * dv);  // not hypot: no overflow to guard against at 10^6 mm, and much faster
+}
 
 Point nearestOnSegment(const Point& p, const Point& a, const Point& b) {
     const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;

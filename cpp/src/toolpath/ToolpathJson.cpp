@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <set>
 
 namespace aeronc::toolpath {
@@ -179,13 +180,50 @@ Toolpath compute(const json& j) {
 
 }  // namespace
 
-std::string toJson(const Toolpath& t) {
-    json moves = json::array();
-    for (const Move& m : t.moves) {
-        if (m.kind == Move::Kind::Drill) moves.push_back({3, m.u, m.v, m.h, m.r, m.q, m.dwell});
-        else moves.push_back({int(m.kind), m.u, m.v, m.h});
+namespace {
+
+// Fixed point to 1e-6 mm with trailing zeros dropped: exact enough for any post, and a
+// fraction of the size and time of shortest-round-trip doubles.
+void number(std::string& out, double v) {
+    if (!std::isfinite(v)) throw Error(Error::Kind::Internal, "a toolpath value is not finite");
+    long long n = std::llround(v * 1e6);
+    if (n < 0) out += '-', n = -n;
+    char b[24];
+    int len = 0;
+    long long whole = n / 1000000, frac = n % 1000000;
+    do b[len++] = char('0' + whole % 10), whole /= 10;
+    while (whole);
+    while (len) out += b[--len];
+    if (frac) {
+        int digits = 6;
+        while (frac % 10 == 0) frac /= 10, --digits;
+        out += '.';
+        for (int k = digits - 1; k >= 0; --k) b[k] = char('0' + frac % 10), frac /= 10;
+        out.append(b, std::size_t(digits));
     }
-    return json{{"moves", std::move(moves)}, {"cutLength", t.cutLength}, {"rapidLength", t.rapidLength}}.dump();
+}
+
+}  // namespace
+
+std::string toJson(const Toolpath& t) {
+    std::string out;
+    out.reserve(t.moves.size() * 36 + 64);
+    out += "{\"moves\":[";
+    for (std::size_t i = 0; i < t.moves.size(); ++i) {
+        const Move& m = t.moves[i];
+        out += i ? ",[" : "[";
+        out += char('0' + int(m.kind));
+        for (double v : {m.u, m.v, m.h}) out += ',', number(out, v);
+        if (m.kind == Move::Kind::Drill)
+            for (double v : {m.r, m.q, m.dwell}) out += ',', number(out, v);
+        out += ']';
+    }
+    out += "],\"cutLength\":";
+    number(out, t.cutLength);
+    out += ",\"rapidLength\":";
+    number(out, t.rapidLength);
+    out += '}';
+    return out;
 }
 
 std::string toolpathJson(const std::string& unitJson) {
