@@ -26,8 +26,10 @@ Loop toLoop(const Path& path) {
     return l;
 }
 
+double arcTolerance(double chordTolerance) { return std::max(chordTolerance / 2.25 * kScale, 1.0); }
+
 Paths offset(const Paths& region, double delta, double chordTolerance) {
-    ClipperOffset off(2.0, std::max(chordTolerance * kScale, 1.0));
+    ClipperOffset off(2.0, arcTolerance(chordTolerance));
     off.AddPaths(region, jtRound, etClosedPolygon);
     Paths out;
     off.Execute(out, delta * kScale);
@@ -78,7 +80,7 @@ std::vector<Piece> pieces(const Paths& region) {
 }
 
 std::vector<Piece> offsetPieces(const Paths& region, double delta, double chordTolerance) {
-    ClipperOffset off(2.0, std::max(chordTolerance * kScale, 1.0));
+    ClipperOffset off(2.0, arcTolerance(chordTolerance));
     off.AddPaths(region, jtRound, etClosedPolygon);
     PolyTree tree;
     off.Execute(tree, delta * kScale);

@@ -17,6 +17,10 @@ Point toPoint(const IntPoint& p);
 Path toPath(const Loop& loop);
 Loop toLoop(const Path& path);
 
+// Clipper's ArcTolerance for arcs within chordTolerance: Clipper rounds the steps of a join to
+// a whole number, which can make one step half as wide again (2.25 times the sagitta).
+double arcTolerance(double chordTolerance);
+
 // A region as Clipper paths: outers counter-clockwise, holes clockwise.
 // Round-join offset; negative delta erodes. Arcs within chordTolerance.
 Paths offset(const Paths& region, double delta, double chordTolerance);

@@ -84,7 +84,7 @@ Polyline trimmed(const Polyline& drive, const std::optional<Point>& from, const 
 // in the drive's direction: the longest run of that side's vertices on the boundary of the
 // drive's butt-ended offset.
 Polyline sideOffset(const Polyline& drive, double d, int side, double tol) {
-    ClipperLib::ClipperOffset off(2.0, std::max(tol * clip::kScale, 1.0));
+    ClipperLib::ClipperOffset off(2.0, clip::arcTolerance(tol));
     clip::Path dp;
     for (const Point& p : drive) dp.push_back(clip::toInt(p));
     off.AddPath(dp, ClipperLib::jtRound, ClipperLib::etOpenButt);

@@ -7,19 +7,28 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace aeronc::toolpath::test {
 
-inline double dist(const Point& a, const Point& b) { return std::hypot(a[0] - b[0], a[1] - b[1]); }
+inline double dist(const Point& a, const Point& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]));
+}
 
 inline double pointSegment(const Point& p, const Point& a, const Point& b) {
     const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
     const double t = l2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2, 0.0, 1.0) : 0.0;
-    return std::hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+    const double ex = a[0] + t * dx - p[0], ey = a[1] + t * dy - p[1];
+    return std::sqrt(ex * ex + ey * ey);
 }
 
-inline double segmentSegment(const Point& a, const Point& b, const Point& c, const Point& d) {
+// The distance between segments ab and cd, or `beyond` when their boxes are farther apart.
+inline double segmentSegment(const Point& a, const Point& b, const Point& c, const Point& d,
+                             double beyond = std::numeric_limits<double>::infinity()) {
+    const double gap = std::max({std::min(c[0], d[0]) - std::max(a[0], b[0]), std::min(a[0], b[0]) - std::max(c[0], d[0]),
+                                 std::min(c[1], d[1]) - std::max(a[1], b[1]), std::min(a[1], b[1]) - std::max(c[1], d[1])});
+    if (gap > beyond) return beyond;
     auto cr = [](const Point& o, const Point& p, const Point& q) {
         return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
     };
@@ -27,6 +36,43 @@ inline double segmentSegment(const Point& a, const Point& b, const Point& c, con
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0;
     return std::min({pointSegment(a, c, d), pointSegment(b, c, d), pointSegment(c, a, b), pointSegment(d, a, b)});
 }
+
+// Edges in a uniform grid, to find whether a segment comes within `limit` of any of them.
+class EdgeGrid {
+public:
+    EdgeGrid(const std::vector<std::pair<Point, Point>>& edges, double cell) : edges_(edges), cell_(cell) {
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+            const auto& [a, b] = edges[e];
+            for (long i = key(std::min(a[0], b[0])); i <= key(std::max(a[0], b[0])); ++i)
+                for (long j = key(std::min(a[1], b[1])); j <= key(std::max(a[1], b[1])); ++j) cells_[{i, j}].push_back(e);
+        }
+        seen_.assign(edges.size(), 0);
+    }
+    // The distance from segment ab to the nearest edge, or `limit` when none is nearer.
+    double nearest(const Point& a, const Point& b, double limit) {
+        ++stamp_;
+        double d = limit;
+        for (long i = key(std::min(a[0], b[0]) - limit); i <= key(std::max(a[0], b[0]) + limit); ++i)
+            for (long j = key(std::min(a[1], b[1]) - limit); j <= key(std::max(a[1], b[1]) + limit); ++j) {
+                const auto it = cells_.find({i, j});
+                if (it == cells_.end()) continue;
+                for (std::size_t e : it->second) {
+                    if (seen_[e] == stamp_) continue;
+                    seen_[e] = stamp_;
+                    d = std::min(d, segmentSegment(a, b, edges_[e].first, edges_[e].second, d));
+                }
+            }
+        return d;
+    }
+
+private:
+    long key(double x) const { return long(std::floor(x / cell_)); }
+    std::vector<std::pair<Point, Point>> edges_;
+    double cell_;
+    std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
+    std::vector<unsigned> seen_;
+    unsigned stamp_ = 0;
+};
 
 // Even-odd point in polygon.
 inline bool inside(const Loop& l, const Point& p) {
@@ -46,7 +92,7 @@ inline double loopDistance(const Loop& l, const Point& p) {
 
 inline double loopSegmentDistance(const Loop& l, const Point& a, const Point& b) {
     double d = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < l.size(); ++i) d = std::min(d, segmentSegment(a, b, l[i], l[(i + 1) % l.size()]));
+    for (std::size_t i = 0; i < l.size(); ++i) d = std::min(d, segmentSegment(a, b, l[i], l[(i + 1) % l.size()], d));
     return d;
 }
 
