@@ -1,5 +1,5 @@
-// Toolpaths for what recognition finds on parts nobody here made (NIST CTC/FTC, a milled
-// plate) and on a generated double-sided panel: every pocket cleared without touching its
+// Toolpaths for what recognition finds on parts nobody here made (NIST CTC/FTC) and on a
+// generated double-sided panel: every pocket cleared without touching its
 // walls or islands, down to its floor; every hole milled or drilled.
 #include "toolpath/Checks.h"
 
