@@ -334,7 +334,19 @@ private:
     // deeper inside when the centroid lies outside it or too near its edge.
     std::optional<Helix> helixFor(const Loop& loop) const {
         const clip::Path outer = clip::toPath(loop);
-        std::vector<Point> candidates{clip::centroid(loop)};
+        auto tryAt = [&](const Point& c) -> std::optional<Helix> {
+            if (ClipperLib::PointInPolygon(clip::toInt(c), outer) == 0 || !clip::contains(allowed_, c)) return std::nullopt;
+            const double r = std::min(o_.helixRadius, clip::boundaryDistance(allowed_, c) - 2 * o_.chordTolerance);
+            if (r < o_.minHelixRadius) return std::nullopt;
+            const auto to = clip::nearestOnLoop(loop, c);
+            Point dir{to.at[0] - c[0], to.at[1] - c[1]};
+            const double len = std::hypot(dir[0], dir[1]);
+            dir = len > 1e-9 ? Point{dir[0] / len, dir[1] / len} : Point{1, 0};
+            const Point start{c[0] + r * dir[0], c[1] + r * dir[1]};
+            if (!clip::segmentInside(allowed_, start, to.at)) return std::nullopt;
+            return Helix{c, r, start, to};
+        };
+        if (auto h = tryAt(clip::centroid(loop))) return h;
         for (double t : {o_.helixRadius, o_.helixRadius / 2, o_.minHelixRadius}) {
             const auto inner = clip::offsetPieces({outer}, -t, o_.chordTolerance);
             const Piece* best = nullptr;
@@ -344,20 +356,8 @@ private:
                 if (a > bestA) bestA = a, best = &p;
             }
             if (!best) continue;
-            candidates.push_back(clip::centroid(clip::toLoop(best->outer)));
-            candidates.push_back(clip::toPoint(best->outer.front()));
-        }
-        for (const Point& c : candidates) {
-            if (ClipperLib::PointInPolygon(clip::toInt(c), outer) == 0 || !clip::contains(allowed_, c)) continue;
-            const double r = std::min(o_.helixRadius, clip::boundaryDistance(allowed_, c) - 2 * o_.chordTolerance);
-            if (r < o_.minHelixRadius) continue;
-            const auto to = clip::nearestOnLoop(loop, c);
-            Point dir{to.at[0] - c[0], to.at[1] - c[1]};
-            const double len = std::hypot(dir[0], dir[1]);
-            dir = len > 1e-9 ? Point{dir[0] / len, dir[1] / len} : Point{1, 0};
-            const Point start{c[0] + r * dir[0], c[1] + r * dir[1]};
-            if (!clip::segmentInside(allowed_, start, to.at)) continue;
-            return Helix{c, r, start, to};
+            if (auto h = tryAt(clip::centroid(clip::toLoop(best->outer)))) return h;
+            if (auto h = tryAt(clip::toPoint(best->outer.front()))) return h;
         }
         return std::nullopt;
     }
