@@ -129,7 +129,10 @@ class Leads {
 public:
     Leads(const Polyline& drive, bool closed, ToolSide side, double d, const ProfileParameters& p)
         : drive_(drive), closed_(closed), side_(side), d_(d), p_(p) {
-        if (closed) region_ = {clip::toPath(drive)};
+        if (closed) {
+            region_ = {clip::toPath(drive)};
+            if (!ClipperLib::Orientation(region_[0])) ClipperLib::ReversePath(region_[0]);  // for contains()
+        }
     }
 
     void add(Cut& c, double radius) const {

@@ -80,6 +80,24 @@ TEST(Profile, InsideOfAClosedLoopIsCutClockwise) {
     EXPECT_LT(signedArea(passes[0]), 0);
 }
 
+TEST(Profile, ClockwiseDriveGetsItsLeadsToo) {
+    Loop drive = roundedRectangle(0, 0, 50, 30, 6);
+    std::reverse(drive.begin(), drive.end());
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    const Toolpath t = profile({drive, true, {}, {}, 0, -2}, {10, 0}, p);
+    const auto passes = passesAt(t, -2);
+    ASSERT_EQ(passes.size(), 1u);
+    double farthest = 0;
+    for (const Point& q : passes[0]) {
+        EXPECT_TRUE(inside(drive, q));
+        EXPECT_GE(loopDistance(drive, q), 5 - 0.011);
+        farthest = std::max(farthest, loopDistance(drive, q));
+    }
+    EXPECT_GT(farthest, 5 + 2);  // the arcs lead in from and out to the middle
+    EXPECT_LT(signedArea(passes[0]), 0);
+}
+
 TEST(Profile, LeftAndRightOfAClosedLoopFollowItsOrientation) {
     const Loop ccw = rectangle(0, 0, 30, 30);
     ProfileParameters p;
