@@ -4,7 +4,7 @@
 #include "toolpath/Checks.h"
 
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolpath/Drilling.h>

@@ -1,6 +1,6 @@
 // Helical hole milling and drilling against their known geometry: the helix and finishing
 // radii, the pitch, the floor, the drilling cycles' heights.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Checks.h"
 
 #include <aeronc/toolpath/Drilling.h>

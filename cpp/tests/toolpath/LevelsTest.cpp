@@ -1,5 +1,5 @@
 // Cutting levels: equal steps of at most stepDown, the last exactly at the floor.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 
 #include <aeronc/toolpath/Levels.h>
 

@@ -1,7 +1,7 @@
 // Pocket clearing against geometry with known truth: the rings of a rectangle, the exact
 // offset from the walls, the levels, islands, open edges, entries, and coverage of the floor
 // by the swept cutter compared with the pocket's opening, both rasterised.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Checks.h"
 
 #include <aeronc/toolpath/Levels.h>

@@ -1,6 +1,6 @@
 // Profiles: the cutter at R + allowance from the drive on the chosen side, in the climb
 // direction, with leads that stay off the material, at every level.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Checks.h"
 
 #include <aeronc/toolpath/Levels.h>

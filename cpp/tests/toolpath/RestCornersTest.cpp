@@ -1,6 +1,6 @@
 // Rest machining: the smaller cutter sweeps what it reaches and the larger one did not, and
 // works only near the corners.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Checks.h"
 
 #include <aeronc/toolpath/PocketClearing.h>

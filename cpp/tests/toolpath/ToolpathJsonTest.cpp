@@ -1,6 +1,6 @@
 // The JSON boundary: the same toolpaths as the C++ calls, the documented move format, and a
 // clear message for each mistake.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Checks.h"
 
 #include <aeronc/toolpath/Drilling.h>
