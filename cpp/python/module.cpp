@@ -55,6 +55,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 }  // namespace
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -146,4 +147,5 @@ PYBIND11_MODULE(_core, m) {
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
     bindKinematics(m);
+    bindCompensation(m);
 }
