@@ -49,7 +49,8 @@ def report_data(op):
 
 
 def picture(data, title=None, size=(9.0, 6.0)):
-    """PNG bytes: the holes in plan (part frame X, Y), datum-hole deviations dP (red) and
+    """PNG bytes: the holes in plan (part frame X, Y), datum-hole deviations dP (purple, as in
+    the 3-D view) and
     drilled-hole corrections (blue) as arrows, scaled up by one factor given in the legend; each
     drilled hole coloured by its correction along Z."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -85,14 +86,14 @@ def picture(data, title=None, size=(9.0, 6.0)):
                        label="correction > {:g} mm".format(data["tolerance"]))
         dx = [d["nominal"][0] for d in data["datums"]]
         dy = [d["nominal"][1] for d in data["datums"]]
-        ax.scatter(dx, dy, s=46, marker="s", facecolors="none", edgecolors="#b00020", linewidths=1.4, zorder=4,
+        ax.scatter(dx, dy, s=46, marker="s", facecolors="none", edgecolors="#00733a", linewidths=1.4, zorder=4,
                    label="datum hole")
         ax.quiver(dx, dy, [d["deviation"][0] * scale for d in data["datums"]],
                   [d["deviation"][1] * scale for d in data["datums"]], angles="xy", scale_units="xy", scale=1,
-                  color="#b00020", width=0.004, zorder=5, label="measured deviation dP (x {:g})".format(scale))
+                  color="#8c00bf", width=0.004, zorder=5, label="measured deviation dP (x {:g})".format(scale))
         for d in data["datums"]:
             ax.annotate(d["id"], (d["nominal"][0], d["nominal"][1]), textcoords="offset points", xytext=(4, -11),
-                        fontsize=7, color="#b00020")
+                        fontsize=7, color="#00733a")
         ax.set_aspect("equal", adjustable="datalim")
         ax.margins(0.08)
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2, fontsize=8, frameon=False)

@@ -159,11 +159,22 @@ def operations_of(photo_set):
     return [o for o in photo_set.Document.Objects if is_compensated_drilling(o) and o.PhotoHoleSet is photo_set]
 
 
+def create_for_photo_set(photo_set, measured_set=None):
+    """The compensated drilling of the set's part: the existing operation, or a new one in the
+    part's Job (made when the part has none); one undo step."""
+    existing = operations_of(photo_set)
+    if existing:
+        return existing[0]
+    from aeronc import pathcompat
+    jobs = pathcompat.jobs_of_part(photo_set.Document, photo_set.Source)
+    return create_compensated_drilling(jobs[0] if jobs else None, photo_set, measured_set)
+
+
 def create_compensated_drilling(job, photo_set, measured_set=None, tool_controller=None, holes=None,
                                 label="Compensated drilling"):
-    """A compensated drilling operation in job for the holes of photo_set's part (default:
-    every hole of the part's pattern that is not a datum hole), with a drill tool controller
-    made for the holes' diameter unless one is given; one undo step."""
+    """A compensated drilling operation in job (None: a new Job for the part) for the holes of
+    photo_set's part (default: every hole of the part's pattern that is not a datum hole), with
+    a drill tool controller made for the holes' diameter unless one is given; one undo step."""
     from aeronc import pathcompat
     from aeronc.objects import measured_hole_set, photo_hole_set
     part = photo_set.Source
@@ -174,9 +185,13 @@ def create_compensated_drilling(job, photo_set, measured_set=None, tool_controll
     if measured_set is None:
         sets = measured_hole_set.measured_sets_of(photo_set)
         measured_set = sets[0] if sets else None
-    doc = job.Document
+    doc = photo_set.Document
 
     def work():
+        nonlocal job
+        if job is None:
+            job = pathcompat.create_job(doc, [part])
+            doc.recompute()
         tc = tool_controller
         if tc is None:
             number = max([int(t.ToolNumber) for t in pathcompat.tool_controllers(job)] + [0]) + 1
