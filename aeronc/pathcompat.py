@@ -355,3 +355,9 @@ def create_custom_operation(name, gcode):
     op = Custom.Create(name)
     op.Gcode = list(gcode)
     return op
+
+
+def add_scripted_operation(doc, name):
+    """A new Path object whose Path an AeroNC proxy computes (FreeCAD 0.20 and 1.x both call
+    the type Path::FeaturePython); the caller adds it to a Job's Operations."""
+    return doc.addObject("Path::FeaturePython", name)

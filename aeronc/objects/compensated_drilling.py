@@ -200,7 +200,7 @@ def create_compensated_drilling(job, photo_set, measured_set=None, tool_controll
             tc.Tool.Diameter = d
             tc.Tool.Label = "Drill {:g}".format(round(d, 3))
             tc.VertFeed, tc.HorizFeed, tc.SpindleSpeed = "300 mm/min", "300 mm/min", 4000
-        op = doc.addObject("Path::FeaturePython", "CompensatedDrilling")
+        op = pathcompat.add_scripted_operation(doc, "CompensatedDrilling")
         CompensatedDrilling(op)
         op.Label = label
         op.ToolController = tc
