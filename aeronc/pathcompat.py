@@ -286,3 +286,9 @@ def tooled_operations(job):
     ops = getattr(job, "Operations", None)
     return [op for op in (ops.Group if ops is not None else [])
             if op_active(op) and tool_controller_of(op) is not None]
+
+
+def add_scripted_operation(doc, name):
+    """A new Path object whose Path an AeroNC proxy computes (FreeCAD 0.20 and 1.x both call
+    the type Path::FeaturePython); the caller adds it to a Job's Operations."""
+    return doc.addObject("Path::FeaturePython", name)

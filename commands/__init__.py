@@ -8,6 +8,9 @@ they do is imported when they run. base.py holds what every command shares.
 import FreeCADGui
 
 COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_EditKnowledgeBase"]
+# Datum holes and compensated drilling (commands/datum_holes.py).
+DRILLING_COMMANDS = ["AeroNC_DefineDatumHoles", "AeroNC_CameraProgram", "AeroNC_ImportMeasurements",
+                     "AeroNC_CompensatedDrilling"]
 
 
 def register():
@@ -21,5 +24,10 @@ def register():
                           ("AeroNC_SelectTools", SelectTools),
                           ("AeroNC_OptimiseCutting", OptimiseCutting),
                           ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
+        if name not in known:
+            FreeCADGui.addCommand(name, command())
+    from aeronc.commands import datum_holes
+    for name, command in zip(DRILLING_COMMANDS, (datum_holes.DefineDatumHoles, datum_holes.CameraProgram,
+                                                 datum_holes.ImportMeasurements, datum_holes.CompensatedDrilling)):
         if name not in known:
             FreeCADGui.addCommand(name, command())

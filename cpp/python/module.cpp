@@ -57,6 +57,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
 void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
+void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -149,4 +150,5 @@ PYBIND11_MODULE(_core, m) {
     bindOptimise(m);
     bindKinematics(m);
     bindToolpath(m);
+    bindCompensation(m);
 }
