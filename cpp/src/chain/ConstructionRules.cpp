@@ -319,17 +319,18 @@ MachiningChain checkChain(MachiningChain c) {
             u.stepOver = r != t->settings.end() ? r->second.ae : 0.5 * t->diameter;
         }
     }
-    // A rest unit follows the last pocket unit on its element.
-    std::map<int, Cutter> lastPocket;
+    // A rest unit follows the last pocket unit that cleared its element's full height (a floor
+    // pass leaves the walls as they were).
+    std::map<int, std::vector<const MachiningUnit*>> pockets;
     for (int id : c.order) {
         MachiningUnit& u = c.units[static_cast<std::size_t>(id)];
         if (!u.enabled) continue;
         if (u.operation == Operation::Rest) {
-            const auto it = lastPocket.find(u.element);
-            if (it != lastPocket.end()) u.previousCutter = it->second;
-            else u.previousCutter.reset();
+            u.previousCutter.reset();
+            for (const MachiningUnit* p : pockets[u.element])
+                if (p->top >= u.top - kEps) u.previousCutter = p->cutter;
         }
-        if (u.operation == Operation::Pocket) lastPocket[u.element] = u.cutter;
+        if (u.operation == Operation::Pocket) pockets[u.element].push_back(&u);
     }
     arrange(c);
     c.travel.optimised = travelOf(c, c.order);
