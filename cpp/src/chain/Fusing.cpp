@@ -84,6 +84,7 @@ struct ElementState {
     int roughUnit = -1;            // the last pocket unit (its cutter goes before a rest unit)
     bool holeMachined = false;
     std::map<StepCode, std::string> gaps;  // why an applicable step made no unit
+    std::set<StepCode> steps;              // the steps that made a unit
     int units = 0;
 };
 
@@ -412,6 +413,7 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     usedTools_.insert(toolIndex);
     chain_.units.push_back(std::move(u));
     ++state_[e.id].units;
+    state_[e.id].steps.insert(step.code);
     return chain_.units.back();
 }
 
@@ -526,14 +528,20 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             const bool passages = choice != choice_.end() && choice->second->ratio.narrowPassages > 0;
             const bool corners = e.minCornerRadius >= 0 && 0.5 * before.diameter + ar > e.minCornerRadius + kTol;
             if (!corners && !passages) return;
-            double rest = 0, eta = 0;
+            double rest = 0;
+            std::optional<double> eta;
             try {
                 const auto dir = directions_.at(e.setup);
                 const toolselect::PocketGeometry g = toolselect::pocketGeometry(e, dir);
                 const auto wide = toolselect::machinableRatio(g, 0.5 * before.diameter + ar);
-                const auto thin = toolselect::machinableRatio(g, ct.radius() + ar);
-                rest = (wide.area - wide.machinableArea) - (thin.area - thin.machinableArea);
-                eta = thin.eta;
+                rest = wide.area - wide.machinableArea;
+                // The finishing tool fits the corners; only passages narrower than it leave
+                // some of that to the wall steps.
+                if (passages) {
+                    const auto thin = toolselect::machinableRatio(g, ct.radius() + ar);
+                    rest -= thin.area - thin.machinableArea;
+                    eta = thin.eta;
+                }
             } catch (const Error& err) {
                 gap(elementName(e) + ": its corners could not be measured (" + err.what() + ")");
                 return;
@@ -585,10 +593,7 @@ void Fuser::listUnmachined(const DomainElement& e) {
         if (s.existence == Existence::MustNot || !s.machines(ft)) continue;
         anyStep = true;
         if (s.existence != Existence::Must) continue;
-        bool has = false;
-        for (const MachiningUnit& u : chain_.units)
-            if (u.element == e.id && u.step == s.code) has = true;
-        if (has) continue;
+        if (st.steps.count(s.code)) continue;
         // A must-step with nothing to do (a floor already finished) is no gap.
         const auto g = st.gaps.find(s.code);
         if (g == st.gaps.end()) continue;

@@ -105,14 +105,13 @@ public:
             for (int k : byRules) rulesOnly.push_back(block[static_cast<std::size_t>(k)]);
             if (!byRules.empty()) rulesEnd = p.points[static_cast<std::size_t>(byRules.back())];
 
-            // Shorter travel: nearest neighbour and the rules' own order, each improved; the
-            // shorter wins (from where the previous group ended).
+            // Shorter travel: nearest neighbour, improved; it replaces the rules' own order when
+            // shorter (from where the previous group ended).
             std::vector<int> best = byRules;
             if (optimise && block.size() > 1) {
                 p.start = optEnd;
                 std::vector<int> nn = nearestNeighbour(p, optEnd ? -1 : byRules.front());
                 improvePath(p, nn);
-                improvePath(p, best);
                 if (pathLength(p, nn) < pathLength(p, best)) best.swap(nn);
             }
             for (int k : best) optimised.push_back(block[static_cast<std::size_t>(k)]);
@@ -286,98 +285,135 @@ std::vector<int> nearestNeighbour(const PathProblem& p, int first) {
 }
 
 void improvePath(const PathProblem& p, std::vector<int>& path) {
+    const long N = static_cast<long>(path.size());
+    if (N < 2) return;
     const std::size_t n = path.size();
-    if (n < 2) return;
     std::vector<std::vector<int>> succ(p.points.size());
     for (std::size_t i = 0; i < p.predecessors.size(); ++i)
         for (int pr : p.predecessors[i]) succ[static_cast<std::size_t>(pr)].push_back(static_cast<int>(i));
-    std::vector<int> pos(p.points.size());
+
+    // Candidate moves only towards each point's nearest neighbours (the usual neighbour-list
+    // 2-opt and Or-opt): quadratic scans would take minutes on a thousand units.
+    constexpr std::size_t kNeighbours = 10;
+    std::vector<std::vector<int>> near(p.points.size());
+    {
+        std::vector<std::pair<double, int>> d;
+        for (int a : path) {
+            d.clear();
+            for (int b : path)
+                if (a != b) d.emplace_back(dist(p.points[static_cast<std::size_t>(a)], p.points[static_cast<std::size_t>(b)]), b);
+            const std::size_t k = std::min(kNeighbours, d.size());
+            std::partial_sort(d.begin(), d.begin() + static_cast<long>(k), d.end());
+            for (std::size_t i = 0; i < k; ++i) near[static_cast<std::size_t>(a)].push_back(d[i].second);
+        }
+    }
+    std::vector<long> pos(p.points.size());
     auto reindex = [&] {
-        for (std::size_t i = 0; i < n; ++i) pos[static_cast<std::size_t>(path[i])] = static_cast<int>(i);
+        for (std::size_t i = 0; i < n; ++i) pos[static_cast<std::size_t>(path[i])] = static_cast<long>(i);
     };
     reindex();
     auto pt = [&](long i) -> const Point2& { return p.points[static_cast<std::size_t>(path[static_cast<std::size_t>(i)])]; };
-    const long N = static_cast<long>(n);
+    auto at = [&](long i) -> const Point2* {  // position i, or the start before the path
+        if (i >= 0 && i < N) return &pt(i);
+        return i == -1 && p.start ? &*p.start : nullptr;
+    };
 
-    for (int round = 0; round < 10000; ++round) {
-        bool improved = false;
-        // 2-opt: reverse path[i..j] when no precedence lies inside it.
-        for (long i = 0; i + 1 < N; ++i) {
-            const Point2* before = i > 0 ? &pt(i - 1) : (p.start ? &*p.start : nullptr);
-            for (long j = i + 1; j < N; ++j) {
-                bool inside = false;
-                for (int pr : p.predecessors[static_cast<std::size_t>(path[static_cast<std::size_t>(j)])])
-                    if (pos[static_cast<std::size_t>(pr)] >= i && pos[static_cast<std::size_t>(pr)] < j) inside = true;
-                if (inside) break;  // every longer segment holds the pair too
-                const Point2* after = j + 1 < N ? &pt(j + 1) : nullptr;
-                double delta = 0;
-                if (before) delta += dist(*before, pt(j)) - dist(*before, pt(i));
-                if (after) delta += dist(pt(i), *after) - dist(pt(j), *after);
-                if (delta < -kGain) {
-                    std::reverse(path.begin() + i, path.begin() + j + 1);
-                    reindex();
-                    improved = true;
+    // 2-opt: reverse path[i..j]; no precedence may lie inside the run.
+    auto twoOpt = [&](long i, long j) {
+        if (i < 0 || j <= i || j >= N) return false;
+        const Point2* before = at(i - 1);
+        const Point2* after = j + 1 < N ? &pt(j + 1) : nullptr;
+        double delta = 0;
+        if (before) delta += dist(*before, pt(j)) - dist(*before, pt(i));
+        if (after) delta += dist(pt(i), *after) - dist(pt(j), *after);
+        if (delta >= -kGain) return false;
+        for (long k = i + 1; k <= j; ++k)
+            for (int pr : p.predecessors[static_cast<std::size_t>(path[static_cast<std::size_t>(k)])])
+                if (pos[static_cast<std::size_t>(pr)] >= i) return false;
+        std::reverse(path.begin() + i, path.begin() + j + 1);
+        reindex();
+        return true;
+    };
+
+    // Or-opt: move path[i..e] (1 to 3 units) between positions k and k + 1, either way round.
+    auto orOpt = [&](long i, long e, long k) {
+        if (i < 0 || e >= N || e < i || k < -1 || k >= N || (k >= i - 1 && k <= e)) return false;
+        const Point2* a = at(i - 1);
+        const Point2* b = e + 1 < N ? &pt(e + 1) : nullptr;
+        double removed = 0;
+        if (a) removed += dist(*a, pt(i));
+        if (b) removed += dist(pt(e), *b);
+        if (a && b) removed -= dist(*a, *b);
+        const Point2* x = at(k);
+        const Point2* y = k + 1 < N ? &pt(k + 1) : nullptr;
+        for (int reversed = 0; reversed < (e > i ? 2 : 1); ++reversed) {
+            const Point2& first = reversed ? pt(e) : pt(i);
+            const Point2& last = reversed ? pt(i) : pt(e);
+            double added = 0;
+            if (x) added += dist(*x, first);
+            if (y) added += dist(last, *y);
+            if (x && y) added -= dist(*x, *y);
+            if (added - removed >= -kGain) continue;
+            bool ok = true;
+            for (long s = i; s <= e && ok; ++s) {
+                const int u = path[static_cast<std::size_t>(s)];
+                if (reversed)  // the run must not be tied inside itself
+                    for (int pr : p.predecessors[static_cast<std::size_t>(u)])
+                        if (pos[static_cast<std::size_t>(pr)] >= i && pos[static_cast<std::size_t>(pr)] <= e) ok = false;
+                if (k > e) {  // moving later: nothing it jumps over may need it first
+                    for (int sc : succ[static_cast<std::size_t>(u)])
+                        if (pos[static_cast<std::size_t>(sc)] > e && pos[static_cast<std::size_t>(sc)] <= k) ok = false;
+                } else {  // moving earlier: nothing it jumps over may be needed first
+                    for (int pr : p.predecessors[static_cast<std::size_t>(u)])
+                        if (pos[static_cast<std::size_t>(pr)] > k && pos[static_cast<std::size_t>(pr)] < i) ok = false;
                 }
             }
+            if (!ok) continue;
+            std::vector<int> run(path.begin() + i, path.begin() + e + 1);
+            if (reversed) std::reverse(run.begin(), run.end());
+            std::vector<int> out;
+            out.reserve(n);
+            if (k == -1) out.insert(out.end(), run.begin(), run.end());
+            for (long q = 0; q < N; ++q) {
+                if (q >= i && q <= e) continue;
+                out.push_back(path[static_cast<std::size_t>(q)]);
+                if (q == k) out.insert(out.end(), run.begin(), run.end());
+            }
+            path.swap(out);
+            reindex();
+            return true;
         }
-        // Or-opt: move a run of 1 to 3 units elsewhere, either way round.
-        for (long len = 1; len <= 3; ++len) {
+        return false;
+    };
+
+    for (int round = 0; round < 1000; ++round) {
+        bool improved = false;
+        for (long i = 0; i < N; ++i) {
+            // New edge from the point before i to a neighbour of it, or from i to one after.
+            if (i > 0) {
+                for (int c : near[static_cast<std::size_t>(path[static_cast<std::size_t>(i - 1)])])
+                    if (twoOpt(i, pos[static_cast<std::size_t>(c)])) improved = true;
+            } else {
+                for (long j = 1; j < N; ++j) improved |= twoOpt(0, j);
+            }
+            for (int c : near[static_cast<std::size_t>(path[static_cast<std::size_t>(i)])])
+                improved |= twoOpt(i, pos[static_cast<std::size_t>(c)] - 1);
+            improved |= twoOpt(i, N - 1);  // the tail reversed: the path's free end
+        }
+        for (long len = 1; len <= 3; ++len)
             for (long i = 0; i + len <= N; ++i) {
                 const long e = i + len - 1;
-                bool internal = false;
-                for (long k = i; k <= e; ++k)
-                    for (int pr : p.predecessors[static_cast<std::size_t>(path[static_cast<std::size_t>(k)])])
-                        if (pos[static_cast<std::size_t>(pr)] >= i && pos[static_cast<std::size_t>(pr)] <= e) internal = true;
-                const Point2* a = i > 0 ? &pt(i - 1) : (p.start ? &*p.start : nullptr);
-                const Point2* b = e + 1 < N ? &pt(e + 1) : nullptr;
-                double removed = 0;
-                if (a) removed += dist(*a, pt(i));
-                if (b) removed += dist(pt(e), *b);
-                if (a && b) removed -= dist(*a, *b);
                 bool moved = false;
-                for (long k = -1; k < N && !moved; ++k) {
-                    if (k >= i - 1 && k <= e) continue;  // the run's own place
-                    const Point2* x = k >= 0 ? &pt(k) : (p.start ? &*p.start : nullptr);
-                    const Point2* y = k + 1 < N ? &pt(k + 1) : nullptr;
-                    for (int reversed = 0; reversed < 2 && !moved; ++reversed) {
-                        if (reversed && (len == 1 || internal)) continue;
-                        const Point2& first = reversed ? pt(e) : pt(i);
-                        const Point2& last = reversed ? pt(i) : pt(e);
-                        double added = 0;
-                        if (x) added += dist(*x, first);
-                        if (y) added += dist(last, *y);
-                        if (x && y) added -= dist(*x, *y);
-                        if (added - removed >= -kGain) continue;
-                        // The units jumped over must not be tied to the run.
-                        bool ok = true;
-                        for (long s = i; s <= e && ok; ++s) {
-                            const int u = path[static_cast<std::size_t>(s)];
-                            if (k > e) {
-                                for (int sc : succ[static_cast<std::size_t>(u)])
-                                    if (pos[static_cast<std::size_t>(sc)] > e && pos[static_cast<std::size_t>(sc)] <= k) ok = false;
-                            } else {
-                                for (int pr : p.predecessors[static_cast<std::size_t>(u)])
-                                    if (pos[static_cast<std::size_t>(pr)] > k && pos[static_cast<std::size_t>(pr)] < i) ok = false;
-                            }
-                        }
-                        if (!ok) continue;
-                        std::vector<int> run(path.begin() + i, path.begin() + e + 1);
-                        if (reversed) std::reverse(run.begin(), run.end());
-                        std::vector<int> out;
-                        out.reserve(n);
-                        if (k == -1) out.insert(out.end(), run.begin(), run.end());
-                        for (long q = 0; q < N; ++q) {
-                            if (q >= i && q <= e) continue;
-                            out.push_back(path[static_cast<std::size_t>(q)]);
-                            if (q == k) out.insert(out.end(), run.begin(), run.end());
-                        }
-                        path.swap(out);
-                        reindex();
-                        moved = improved = true;
+                for (long end : {i, e}) {
+                    for (int c : near[static_cast<std::size_t>(path[static_cast<std::size_t>(end)])]) {
+                        const long k = pos[static_cast<std::size_t>(c)];
+                        if ((moved = orOpt(i, e, k) || orOpt(i, e, k - 1))) break;
                     }
+                    if (moved) break;
                 }
+                if (!moved) moved = orOpt(i, e, -1) || orOpt(i, e, N - 1);  // to either end
+                improved |= moved;
             }
-        }
         if (!improved) break;
     }
 }
