@@ -8,8 +8,8 @@
 //                       [--machine NAME] [--resources DIR]
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
-//   aeronc chain PART --kb KB.sqlite --material NAME [--machine NAME] [--family F | --template T]
-//                [--directions ...] [--json OUT] [--resources DIR]
+//   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
+//                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/PartIO.h>
@@ -53,8 +53,8 @@ const char* kUsage =
     "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
     "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
     "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"
-    "  aeronc chain PART --kb KB.sqlite --material NAME [--machine NAME] [--family F | --template T]\n"
-    "               [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
+    "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+    "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
     "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
@@ -274,23 +274,46 @@ int selectToolsCmd(int argc, char** argv) {
     return 0;
 }
 
+// chain PART ... recognises the part, then plans tools and the chain; chain --tree FILE ...
+// plans a stored recognition.
 int chainCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("chain needs a part file");
-    std::string part = argv[2], jsonOut, kbPath, material, resources, machine, family = "integral_panel";
+    if (argc < 3) throw aeronc::inputError("chain needs a part file or --tree RECOGNITION.json");
+    const bool fromTree = std::string(argv[2]) == "--tree";
+    if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
+    const std::string part = argv[fromTree ? 3 : 2];
+    std::string jsonOut, kbPath, material, resources, machine, family = "integral_panel";
+    bool directions = false;
     aeronc::recognition::RecogniseOptions opt;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--json") jsonOut = next();
-        else if (a == "--kb") kbPath = next();
-        else if (a == "--material") material = next();
-        else if (a == "--machine") machine = next();
-        else if (a == "--family" || a == "--template") family = next();
-        else if (a == "--directions") opt.directions = parseDirections(next());
-        else if (a == "--resources") resources = next();
-        else return false;
-        return true;
-    });
+    forEachOption(
+        argc, argv,
+        [&](const std::string& a, const Next& next) {
+            if (a == "--json") jsonOut = next();
+            else if (a == "--kb") kbPath = next();
+            else if (a == "--material") material = next();
+            else if (a == "--machine") machine = next();
+            else if (a == "--family" || a == "--template") family = next();
+            else if (a == "--directions") {
+                opt.directions = parseDirections(next());
+                directions = true;
+            } else if (a == "--resources") resources = next();
+            else return false;
+            return true;
+        },
+        fromTree ? 4 : 3);
+    if (fromTree && directions)
+        throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
     if (kbPath.empty()) throw aeronc::inputError("chain needs --kb KB.sqlite (created when missing)");
     if (material.empty()) throw aeronc::inputError("chain needs --material NAME, e.g. 7050-T7451");
+
+    aeronc::recognition::DomainTree tree;
+    if (fromTree) {
+        const std::string text = aeronc::readTextFile(part, "recognition file");
+        try {
+            tree = aeronc::recognition::fromJson(text);
+        } catch (const aeronc::Error& e) {
+            throw aeronc::inputError(part + ": " + e.what());
+        }
+    }
     const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
         kbPath, [&] { return kbResources(resources, argv[0]).string(); });
     // The slow part last: material, machine and template are checked before recognition.
@@ -304,8 +327,7 @@ int chainCmd(int argc, char** argv) {
     aeronc::kb::chainOptions(kb, material, machine);
     aeronc::kb::loadProcessTemplate(kb, family);
 
-    const TopoDS_Shape solid = aeronc::loadPart(part);
-    const auto tree = aeronc::recognition::recognise(solid, opt);
+    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(part), opt);
     const auto chain = aeronc::kb::planChain(tree, kb, material, machine, family);
     const std::string text = aeronc::chain::toJson(chain);
     if (jsonOut.empty()) std::cout << text << "\n";
