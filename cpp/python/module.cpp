@@ -56,6 +56,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 }  // namespace
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+void bindChain(py::module_& m);     // chain_bindings.cpp
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -146,5 +147,6 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindChain(m);
     bindKinematics(m);
 }
