@@ -164,9 +164,18 @@ private:
     int finisher(const DomainElement& e, std::string& why);
     int floorTool(const DomainElement& e, const TemplateStep& step, std::string& why);
     int helixTool(const DomainElement& e, std::string& why) const;
-    std::string planError(const DomainElement& e) const {
+    // The planner's reason for a missing tool; for a pocket, the lines about roughing tools
+    // (`roughing`) or the others.
+    std::string planError(const DomainElement& e, bool roughing = false) const {
         const auto c = choice_.find(e.id);
-        if (c != choice_.end() && !c->second->error.empty()) return c->second->error;
+        if (c != choice_.end() && !c->second->error.empty()) {
+            std::string out, line;
+            std::istringstream in(c->second->error);
+            while (std::getline(in, line))
+                if ((line.find("roughing tool") != std::string::npos) == roughing)
+                    out += (out.empty() ? "" : "; ") + line;
+            return out;
+        }
         const auto h = holeChoice_.find(e.id);
         if (h != holeChoice_.end() && !h->second->error.empty()) return h->second->error;
         return "";
@@ -477,7 +486,8 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
         case StepCode::CutOff: {
             const int r = roughingTool(e);
             if (r < 0) {
-                gap(planError(e).empty() ? "no roughing tool was planned for " + elementName(e) : planError(e));
+                const std::string why = planError(e, true);
+                gap(why.empty() ? "no roughing tool was planned for " + elementName(e) : why);
                 return;
             }
             const Operation op = step.code == StepCode::CutOff ? Operation::Profile : Operation::Pocket;
