@@ -1,9 +1,8 @@
-#include <aeronc/recognition/SetupFrame.h>
-
 #include <aeronc/chain/ConstructionRules.h>
 #include <aeronc/chain/Fusing.h>
 #include <aeronc/chain/Sequencing.h>
 #include <aeronc/core/Error.h>
+#include <aeronc/recognition/SetupFrame.h>
 #include <aeronc/toolselect/Selection.h>
 
 #include <algorithm>

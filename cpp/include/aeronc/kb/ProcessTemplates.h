@@ -23,6 +23,7 @@ chain::ProcessTemplate loadProcessTemplate(const KnowledgeBase& kb, const std::s
 // Spindle speed, feeds, a_p and a_e of `tools` (the list the indices refer to) for the
 // workpiece material, as tool planning computes them: n = 1000·v_c/(π·D) capped at the
 // machine's maximum, feed f_z·Z·n, plunge feed × plunge_feed_ratio (drilling: the feed).
+// The function reads `kb` when called: keep the knowledge base open while it is used.
 chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<toolselect::Tool>& tools,
                                   const std::string& material, const std::string& machine);
 
