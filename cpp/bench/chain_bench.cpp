@@ -7,11 +7,11 @@
 #include <aeronc/chain/Fusing.h>
 #include <aeronc/chain/Sequencing.h>
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/kb/ToolPlanning.h>
 
 #include <chrono>
 #include <cmath>
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
             const auto tree = aeronc::recognition::recognise(solid, ro);
             const double recognise = since(t);
             t = Clock::now();
-            const auto plan = aeronc::toolselect::planTools(tree, kb, material, options.machine);
+            const auto plan = aeronc::kb::planTools(tree, kb, material, options.machine);
             const double tools = since(t);
 
             const auto settings = aeronc::kb::toolSettings(kb, plan.tools, material, options.machine);

@@ -14,9 +14,9 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
-#include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>

@@ -1,6 +1,6 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/kb/ProcessTemplates.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/kb/ToolPlanning.h>
 
 #include <algorithm>
 #include <cmath>
@@ -190,7 +190,7 @@ chain::MachiningChain planChain(const recognition::DomainTree& tree, const Knowl
     const chain::ChainOptions o = chainOptions(kb, material, machine);
     if (tree.elements.empty())
         throw inputError("the part has no domain element: recognition found no pocket, opening or hole to machine");
-    const toolselect::ToolPlan plan = toolselect::planTools(tree, kb, material, o.machine);
+    const toolselect::ToolPlan plan = planTools(tree, kb, material, o.machine);
     return chain::buildChain(tree, plan, t, o, toolSettings(kb, plan.tools, material, o.machine));
 }
 

@@ -2,10 +2,10 @@
 // template missing must-steps, a broken rule, and an element no tool of the knowledge base
 // can machine (listed with the reason, not fatal). A tool that removes nothing is the removal
 // rule's failure (ConstructionRulesTest).
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Fixtures.h"
 
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>

@@ -1,7 +1,7 @@
 // The construction rules on the small part of Fixtures.h: the chain fused from it follows them
 // all (the units worked out by hand), and each edit that breaks one is reported, naming the
 // node at fault.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Fixtures.h"
 
 #include <aeronc/chain/ChainJson.h>

@@ -5,7 +5,7 @@
 #include "Fixtures.h"
 
 #include <aeronc/chain/ChainJson.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>

@@ -1,7 +1,7 @@
 // Process templates and sequencing rules: parsed and checked from the knowledge base's rows;
 // a template missing its family's must-steps, out of its step order, or with a broken rule
 // is refused with a message naming the template and the row.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 #include "Fixtures.h"
 
 #include <aeronc/chain/ProcessTemplate.h>
