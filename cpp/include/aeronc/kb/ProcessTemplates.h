@@ -31,7 +31,7 @@ chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<too
 // absent); the machine is the named one or the knowledge base's first.
 chain::ChainOptions chainOptions(const KnowledgeBase& kb, const std::string& material, const std::string& machine);
 
-// Tool planning (toolselect::planTools), the template, the cutting data, then
+// Tool planning (kb::planTools), the template, the cutting data, then
 // chain::buildChain. Throws aeronc::inputError for an unknown material, machine, template or
 // family, a broken template or rule, and a tree with no domain element.
 chain::MachiningChain planChain(const recognition::DomainTree& tree, const KnowledgeBase& kb,
