@@ -58,6 +58,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
 void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
 void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
+void bindChain(py::module_& m);     // chain_bindings.cpp
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -148,6 +149,7 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindChain(m);
     bindKinematics(m);
     bindToolpath(m);
     bindCompensation(m);
