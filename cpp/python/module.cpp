@@ -57,6 +57,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
 void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
+void bindChain(py::module_& m);     // chain_bindings.cpp
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -147,6 +148,7 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindChain(m);
     bindKinematics(m);
     bindToolpath(m);
 }
