@@ -1,0 +1,217 @@
+"""MachiningOperation: a Path operation that machines one unit of the NC machining chain.
+
+The unit, as the chain gave it (geometry in the setup frame, which is the Job's frame: top,
+bottom, contour and island loops, open edges, holes; tool; cutting data), is kept in a hidden
+JSON property. The parameters a programmer changes are properties of their own (step-down,
+step-over, allowances, heights, Active, the ToolController). execute() computes the Path with
+the core's toolpath generator, the feeds from the ToolController.
+
+A parameter whose value differs from the chain's is listed in UserEdited, so that rebuilding
+the chain keeps it (machining_chain.update reports what it kept). The proxy keeps no state:
+everything is in properties and survives save and reopen.
+"""
+import json
+
+import FreeCAD
+
+from aeronc import pathcompat
+from aeronc.objects.base import BaseProxy, add_property
+from aeronc.operations import moves
+
+COOLANT_MODES = ["None", "Flood", "Mist"]
+
+
+class Parameter:
+    """An editable parameter: a property standing for one field of the unit."""
+
+    def __init__(self, name, prop_type, key, doc, default=0.0):
+        self.name, self.prop_type, self.key, self.doc, self.default = name, prop_type, key, doc, default
+
+    def chain_value(self, unit):
+        v = unit.get(self.key)
+        return self.default if v is None else v
+
+    def current(self, obj):
+        v = getattr(obj, self.name)
+        return float(getattr(v, "Value", v))
+
+
+STEP_DOWN = Parameter("StepDown", "App::PropertyLength", "stepDown", "Depth of cut of each level (a_p)")
+STEP_OVER = Parameter("StepOver", "App::PropertyLength", "stepOver", "Distance between neighbouring passes (a_e)")
+RADIAL = Parameter("RadialAllowance", "App::PropertyDistance", "radialAllowance", "Material left on the walls")
+AXIAL = Parameter("AxialAllowance", "App::PropertyDistance", "axialAllowance", "Material left on the floor")
+SAFE = Parameter("SafeHeight", "App::PropertyDistance", "safeHeight",
+                 "Height of rapid moves inside the operation (Job frame)")
+CLEARANCE = Parameter("ClearanceHeight", "App::PropertyDistance", "clearance",
+                      "Height of the moves into and out of the operation (Job frame)")
+RAMP = Parameter("RampAngle", "App::PropertyAngle", "rampAngle", "Angle of ramping entries, degrees", 3.0)
+PECK = Parameter("PeckDepth", "App::PropertyLength", "peck", "Depth of each peck (G83); 0: no pecking")
+DWELL = Parameter("DwellTime", "App::PropertyFloat", "dwell", "Dwell at the bottom, s (G82); 0: none")
+
+# The unit fields the operation's geometry is made of (read-only in the property editor).
+GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "openEdges", "holes", "cutter", "operation")
+
+
+class MachiningOperation(BaseProxy):
+    Type = "AeroNC::MachiningOperation"
+    PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE, RAMP]
+    ICON = "MachiningOperation"
+
+    def __init__(self, obj):
+        super().__init__(obj)
+        self.add_properties(obj)
+
+    @classmethod
+    def add_properties(cls, obj):
+        g = "Path"
+        add_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
+        add_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
+        add_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation")
+        if not obj.CoolantMode:
+            obj.CoolantMode = COOLANT_MODES
+            obj.CoolantMode = "Flood"
+        add_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
+                     read_only=True)
+        g = "Machining unit"
+        add_property(obj, "App::PropertyInteger", "UnitId", g, "Unit of the machining chain", read_only=True)
+        add_property(obj, "App::PropertyInteger", "ElementId", g, "Domain element the unit machines", read_only=True)
+        add_property(obj, "App::PropertyInteger", "SetupId", g, "Setup of the unit", read_only=True)
+        add_property(obj, "App::PropertyString", "Operation", g, "Operation type of the unit", read_only=True)
+        add_property(obj, "App::PropertyString", "Step", g, "Step of the process (r, w, c, ss, sf, fs, ff)",
+                     read_only=True)
+        add_property(obj, "App::PropertyString", "Tool", g, "Tool of the unit in the knowledge base", read_only=True)
+        add_property(obj, "App::PropertyDistance", "Top", g, "Top of the unit (Job frame)", read_only=True)
+        add_property(obj, "App::PropertyDistance", "Bottom", g, "Bottom of the unit (Job frame)", read_only=True)
+        add_property(obj, "App::PropertyString", "Unit", g, "The unit as the chain gave it (JSON)", hidden=True)
+        add_property(obj, "App::PropertyStringList", "UserEdited", g,
+                     "Parameters changed by hand: rebuilding the chain keeps them", read_only=True)
+        g = "Parameters"
+        for p in cls.PARAMETERS:
+            add_property(obj, p.prop_type, p.name, g, p.doc)
+        g = "Result"
+        add_property(obj, "App::PropertyLength", "CutLength", g, "Length of the feed moves", read_only=True)
+        add_property(obj, "App::PropertyLength", "RapidLength", g, "Length of the rapid moves", read_only=True)
+
+    def onDocumentRestored(self, obj):
+        type(self).add_properties(obj)  # properties added since the document was saved
+        if FreeCAD.GuiUp:
+            from aeronc.viewproviders.view_operation import attach
+            attach(obj)
+
+    # --- user edits --------------------------------------------------------------------------
+
+    def onChanged(self, obj, prop):
+        if prop in ("Unit", "UserEdited") or "Restore" in obj.State or not getattr(obj, "Unit", ""):
+            return
+        if prop == "Active" or prop == "ToolController" or any(p.name == prop for p in self.PARAMETERS):
+            edited = self.edited_parameters(obj)
+            if edited != list(obj.UserEdited):
+                obj.UserEdited = edited
+
+    def edited_parameters(self, obj):
+        """Names of the properties whose value is not the chain's."""
+        unit = unit_of(obj)
+        out = [p.name for p in self.PARAMETERS
+               if abs(p.current(obj) - float(p.chain_value(unit))) > 1e-9]
+        if bool(obj.Active) != bool(unit.get("enabled", True)):
+            out.append("Active")
+        tc = obj.ToolController
+        if tc is not None and unit.get("tool") and tool_of_controller(tc) not in ("", unit["tool"]):
+            out.append("ToolController")
+        return out
+
+    # --- the unit ----------------------------------------------------------------------------
+
+    def assign(self, obj, unit, tc):
+        """Give the operation its unit and ToolController. What the user edited keeps its value;
+        returns the edits kept against a different chain value: [(property, kept, chain's)]."""
+        edited = set(obj.UserEdited)
+        kept = []
+        obj.Unit = json.dumps(unit, separators=(",", ":"))  # first: onChanged compares with it
+        obj.UnitId = int(unit["id"])
+        obj.ElementId = int(unit.get("element", -1))
+        obj.SetupId = int(unit.get("setup", 0))
+        obj.Operation = str(unit.get("operation", ""))
+        obj.Step = str(unit.get("step", ""))
+        obj.Tool = str(unit.get("tool", ""))
+        obj.Top = float(unit.get("top", 0.0))
+        obj.Bottom = float(unit.get("bottom", 0.0))
+        for p in self.PARAMETERS:
+            value = float(p.chain_value(unit))
+            if p.name in edited:
+                if abs(p.current(obj) - value) > 1e-9:
+                    kept.append((p.name, p.current(obj), value))
+                continue
+            setattr(obj, p.name, value)
+        enabled = bool(unit.get("enabled", True))
+        if "Active" in edited:
+            if bool(obj.Active) != enabled:
+                kept.append(("Active", bool(obj.Active), enabled))
+        else:
+            obj.Active = enabled
+        if "ToolController" in edited and obj.ToolController is not None:
+            if obj.ToolController is not tc:
+                kept.append(("ToolController", obj.ToolController.Label, tc.Label if tc is not None else ""))
+        else:
+            obj.ToolController = tc
+        obj.UserEdited = self.edited_parameters(obj)
+        return kept
+
+    # --- the path ----------------------------------------------------------------------------
+
+    def toolpath_input(self, obj):
+        """The toolpath generator's input: the unit with the operation's parameters."""
+        unit = unit_of(obj)
+        data = {k: unit[k] for k in GEOMETRY_KEYS if k in unit}
+        for p in self.PARAMETERS:
+            data[p.key] = p.current(obj)
+        cutter = cutter_of(obj.ToolController)
+        if cutter:
+            data["cutter"] = dict(data.get("cutter") or {}, **cutter)
+        return data
+
+    def execute(self, obj):
+        if not obj.Unit:
+            return
+        tc = obj.ToolController
+        if tc is None:
+            obj.Path = pathcompat.path_of([])
+            raise RuntimeError("{}: no tool controller; choose one for the operation".format(obj.Label))
+        from aeronc import _core
+        result = json.loads(_core.toolpath(json.dumps(self.toolpath_input(obj))))
+        hfeed, vfeed = tc.HorizFeed.Value, tc.VertFeed.Value  # mm/s
+        obj.Path = pathcompat.path_of(moves.commands_of(result["moves"], hfeed, vfeed, obj.Label))
+        obj.CutLength = float(result.get("cutLength", 0.0))
+        obj.RapidLength = float(result.get("rapidLength", 0.0))
+        seconds = moves.estimate_seconds(result["moves"], hfeed, vfeed, tc.HorizRapid.Value, tc.VertRapid.Value)
+        obj.CycleTime = moves.clock_text(seconds)
+
+
+def unit_of(obj):
+    """The unit an operation machines, as the chain gave it (dict)."""
+    return json.loads(obj.Unit) if obj.Unit else {}
+
+
+def tool_of_controller(tc):
+    """The knowledge-base tool id of a ToolController made for the chain, or ''."""
+    tag = getattr(tc, "AeroNCTool", "")
+    return tag.split("/")[0] if tag else ""
+
+
+def cutter_of(tc):
+    """Diameter, corner radius and type of the ToolController's bit ({} without a bit)."""
+    bit = getattr(tc, "Tool", None) if tc is not None else None
+    if bit is None or not hasattr(bit, "Diameter"):
+        return {}
+    d = float(bit.Diameter.Value)
+    shape = str(getattr(bit, "BitShape", "")).lower()
+    if "drill" in shape:
+        return {"diameter": d, "cornerRadius": 0.0, "type": "drill"}
+    if "ball" in shape:
+        return {"diameter": d, "cornerRadius": d / 2, "type": "ball"}
+    if hasattr(bit, "FlatRadius"):
+        return {"diameter": d, "cornerRadius": max(0.0, d / 2 - float(bit.FlatRadius.Value)), "type": "bull"}
+    if hasattr(bit, "CornerRadius"):
+        r = float(bit.CornerRadius.Value)
+        return {"diameter": d, "cornerRadius": r, "type": "bull" if r > 0 else "flat"}
+    return {"diameter": d, "cornerRadius": 0.0, "type": "flat"}

@@ -1,0 +1,30 @@
+"""GUI side of AeroNC's operations: Path's own view provider (PathGui::ViewProviderPathPython,
+which every Path::FeaturePython object has) draws the Path; this proxy gives the icon and lets
+the Job delete the operation. Parameters are edited in the property editor or the Machining
+chain panel."""
+from aeronc.viewproviders.view_base import BaseView
+
+
+class ViewOperation(BaseView):
+    def __init__(self, vobj, icon="MachiningOperation"):
+        super().__init__(vobj)
+        self.ICON = icon
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+        self.ICON = getattr(getattr(vobj.Object, "Proxy", None), "ICON", self.ICON)
+
+    def onDelete(self, vobj, subelements):
+        return True
+
+    def doubleClicked(self, vobj):
+        return False  # no task panel of its own: the property editor shows the parameters
+
+
+def attach(obj):
+    """Give an operation its view provider proxy (once)."""
+    vobj = getattr(obj, "ViewObject", None)
+    if vobj is None or getattr(vobj, "Proxy", None) is not None:
+        return
+    ViewOperation(vobj, getattr(obj.Proxy, "ICON", "MachiningOperation"))
+    vobj.Visibility = True
