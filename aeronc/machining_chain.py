@@ -47,6 +47,14 @@ def _check_group(group):
     return part
 
 
+def part_families(kb):
+    """Part families with a process template in the knowledge base (an open KnowledgeBase)."""
+    if hasattr(kb, "part_families"):
+        return list(kb.part_families())
+    return [row[0] for row in kb.table("process_template")["rows"]] if "process_template" in kb.editable_tables() \
+        else []
+
+
 def compute(group, family, material, machine="", kb_path=None):
     """The chain the core builds for the group (dict); the document is not touched."""
     _check_group(group)

@@ -4,7 +4,8 @@ The core gives moves in the setup frame, which is the Job's frame: [kind, u, v, 
 rapid, 1 feed, 2 plunge, or [3, u, v, h_bottom, r_plane, q_peck, dwell] for a drill cycle.
 Rapids become G0, feeds and plunges G1 with the ToolController's horizontal and vertical feed
 (FreeCAD's mm/s), drill cycles G81/G82/G83 with X Y Z R (Q, P) and the vertical feed, between
-G98 and G80 as FreeCAD's own Drilling writes them, so every post reads them alike.
+G99 (each cycle ends at its R plane, as the generator plans) and G80, the words FreeCAD's own
+Drilling writes, so every post reads them alike.
 """
 import math
 
@@ -34,7 +35,7 @@ def commands_of(moves, horiz_feed, vert_feed, label=None):
         kind = int(m[0])
         if kind == DRILL:
             if not in_cycle:
-                out.append(("G98", {}))  # back to the level before the cycle: the safe height
+                out.append(("G99", {}))  # each cycle retracts to its R plane
                 in_cycle = True
             out.append(drill_command(m, vert_feed))
             continue
