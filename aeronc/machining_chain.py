@@ -49,10 +49,10 @@ def _check_group(group):
 
 def part_families(kb):
     """Part families with a process template in the knowledge base (an open KnowledgeBase)."""
-    if hasattr(kb, "part_families"):
-        return list(kb.part_families())
-    return [row[0] for row in kb.table("process_template")["rows"]] if "process_template" in kb.editable_tables() \
-        else []
+    try:
+        return [row[0] for row in kb.table("part_family")["rows"]]
+    except RuntimeError:  # a knowledge base without process planning
+        return []
 
 
 def compute(group, family, material, machine="", kb_path=None):

@@ -53,7 +53,7 @@ def blank_box(group):
 
 def cutting_operation(unit):
     """The knowledge base's cutting operation of a unit: drilling, roughing or finishing."""
-    if str(unit.get("operation", "")).lower().startswith("drill"):
+    if str(unit.get("operation", "")).lower().startswith("drill") or unit.get("step") == "d":
         return "drilling"
     return unit.get("cuttingOperation") or _STEP_OPERATION.get(unit.get("step"), "finishing")
 

@@ -25,7 +25,8 @@ COLUMNS = ["Chain", "Element", "Operation", "Tool", "Top", "Bottom", "Radial", "
 TOOL_COLUMN = COLUMNS.index("Tool")
 UNIT_ROLE = QtCore.Qt.UserRole + 1
 STEP_NAMES = {"r": "rough", "w": "finish webs", "c": "corners", "ss": "semi-finish walls",
-              "sf": "semi-finish flanges", "fs": "finish walls", "ff": "finish flanges", "t": "cut off"}
+              "sf": "semi-finish flanges", "fs": "finish walls", "ff": "finish flanges", "t": "cut off",
+              "d": "drill holes", "h": "mill holes"}
 RED = "#b00020"
 DOCK_WIDTH = 640
 
