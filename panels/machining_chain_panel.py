@@ -28,7 +28,7 @@ STEP_NAMES = {"r": "rough", "w": "finish webs", "c": "corners", "ss": "semi-fini
               "sf": "semi-finish flanges", "fs": "finish walls", "ff": "finish flanges", "t": "cut off",
               "d": "drill holes", "h": "mill holes"}
 RED = "#b00020"
-DOCK_WIDTH = 640
+DOCK_WIDTH = 760
 
 
 def show_error(text):
@@ -114,6 +114,7 @@ class MachiningChainPanel:
         self.tree.setHeaderLabels(COLUMNS)
         self.tree.setMinimumHeight(300)
         self.tree.setAlternatingRowColors(True)
+        self.tree.setIndentation(12)  # eight levels deep: keep the columns in view
         self.tree.itemChanged.connect(self._item_changed)
         self.tree.itemSelectionChanged.connect(self._selection_changed)
         lay.addWidget(self.tree, 3)
@@ -137,11 +138,11 @@ class MachiningChainPanel:
         lay.addWidget(self.travel)
         lay.addWidget(QtGui.QLabel("Construction rules"))
         self.checks = QtGui.QListWidget()
-        self.checks.setMaximumHeight(120)
+        self.checks.setMaximumHeight(100)
         lay.addWidget(self.checks, 1)
         lay.addWidget(QtGui.QLabel("Not machined"))
         self.unmachined = QtGui.QListWidget()
-        self.unmachined.setMaximumHeight(90)
+        self.unmachined.setMaximumHeight(70)
         lay.addWidget(self.unmachined, 1)
         return w
 
