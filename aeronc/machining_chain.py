@@ -188,14 +188,16 @@ def operation_label(unit):
 
 
 def _unit_defaults(unit, job):
-    """The heights and cycle parameters the toolpath needs, where the chain gives none: rapids
-    above the unit's top and the Job's stock by the setup sheet's offsets."""
+    """The unit with the heights and cycle parameters the chain leaves to the Job: rapids
+    between cuts the setup sheet's safe offset above the top, the start and end of the
+    operation its clearance offset above the stock."""
+    from aeronc.operations.base import reference_top
     u = dict(unit)
     safe_offset, clearance_offset = pathcompat.job_height_offsets(job)
     stock_top = job.Stock.Shape.BoundBox.ZMax
-    u.setdefault("safeHeight", float(unit.get("top", stock_top)) + safe_offset)
-    u.setdefault("clearance", stock_top + clearance_offset)
-    u["clearance"] = max(u["clearance"], u["safeHeight"])
+    u.setdefault("clearance", safe_offset)
+    u.setdefault("safeHeight", stock_top + clearance_offset)
+    u["safeHeight"] = max(float(u["safeHeight"]), reference_top(u) + float(u["clearance"]))
     u.setdefault("rampAngle", 3.0)
     u.setdefault("peck", 0.0)
     u.setdefault("dwell", 0.0)

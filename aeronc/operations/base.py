@@ -22,39 +22,63 @@ COOLANT_MODES = ["None", "Flood", "Mist"]
 
 
 class Parameter:
-    """An editable parameter: a property standing for one field of the unit."""
+    """An editable parameter: a property standing for one field of the toolpath input."""
 
     def __init__(self, name, prop_type, key, doc, default=0.0):
         self.name, self.prop_type, self.key, self.doc, self.default = name, prop_type, key, doc, default
 
     def chain_value(self, unit):
+        """The property's value as the chain (and the Job's defaults) give it."""
         v = unit.get(self.key)
-        return self.default if v is None else v
+        return float(self.default if v is None else v)
 
     def current(self, obj):
         v = getattr(obj, self.name)
         return float(getattr(v, "Value", v))
+
+    def input_value(self, obj, unit):
+        """(key, value) of the parameter in the toolpath generator's input."""
+        return self.key, self.current(obj)
+
+
+def reference_top(unit):
+    """The top the relative clearance is measured from: the unit's, or its highest hole's."""
+    tops = [float(h["top"]) for h in unit.get("holes") or [] if "top" in h]
+    return max(tops) if tops else float(unit.get("top", 0.0))
+
+
+class SafeHeight(Parameter):
+    """FreeCAD's SafeHeight, absolute; the generator takes it as "clearance" above the top."""
+
+    def chain_value(self, unit):
+        return reference_top(unit) + float(unit.get(self.key, self.default))
+
+    def input_value(self, obj, unit):
+        above = self.current(obj) - reference_top(unit)
+        if above <= 0:
+            raise ValueError("{}: the safe height {:g} is not above the top {:g}".format(
+                obj.Label, self.current(obj), reference_top(unit)))
+        return self.key, above
 
 
 STEP_DOWN = Parameter("StepDown", "App::PropertyLength", "stepDown", "Depth of cut of each level (a_p)")
 STEP_OVER = Parameter("StepOver", "App::PropertyLength", "stepOver", "Distance between neighbouring passes (a_e)")
 RADIAL = Parameter("RadialAllowance", "App::PropertyDistance", "radialAllowance", "Material left on the walls")
 AXIAL = Parameter("AxialAllowance", "App::PropertyDistance", "axialAllowance", "Material left on the floor")
-SAFE = Parameter("SafeHeight", "App::PropertyDistance", "safeHeight",
-                 "Height of rapid moves inside the operation (Job frame)")
-CLEARANCE = Parameter("ClearanceHeight", "App::PropertyDistance", "clearance",
-                      "Height of the moves into and out of the operation (Job frame)")
+SAFE = SafeHeight("SafeHeight", "App::PropertyDistance", "clearance",
+                  "Height of the rapid moves between cuts (Job frame)", 3.0)
+CLEARANCE = Parameter("ClearanceHeight", "App::PropertyDistance", "safeHeight",
+                      "Height where the operation starts and ends (Job frame)")
 RAMP = Parameter("RampAngle", "App::PropertyAngle", "rampAngle", "Angle of ramping entries, degrees", 3.0)
 PECK = Parameter("PeckDepth", "App::PropertyLength", "peck", "Depth of each peck (G83); 0: no pecking")
 DWELL = Parameter("DwellTime", "App::PropertyFloat", "dwell", "Dwell at the bottom, s (G82); 0: none")
-
-# The unit fields the operation's geometry is made of (read-only in the property editor).
-GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "openEdges", "holes", "cutter", "operation")
 
 
 class MachiningOperation(BaseProxy):
     Type = "AeroNC::MachiningOperation"
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE, RAMP]
+    # The unit's fields the toolpath generator takes as they are (the operation's geometry).
+    GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "openEdges")
     ICON = "MachiningOperation"
 
     def __init__(self, obj):
@@ -111,8 +135,7 @@ class MachiningOperation(BaseProxy):
     def edited_parameters(self, obj):
         """Names of the properties whose value is not the chain's."""
         unit = unit_of(obj)
-        out = [p.name for p in self.PARAMETERS
-               if abs(p.current(obj) - float(p.chain_value(unit))) > 1e-9]
+        out = [p.name for p in self.PARAMETERS if abs(p.current(obj) - p.chain_value(unit)) > 1e-9]
         if bool(obj.Active) != bool(unit.get("enabled", True)):
             out.append("Active")
         tc = obj.ToolController
@@ -137,7 +160,7 @@ class MachiningOperation(BaseProxy):
         obj.Top = float(unit.get("top", 0.0))
         obj.Bottom = float(unit.get("bottom", 0.0))
         for p in self.PARAMETERS:
-            value = float(p.chain_value(unit))
+            value = p.chain_value(unit)
             if p.name in edited:
                 if abs(p.current(obj) - value) > 1e-9:
                     kept.append((p.name, p.current(obj), value))
@@ -160,14 +183,17 @@ class MachiningOperation(BaseProxy):
     # --- the path ----------------------------------------------------------------------------
 
     def toolpath_input(self, obj):
-        """The toolpath generator's input: the unit with the operation's parameters."""
+        """The toolpath generator's input: the unit's geometry, the operation's parameters and
+        the cutter of its ToolController."""
         unit = unit_of(obj)
-        data = {k: unit[k] for k in GEOMETRY_KEYS if k in unit}
+        data = {"operation": unit["operation"], "name": obj.Label}
+        data.update({k: unit[k] for k in self.GEOMETRY_KEYS if unit.get(k) is not None})
         for p in self.PARAMETERS:
-            data[p.key] = p.current(obj)
-        cutter = cutter_of(obj.ToolController)
-        if cutter:
-            data["cutter"] = dict(data.get("cutter") or {}, **cutter)
+            key, value = p.input_value(obj, unit)
+            data[key] = value
+        cutter = {k: v for k, v in (unit.get("cutter") or {}).items() if k in ("diameter", "cornerRadius")}
+        cutter.update({k: v for k, v in cutter_of(obj.ToolController).items() if k in ("diameter", "cornerRadius")})
+        data["cutter"] = cutter
         return data
 
     def execute(self, obj):

@@ -7,4 +7,5 @@ from aeronc.operations.base import AXIAL, CLEARANCE, RADIAL, RAMP, SAFE, STEP_DO
 class HelicalInterpolation(MachiningOperation):
     Type = "AeroNC::HelicalInterpolation"
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE, RAMP]
+    GEOMETRY_KEYS = ("holes", "finishingAllowance", "breakThrough")
     ICON = "HelicalInterpolation"

@@ -7,4 +7,6 @@ from aeronc.operations.base import AXIAL, CLEARANCE, RADIAL, SAFE, STEP_DOWN, ST
 class Profile(MachiningOperation):
     Type = "AeroNC::Profile"
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE]
+    GEOMETRY_KEYS = ("top", "bottom", "contour", "closed", "side", "lead", "leadRadius", "startLimit",
+                     "endLimit")
     ICON = "Profile"

@@ -316,12 +316,14 @@ class SamplePanelTest(unittest.TestCase, ChainFixture):
         for op in drills:
             cycles = [c for c in op.Path.Commands if c.Name in ("G81", "G82", "G83")]
             self.assertTrue(cycles, op.Label)
-            unit = json.loads(op.Unit)
+            holes = json.loads(op.Unit)["holes"]
+            self.assertEqual(len(cycles), len(holes), op.Label)
             for c in cycles:
                 p = c.Parameters
                 self.assertTrue({"X", "Y", "Z", "R", "F"} <= set(p), p)
-                self.assertGreater(p["R"], p["Z"])
-                self.assertLessEqual(p["Z"], unit["bottom"] + 1e-6)
+                hole = next(h for h in holes if abs(h["u"] - p["X"]) < 1e-6 and abs(h["v"] - p["Y"]) < 1e-6)
+                self.assertGreater(p["R"], hole["top"])  # the cycle starts above the hole
+                self.assertLessEqual(p["Z"], hole["bottom"] + 1e-6)  # and reaches its bottom
             self.assertIn("G80", [c.Name for c in op.Path.Commands])
 
 
