@@ -12,6 +12,13 @@ Plain Python, no FreeCAD: the panel and the App functions share it.
 import copy
 
 EMPTY = {"order": [], "tools": {}, "disabled": []}
+_ROUGHING_STEPS = {"r", "c", "h", "t"}
+
+
+def setting_operation(step):
+    """The cutting operation whose data a unit of this step uses (as the core has it):
+    drilling for d, roughing for r, c, h and t, finishing otherwise."""
+    return "drilling" if step == "d" else "roughing" if step in _ROUGHING_STEPS else "finishing"
 
 
 def normalised(edits):
@@ -100,12 +107,9 @@ def _change_tool(chain, unit, tool_id, notes):
     number = data.get("toolNumber", data.get("number"))
     if number is not None:
         unit["toolNumber"] = number
-    settings = data.get("settings")
-    setting = data.get("setting")
-    if isinstance(settings, dict):
-        setting = settings.get(unit.get("operation")) or settings.get(unit.get("step")) or setting
+    setting = (data.get("settings") or {}).get(setting_operation(unit.get("step", "")))
     if setting:
-        unit["setting"] = dict(setting)
+        unit["setting"] = {k: setting[k] for k in ("spindleRpm", "feedMmMin", "plungeFeedMmMin") if k in setting}
     if where is None:
         return
     _, _, step, program = where

@@ -16,8 +16,6 @@ from aeronc.tool_planning import TC_TAG
 
 SETUP_TAG = "AeroNCSetup"  # property on the Jobs of a chain: the setup id
 
-# Cutting operations of the knowledge base (cutting_condition) by chain step.
-_STEP_OPERATION = {"r": "roughing"}
 
 
 def frame_rotation(frame):
@@ -52,10 +50,10 @@ def blank_box(group):
 
 
 def cutting_operation(unit):
-    """The knowledge base's cutting operation of a unit: drilling, roughing or finishing."""
-    if str(unit.get("operation", "")).lower().startswith("drill") or unit.get("step") == "d":
-        return "drilling"
-    return unit.get("cuttingOperation") or _STEP_OPERATION.get(unit.get("step"), "finishing")
+    """The knowledge base's cutting operation whose data a unit uses: drilling for the drill
+    step, roughing for rough, corner, hole-milling and cut-off steps, finishing otherwise."""
+    from aeronc.chain_edits import setting_operation
+    return setting_operation(unit.get("step", ""))
 
 
 def tag_of(unit):

@@ -279,13 +279,17 @@ class MachiningChainPanel:
         return out
 
     def suitable_tools(self, unit):
-        """Tools of the chain a unit can take: drills for drilling, milling tools otherwise."""
-        tools = self.chain.get("tools") or {}
-        items = tools.items() if isinstance(tools, dict) else [(t.get("id"), t) for t in tools]
+        """Tools of the chain a unit can take instead of its own: drills for a drilling unit,
+        milling tools otherwise, no larger than the unit's tool (a smaller one reaches wherever
+        it does), largest first."""
+        tools = self.chain.get("tools") or []
+        items = [(t.get("id"), t) for t in tools] if isinstance(tools, list) else list(tools.items())
         drilling = str(unit.get("operation", "")).lower().startswith("drill")
-        out = [(float(t.get("diameter", 0)), tid) for tid, t in items
-               if (str(t.get("type", "")).lower() == "drill") == drilling]
-        names = [tid for _, tid in sorted(out, reverse=True)]
+        size = float((unit.get("cutter") or {}).get("diameter") or 0.0)
+        found = [(float(t.get("diameter", 0)), tid) for tid, t in items
+                 if (str(t.get("type", "")).lower() == "drill") == drilling
+                 and float(t.get("diameter", 0)) <= size + 1e-9]
+        names = [tid for _, tid in sorted(found, reverse=True)]
         if unit.get("tool") not in names:
             names.insert(0, unit.get("tool"))
         return names

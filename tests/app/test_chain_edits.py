@@ -16,9 +16,11 @@ def _chain():
         {"code": "r", "programs": [{"tool": "EM-F20", "units": [0, 1, 2]}, {"tool": "EM-F10", "units": [3]}]},
         {"code": "fs", "programs": [{"tool": "EM-F10", "units": [4, 5]}]}]}]}],
         "units": units, "order": [0, 1, 2, 3, 4, 5],
-        "tools": {"EM-F20": {"diameter": 20.0, "cornerRadius": 0.0, "type": "flat", "toolNumber": 1},
-                  "EM-F10": {"diameter": 10.0, "cornerRadius": 0.0, "type": "flat", "toolNumber": 2},
-                  "EM-B10R1": {"diameter": 10.0, "cornerRadius": 1.0, "type": "bull", "toolNumber": 3}}}
+        "tools": [{"id": "EM-F20", "diameter": 20.0, "cornerRadius": 0.0, "type": "flat", "number": 1},
+                  {"id": "EM-F10", "diameter": 10.0, "cornerRadius": 0.0, "type": "flat", "number": 2,
+                   "settings": {"roughing": {"spindleRpm": 6000.0, "feedMmMin": 900.0, "plungeFeedMmMin": 300.0},
+                                "finishing": {"spindleRpm": 8000.0, "feedMmMin": 700.0, "plungeFeedMmMin": 200.0}}},
+                  {"id": "EM-B10R1", "diameter": 10.0, "cornerRadius": 1.0, "type": "bull", "number": 3}]}
 
 
 def _program_units(chain):
@@ -58,6 +60,7 @@ class ChainEditsTest(unittest.TestCase):
         self.assertEqual(unit["tool"], "EM-F10")
         self.assertEqual(unit["cutter"]["diameter"], 10.0)
         self.assertEqual(unit["toolNumber"], 2)
+        self.assertEqual(unit["setting"]["spindleRpm"], 6000.0)  # a rough-step unit takes the roughing data
         # A tool no program of the step has gets a program of its own, after the unit's old one.
         chain, _ = chain_edits.apply(built, chain_edits.with_tool({}, built, 5, "EM-B10R1"))
         self.assertEqual([p["tool"] for _, _, s, p in chain_edits.programs(chain) if s["code"] == "fs"],

@@ -183,6 +183,30 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             self.assertEqual(op.UserEdited, [])  # reopening is not an edit
             self.assertEqual(op.Path.toGCode(), gcode[op.Name], op.Label)
 
+    def test_tool_controllers_reuse_select_tools_and_the_optimisers_values(self):
+        from aeronc import tool_planning
+        from aeronc.cutting_optimisation import RESULT_PROPERTY
+        _, _, planned = tool_planning.select_tools(self.group, MATERIAL, kb_path=self.kb_path)
+        built = machining_chain.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        wanted = {setup_job.tag_of(u) for u in built["units"]}
+        shared = [tc for tc in planned if tc.AeroNCTool in wanted]
+        self.assertTrue(shared, (sorted(wanted), [tc.AeroNCTool for tc in planned]))
+        optimised = shared[0]
+        optimised.SpindleSpeed = 1234.5  # as the optimiser writes it, with its record
+        optimised.addProperty("App::PropertyString", RESULT_PROPERTY, "AeroNC", "", 0, True)
+        setattr(optimised, RESULT_PROPERTY, "{\"n_rpm\": 1234.5}")
+        chain = self.build(built=built)
+        for job in chain.Jobs:
+            for op in job_ops(job):
+                tc = op.ToolController
+                unit = json.loads(op.Unit)
+                if tc.AeroNCTool == optimised.AeroNCTool:
+                    self.assertAlmostEqual(tc.SpindleSpeed, 1234.5)
+                    self.assertEqual(getattr(tc, RESULT_PROPERTY), "{\"n_rpm\": 1234.5}")
+                    self.assertIsNot(tc, optimised)  # each Job has its own controllers
+                elif tc.AeroNCTool not in {p.AeroNCTool for p in planned}:
+                    self.assertAlmostEqual(tc.SpindleSpeed, unit["setting"]["spindleRpm"], places=6)
+
     def test_undo_removes_it_all(self):
         before = names(self.doc)
         self.build()
@@ -217,10 +241,10 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         other = None
         for uid in data["order"]:
             u = units[int(uid)]
-            tools = [t for t in data["tools"] if t != u["tool"] and (data["tools"][t].get("type") == "drill") ==
-                     (u["operation"] == "drill")]
-            if tools and int(uid) not in (first, second, disabled):
-                other = (int(uid), tools[0])
+            smaller = [t["id"] for t in data["tools"] if t["type"] in ("flat", "bull")
+                       and t["diameter"] < u["cutter"]["diameter"]]
+            if u["operation"] == "pocket" and smaller and int(uid) not in (first, second, disabled):
+                other = (int(uid), smaller[0])
                 break
         self.assertIsNotNone(other)
         edits = chain_edits.with_tool(edits, data, other[0], other[1])
