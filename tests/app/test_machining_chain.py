@@ -147,18 +147,25 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             self.assertTrue(reason.strip(), element)
         self.assertEqual(len(chain.Unmachined), len(unmachined))
 
-    def test_paths_stay_in_the_stock_and_above_the_units_bottom(self):
+    def test_paths_stay_in_the_stock_and_above_the_units_floor(self):
+        # Tool-centre positions: within the stock grown by the tool's diameter (its radius and
+        # a lead of that radius), never below the unit's floor plus its axial allowance, never
+        # above the clearance height. A frame mix-up (-Z geometry in +Z) would leave the stock.
         chain = self.build()
         for job in chain.Jobs:
             bb = job.Stock.Shape.BoundBox
             for op in job_ops(job):
-                cut = [m for m in moves_of(op) if m[0] != "G0"]
-                self.assertTrue(cut, op.Label)
-                for name, x, y, z in cut:
-                    self.assertTrue(bb.XMin - 1e-6 <= x <= bb.XMax + 1e-6 and bb.YMin - 1e-6 <= y <= bb.YMax + 1e-6,
-                                    (op.Label, name, x, y))
-                    self.assertGreaterEqual(z, op.Bottom.Value - 1e-6, (op.Label, name, z))
-                    self.assertLessEqual(z, bb.ZMax + 1e-6, (op.Label, name, z))
+                unit = json.loads(op.Unit)
+                d = op.ToolController.Tool.Diameter.Value + 1e-6
+                moves = moves_of(op)
+                self.assertTrue([m for m in moves if m[0] != "G0"], op.Label)
+                for name, x, y, z in moves:
+                    self.assertTrue(bb.XMin - d <= x <= bb.XMax + d and bb.YMin - d <= y <= bb.YMax + d,
+                                    (op.Label, name, x, y, bb))
+                    self.assertLessEqual(z, op.ClearanceHeight.Value + 1e-6, (op.Label, name, z))
+                    if name == "G1" and "bottom" in unit:
+                        self.assertGreaterEqual(z, unit["bottom"] + unit.get("axialAllowance", 0) - 1e-6,
+                                                (op.Label, z))
 
     def test_save_reopen_keeps_everything_and_paths_recompute_identically(self):
         chain = self.build()
