@@ -170,7 +170,13 @@ def _store(obj, built, edits, chain):
     obj.DisabledCount = sum(1 for u in units if not u.get("enabled", True))
     obj.TravelSavedPercent = float((chain.get("travel") or {}).get("savedPercent") or 0.0)
     obj.FailedChecks = len(failed_checks(chain))
-    obj.Unmachined = ["element {}: {}".format(u.get("element"), u.get("reason", "")) for u in chain.get("unmachined", [])]
+    obj.Unmachined = [unmachined_text(u) for u in chain.get("unmachined", [])]
+
+
+def unmachined_text(entry):
+    """"element 7: reason", or "element 7, step fs: reason" when one step could not machine it."""
+    step = ", step {}".format(entry["step"]) if entry.get("step") else ""
+    return "element {}{}: {}".format(entry.get("element"), step, entry.get("reason", ""))
 
 
 # --- the Jobs ------------------------------------------------------------------------------------
@@ -211,24 +217,25 @@ def _sync_jobs(obj, chain, part, blank, kb, progress):
     units = chain_edits.units_by_id(chain)
     order = [int(u) for u in chain.get("order", [])] or sorted(units)
     jobs = {getattr(j, setup_job.SETUP_TAG): j for j in obj.Jobs if hasattr(j, setup_job.SETUP_TAG)}
-    kept_jobs = []
+    # Jobs first, then ToolControllers, then operations: making a Job or a ToolController
+    # recomputes the document, which would compute every operation made before it again.
+    kept = []
     for setup in chain.get("setups", []):
-        sid = int(setup["id"])
-        job = jobs.pop(sid, None) or setup_job.make_job(doc, part, setup)
+        job = jobs.pop(int(setup["id"]), None) or setup_job.make_job(doc, part, setup)
         setup_job.place(job, part, setup, blank)
         doc.recompute([job.Stock] + pathcompat.job_models(job))
-        setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == sid]
-        tcs = setup_job.tool_controllers(job, setup_units, part, kb)
-        messages += _sync_operations(job, setup_units, tcs)
-        for tc in setup_job.unused_tool_controllers(job, list(tcs.values())):
+        setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == int(setup["id"])]
+        kept.append((job, setup_units))
+    tcs = [setup_job.tool_controllers(job, setup_units, part, kb) for job, setup_units in kept]
+    for (job, setup_units), job_tcs in zip(kept, tcs):
+        messages += _sync_operations(job, setup_units, job_tcs)
+        for tc in setup_job.unused_tool_controllers(job, list(job_tcs.values())):
             pathcompat.remove_tool_controller(doc, tc)
-        kept_jobs.append(job)
     for job in jobs.values():
         messages.append("{}: its setup is no longer in the chain; removed".format(job.Label))
         pathcompat.remove_job(job)
-    obj.Jobs = kept_jobs
-    _compute_paths(kept_jobs, progress)
-    return messages
+    obj.Jobs = [job for job, _ in kept]
+    return messages + _compute_paths(obj.Jobs, progress)
 
 
 def _sync_operations(job, units, tcs):
@@ -263,17 +270,17 @@ def _sync_operations(job, units, tcs):
 
 
 def _compute_paths(jobs, progress):
+    """Compute every operation's path; returns a message for each that has none (the
+    operation stays, marked with the toolpath generator's error, for the user to change)."""
     ops = [op for job in jobs for op in pathcompat.job_operations(job) if operations.is_machining_operation(op)]
     for i, op in enumerate(ops):
         if progress is not None and progress(i / max(1, len(ops)), "Toolpath of {}".format(op.Label)) is False:
             raise MachiningChainError("cancelled")
         op.recompute()
-    for job in jobs:
-        job.Document.recompute()
-        break
-    bad = [op for op in ops if "Invalid" in op.State or "Error" in op.State]
-    if bad:
-        raise MachiningChainError("no toolpath for {}".format(", ".join(op.Label for op in bad[:5])))
+        op.purgeTouched()  # computed: the document's recompute below need not do it again
+    if jobs:
+        jobs[0].Document.recompute()
+    return ["{}: no toolpath: {}".format(op.Label, op.getStatusString()) for op in ops if "Invalid" in op.State]
 
 
 def chain_operations(obj):

@@ -110,9 +110,9 @@ def tool_controllers(job, units, part, kb):
             if not number or number in used:
                 number = max(used + [0]) + 1
             s = unit.get("setting") or {}
-            rpm = float(source.SpindleSpeed) if source is not None else float(s.get("spindleRpm", 0.0))
-            hfeed = _mm_min(source.HorizFeed) if source is not None else float(s.get("feedMmMin", 0.0))
-            vfeed = _mm_min(source.VertFeed) if source is not None else float(s.get("plungeFeedMmMin", 0.0))
+            rpm = float(source.SpindleSpeed) if source is not None else float(s.get("spindleRpm") or 0.0)
+            hfeed = _mm_min(source.HorizFeed) if source is not None else float(s.get("feedMmMin") or 0.0)
+            vfeed = _mm_min(source.VertFeed) if source is not None else float(s.get("plungeFeedMmMin") or 0.0)
             tc = _make_tool_controller(doc, job, unit["tool"], tag, number, rpm, hfeed, vfeed, kb)
             if source is not None:
                 _copy_optimum(source, tc)

@@ -249,7 +249,7 @@ class MachiningChainPanel:
                                         float(travel.get("savedPercent") or 0)))
         self.unmachined.clear()
         for u in chain.get("unmachined", []):
-            item = QtGui.QListWidgetItem("Element {}: {}".format(u.get("element"), u.get("reason", "")))
+            item = QtGui.QListWidgetItem(mc.unmachined_text(u).capitalize())
             item.setForeground(QtGui.QBrush(QtGui.QColor(RED)))
             self.unmachined.addItem(item)
         if not chain.get("unmachined"):

@@ -141,11 +141,11 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         data = chain_object.chain_of(chain)
         elements = {e["id"] for e in machining_features.result_of(self.group)["elements"]}
         machined = {op.ElementId for op in machining_chain.chain_operations(chain)}
-        unmachined = {u["element"]: u["reason"] for u in data["unmachined"]}
-        self.assertEqual(machined | set(unmachined), elements)
-        for element, reason in unmachined.items():
-            self.assertTrue(reason.strip(), element)
-        self.assertEqual(len(chain.Unmachined), len(unmachined))
+        unmachined = {u["element"] for u in data["unmachined"]}
+        self.assertEqual(machined | unmachined, elements)
+        for entry in data["unmachined"]:
+            self.assertTrue(entry["reason"].strip(), entry)
+        self.assertEqual(len(chain.Unmachined), len(data["unmachined"]))
 
     def test_paths_stay_in_the_stock_and_above_the_units_floor(self):
         # Tool-centre positions: within the stock grown by the tool's diameter (its radius and
@@ -248,7 +248,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         other = None
         for uid in data["order"]:
             u = units[int(uid)]
-            smaller = [t["id"] for t in data["tools"] if t["type"] in ("flat", "bull")
+            smaller = [tid for tid, t in sorted(data["tools"].items()) if t["type"] in ("flat", "bull")
                        and t["diameter"] < u["cutter"]["diameter"]]
             if u["operation"] == "pocket" and smaller and int(uid) not in (first, second, disabled):
                 other = (int(uid), smaller[0])
@@ -339,6 +339,8 @@ class SamplePanelTest(unittest.TestCase, ChainFixture):
             self.assertEqual(ids, [u for u in order if u in set(ids)])
         kinds = {type(op.Proxy).__name__ for op in ops}
         self.assertIn("GeneralisedPocket", kinds)
+        self.assertEqual([op.Label for op in ops if "Invalid" in op.State or not op.Path.Commands], [],
+                         self.chain.Messages)
         self.assertTrue(kinds & {"Drilling", "HelicalInterpolation"}, kinds)
 
     def test_drilling_writes_path_drill_cycles(self):
