@@ -198,6 +198,11 @@ def run():
     for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
         tree_view.collapseAll()
     Gui.Selection.addSelection(job)
+    mw = Gui.getMainWindow()
+    for dock in mw.findChildren(QtGui.QDockWidget):
+        if dock.isVisible() and dock.objectName() == "Combo View":
+            mw.resizeDocks([dock], [380], QtCore.Qt.Horizontal)  # room for the view
+    pump()
     Gui.activeDocument().activeView().viewIsometric()
     Gui.SendMsgToActiveView("ViewFit")
     shot = window_shot(doc, "machining_chain_paths")
