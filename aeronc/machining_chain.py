@@ -273,8 +273,9 @@ def _compute_paths(jobs, progress):
     """Compute every operation's path; returns a message for each that has none (the
     operation stays, marked with the toolpath generator's error, for the user to change)."""
     ops = [op for job in jobs for op in pathcompat.job_operations(job) if operations.is_machining_operation(op)]
-    for i, op in enumerate(ops):
-        if progress is not None and progress(i / max(1, len(ops)), "Toolpath of {}".format(op.Label)) is False:
+    stale = [op for op in ops if {"Touched", "Invalid"} & set(op.State) or not op.Path.Commands]
+    for i, op in enumerate(stale):
+        if progress is not None and progress(i / max(1, len(stale)), "Toolpath of {}".format(op.Label)) is False:
             raise MachiningChainError("cancelled")
         op.recompute()
         op.purgeTouched()  # computed: the document's recompute below need not do it again

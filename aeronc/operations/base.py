@@ -150,34 +150,36 @@ class MachiningOperation(BaseProxy):
         returns the edits kept against a different chain value: [(property, kept, chain's)]."""
         edited = set(obj.UserEdited)
         kept = []
-        obj.Unit = json.dumps(unit, separators=(",", ":"))  # first: onChanged compares with it
-        obj.UnitId = int(unit["id"])
-        obj.ElementId = int(unit.get("element", -1))
-        obj.SetupId = int(unit.get("setup", 0))
-        obj.Operation = str(unit.get("operation", ""))
-        obj.Step = str(unit.get("step", ""))
-        obj.Tool = str(unit.get("tool", ""))
-        obj.Top = float(unit.get("top", 0.0))
-        obj.Bottom = float(unit.get("bottom", 0.0))
+        # Only what changes is set: an operation whose unit is the same is not recomputed.
+        _set(obj, "Unit", json.dumps(unit, separators=(",", ":"), sort_keys=True))  # first: onChanged compares with it
+        _set(obj, "UnitId", int(unit["id"]))
+        _set(obj, "ElementId", int(unit.get("element", -1)))
+        _set(obj, "SetupId", int(unit.get("setup", 0)))
+        _set(obj, "Operation", str(unit.get("operation", "")))
+        _set(obj, "Step", str(unit.get("step", "")))
+        _set(obj, "Tool", str(unit.get("tool", "")))
+        _set(obj, "Top", float(unit.get("top", 0.0)))
+        _set(obj, "Bottom", float(unit.get("bottom", 0.0)))
         for p in self.PARAMETERS:
             value = p.chain_value(unit)
             if p.name in edited:
                 if abs(p.current(obj) - value) > 1e-9:
                     kept.append((p.name, p.current(obj), value))
                 continue
-            setattr(obj, p.name, value)
+            if abs(p.current(obj) - value) > 1e-12:
+                setattr(obj, p.name, value)
         enabled = bool(unit.get("enabled", True))
         if "Active" in edited:
             if bool(obj.Active) != enabled:
                 kept.append(("Active", bool(obj.Active), enabled))
         else:
-            obj.Active = enabled
+            _set(obj, "Active", enabled)
         if "ToolController" in edited and obj.ToolController is not None:
             if obj.ToolController is not tc:
                 kept.append(("ToolController", obj.ToolController.Label, tc.Label if tc is not None else ""))
-        else:
+        elif obj.ToolController is not tc:
             obj.ToolController = tc
-        obj.UserEdited = self.edited_parameters(obj)
+        _set(obj, "UserEdited", self.edited_parameters(obj))
         return kept
 
     # --- the path ----------------------------------------------------------------------------
@@ -211,6 +213,12 @@ class MachiningOperation(BaseProxy):
         obj.RapidLength = float(result.get("rapidLength", 0.0))
         seconds = moves.estimate_seconds(result["moves"], hfeed, vfeed, tc.HorizRapid.Value, tc.VertRapid.Value)
         obj.CycleTime = moves.clock_text(seconds)
+
+
+def _set(obj, prop, value):
+    current = getattr(obj, prop)
+    if getattr(current, "Value", current) != value:
+        setattr(obj, prop, value)
 
 
 def unit_of(obj):
