@@ -22,6 +22,8 @@ FAMILY = "integral_panel"
 MATERIAL = "7050-T7451"
 DOUBLE = {"pocketsX": 2, "pocketsY": 2, "bottomPockets": True, "joggles": False}
 SAMPLE = os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step")
+SHARED_DATA = os.environ.get("AERONC_SHARED_DATA", "")
+NIST_PARTS = ["nist_ftc_07_asme1_rd.stp", "nist_ctc_01_asme1_ap203.stp"]
 
 
 def names(doc):
@@ -148,8 +150,9 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         self.assertEqual(len(chain.Unmachined), len(data["unmachined"]))
 
     def test_paths_stay_in_the_stock_and_above_the_units_floor(self):
-        # Tool-centre positions: within the stock grown by the tool's diameter (its radius and
-        # a lead of that radius), never below the unit's floor plus its axial allowance, never
+        # Tool-centre positions: within the stock grown by the tool's diameter and the radial
+        # allowance (its radius, a lead of that radius and the allowance outside a profiled
+        # wall), never below the unit's floor plus its axial allowance, never
         # above the clearance height. A frame mix-up (-Z geometry in +Z) would leave the stock.
         chain = self.build()
         for job in chain.Jobs:
@@ -157,6 +160,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             for op in job_ops(job):
                 unit = json.loads(op.Unit)
                 d = op.ToolController.Tool.Diameter.Value + 1e-6
+                d += max(0.0, op.RadialAllowance.Value) if hasattr(op, "RadialAllowance") else 0.0
                 moves = moves_of(op)
                 self.assertTrue([m for m in moves if m[0] != "G0"], op.Label)
                 for name, x, y, z in moves:
@@ -358,6 +362,47 @@ class SamplePanelTest(unittest.TestCase, ChainFixture):
                 self.assertGreater(p["R"], hole["top"])  # the cycle starts above the hole
                 self.assertLessEqual(p["Z"], hole["bottom"] + 1e-6)  # and reaches its bottom
             self.assertIn("G80", [c.Name for c in op.Path.Commands])
+
+
+
+@unittest.skipUnless(os.path.isdir(os.path.join(SHARED_DATA, "nist")), "the NIST parts (env AERONC_SHARED_DATA)")
+class NistPartsTest(unittest.TestCase):
+    """Real parts: an operation for every unit in chain order, every element machined or listed
+    with a reason, every path in its Job's stock (grown by the tool) and Job frame."""
+
+    def test_nist_parts(self):
+        for name in NIST_PARTS:
+            with self.subTest(part=name):
+                fixture = ChainFixture()
+
+                def read(doc, name=name):
+                    part = doc.addObject("Part::Feature", "Nist")
+                    part.Shape = Part.read(os.path.join(SHARED_DATA, "nist", name))
+                    doc.recompute()
+                    return part, None
+
+                fixture.make(read)
+                try:
+                    chain = fixture.build()
+                    data = chain_object.chain_of(chain)
+                    ops = machining_chain.chain_operations(chain)
+                    self.assertEqual(sorted(op.UnitId for op in ops), sorted(u["id"] for u in data["units"]))
+                    order = [int(u) for u in data["order"]]
+                    for job in chain.Jobs:
+                        ids = [op.UnitId for op in job_ops(job)]
+                        self.assertEqual(ids, [u for u in order if u in set(ids)])
+                    elements = {e["id"] for e in machining_features.result_of(fixture.group)["elements"]}
+                    self.assertEqual({op.ElementId for op in ops} | {u["element"] for u in data["unmachined"]}, elements)
+                    for job in chain.Jobs:
+                        bb = job.Stock.Shape.BoundBox
+                        for op in job_ops(job):
+                            d = op.ToolController.Tool.Diameter.Value + max(0.0, op.RadialAllowance.Value
+                                                                            if hasattr(op, "RadialAllowance") else 0.0) + 1e-6
+                            for _, x, y, z in moves_of(op):
+                                self.assertTrue(bb.XMin - d <= x <= bb.XMax + d and bb.YMin - d <= y <= bb.YMax + d
+                                                and z <= op.ClearanceHeight.Value + 1e-6, (name, op.Label, x, y, z))
+                finally:
+                    fixture.close()
 
 
 if __name__ == "__main__":
