@@ -18,7 +18,6 @@ import FreeCAD
 from aeronc import chain_edits, knowledge_base, operations, pathcompat, setup_job
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
-from aeronc.objects.base import proxy_type
 from aeronc.objects.transaction import in_transaction
 
 
@@ -288,10 +287,3 @@ def chain_operations(obj):
     """The chain's operations in chain order, over all its Jobs."""
     return [op for job in obj.Jobs for op in pathcompat.job_operations(job) if operations.is_machining_operation(op)]
 
-
-def is_chain_job(job):
-    return hasattr(job, setup_job.SETUP_TAG)
-
-
-__all__ = ["MachiningChainError", "compute", "check", "build", "update", "remove", "chain_operations",
-           "proxy_type"]

@@ -198,6 +198,10 @@ class MachiningOperation(BaseProxy):
         data["cutter"] = cutter
         return data
 
+    def toolpath_inputs(self, obj):
+        """The generator's inputs whose toolpaths, one after the other, make the operation's."""
+        return [self.toolpath_input(obj)]
+
     def execute(self, obj):
         if not obj.Unit:
             return
@@ -206,7 +210,10 @@ class MachiningOperation(BaseProxy):
             obj.Path = pathcompat.path_of([])
             raise RuntimeError("{}: no tool controller; choose one for the operation".format(obj.Label))
         from aeronc import _core
-        result = json.loads(_core.toolpath(json.dumps(self.toolpath_input(obj))))
+        parts = [json.loads(t) for t in _core.toolpaths([json.dumps(i) for i in self.toolpath_inputs(obj)])]
+        result = {"moves": [m for p in parts for m in p["moves"]],
+                  "cutLength": sum(p.get("cutLength", 0.0) for p in parts),
+                  "rapidLength": sum(p.get("rapidLength", 0.0) for p in parts)}
         hfeed, vfeed = tc.HorizFeed.Value, tc.VertFeed.Value  # mm/s
         obj.Path = pathcompat.path_of(moves.commands_of(result["moves"], hfeed, vfeed, obj.Label))
         obj.CutLength = float(result.get("cutLength", 0.0))
