@@ -13,16 +13,12 @@ kept, or could not be kept, is listed in the chain's Messages.
 """
 import json
 
-import FreeCAD
-
 from aeronc import chain_edits, knowledge_base, operations, pathcompat, setup_job
+from aeronc.errors import AeroNCError, MachiningChainError, from_core
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
+from aeronc.objects.base import attach_views
 from aeronc.objects.transaction import in_transaction
-
-
-class MachiningChainError(knowledge_base.KnowledgeBaseError):
-    """The chain cannot be built or updated; the message says why."""
 
 
 def _core():
@@ -57,23 +53,26 @@ def part_families(kb):
 def compute(group, family, material, machine="", kb_path=None):
     """The chain the core builds for the group (dict); the document is not touched."""
     _check_group(group)
-    kb = knowledge_base.open_kb(kb_path)
+    kb = _open_kb(kb_path)
     if not machine:
         names = kb.machine_names()
         machine = names[0] if names else ""
-    try:
+    with from_core(MachiningChainError, group.Label):
         text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family)
-    except RuntimeError as e:
-        raise MachiningChainError("{}: {}".format(group.Label, e)) from None
     return json.loads(text)
+
+
+def _open_kb(kb_path):
+    try:
+        return knowledge_base.open_kb(kb_path)
+    except AeroNCError as e:
+        raise MachiningChainError(str(e)) from None
 
 
 def check(chain):
     """The chain with the construction rules checked again (its "checks" replaced)."""
-    try:
+    with from_core(MachiningChainError, "checking the chain"):
         return json.loads(_core().check_chain(json.dumps(chain)))
-    except RuntimeError as e:
-        raise MachiningChainError("checking the chain: {}".format(e)) from None
 
 
 def edited(built, edits):
@@ -100,7 +99,7 @@ def build(group, family, material, machine="", kb_path=None, edits=None, built=N
     if edits is None:
         edits = chain_object.edits_of(obj) if obj is not None else chain_edits.EMPTY
     chain, notes = edited(built, edits)
-    kb = knowledge_base.open_kb(kb_path)
+    kb = _open_kb(kb_path)
     doc = group.Document
     settings = dict(Family=family, Material=material, Machine=built.get("machine") or machine,
                     KnowledgeBase=kb_path or "")
@@ -108,11 +107,11 @@ def build(group, family, material, machine="", kb_path=None, edits=None, built=N
     def work():
         target = obj
         if target is None:
-            target = chain_object.make(doc)
+            target = doc.addObject("App::FeaturePython", "MachiningChain")
+            chain_object.MachiningChain(target)
             target.Label = "Machining chain ({})".format(part.Label)
-            if FreeCAD.GuiUp:
-                from aeronc.viewproviders.view_machining_chain import attach
-                attach(target)
+            target.Visibility = True
+            attach_views([target])
         target.Features = group
         for k, v in settings.items():
             setattr(target, k, v)
@@ -137,7 +136,7 @@ def update(obj, edits=None, progress=None):
     if edits is None:
         edits = chain_object.edits_of(obj)
     chain, notes = edited(built, edits)
-    kb = knowledge_base.open_kb(obj.KnowledgeBase or None)
+    kb = _open_kb(obj.KnowledgeBase or None)
     doc = obj.Document
 
     def work():

@@ -129,10 +129,9 @@ def unused_tool_controllers(job, wanted):
 
 def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb):
     import json
-    try:
+    from aeronc.errors import MachiningChainError, from_core
+    with from_core(MachiningChainError, "tool {} of the chain".format(tool_id)):
         _, document = kb.bit_document(tool_id)
-    except RuntimeError as e:
-        raise RuntimeError("tool {} of the chain: {}".format(tool_id, e))
     tc = pathcompat.create_tool_controller(doc, job, "TC: {} {}".format(*tag.split("/")), json.loads(document),
                                            number, rpm, hfeed, vfeed)
     tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan", 0, True)

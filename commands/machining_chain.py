@@ -2,7 +2,7 @@
 Features (or of the selected chain) and make its Path Jobs."""
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
 def selected_chain_source():
@@ -20,21 +20,16 @@ def selected_chain_source():
     return group, (chains[0] if chains else None)
 
 
-class MachiningChain:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("MachiningChain"),
-                "MenuText": "Machining chain",
-                "ToolTip": "Fuse a process template with the selected Machining Features into the NC machining "
-                           "chain (setups, processes, steps, programs, tools, units), review and edit it, and make "
-                           "a Path Job per setup with an operation for every unit"}
+class MachiningChain(Command):
+    ICON = "MachiningChain"
+    MENU_TEXT = "Machining chain"
+    TOOLTIP = ("Fuse a process template with the selected Machining Features into the NC machining chain "
+               "(setups, processes, steps, programs, tools, units), review and edit it, and make a Path Job "
+               "per setup with an operation for every unit")
 
-    def IsActive(self):
-        return FreeCADGui.ActiveDocument is not None and not FreeCADGui.Control.activeDialog() \
-            and selected_chain_source() is not None
+    def target(self):
+        return selected_chain_source()
 
-    def Activated(self):
-        found = selected_chain_source()
-        if found is None:
-            return
+    def run(self, found):
         from aeronc.panels.machining_chain_panel import MachiningChainPanel
         FreeCADGui.Control.showDialog(MachiningChainPanel(*found))

@@ -38,13 +38,12 @@ def _sample(doc):
 
 def run(name, make, kb_path):
     import FreeCAD
-    from aeronc import _core, chain_edits, machining_chain
-    from aeronc.objects import machining_features
+    from aeronc import _core, chain_edits, machining_chain, makers
     doc = FreeCAD.newDocument("ChainBench")
     doc.UndoMode = 1
     part = make(doc)
     doc.recompute()
-    group = machining_features.create_machining_features(doc, part)
+    group = makers.create_machining_features(doc, part)
     t0 = time.perf_counter()
     built = machining_chain.compute(group, "integral_panel", "7050-T7451", kb_path=kb_path)
     t_chain = time.perf_counter() - t0

@@ -9,7 +9,7 @@ is built and updated by aeronc.machining_chain, which also makes the Jobs.
 """
 import json
 
-from aeronc.objects.base import BaseProxy, add_property, proxy_type
+from aeronc.objects.base import BaseProxy, declare_property, proxy_type
 
 TYPE = "AeroNC::MachiningChain"
 
@@ -19,39 +19,31 @@ class MachiningChain(BaseProxy):
 
     def __init__(self, obj):
         super().__init__(obj)
-        self.add_properties(obj)
+        self.declare(obj)
 
-    @staticmethod
-    def add_properties(obj):
+    def declare(self, obj):
         g = "Machining chain"
-        add_property(obj, "App::PropertyLink", "Features", g, "The Machining Features group the chain machines")
-        add_property(obj, "App::PropertyLinkList", "Jobs", g, "Path Jobs of the chain, one per setup")
-        add_property(obj, "App::PropertyString", "Family", g, "Part family of the process template", read_only=True)
-        add_property(obj, "App::PropertyString", "Material", g, "Workpiece material", read_only=True)
-        add_property(obj, "App::PropertyString", "Machine", g, "Machine of the process plan", read_only=True)
-        add_property(obj, "App::PropertyString", "KnowledgeBase", g,
-                     "Knowledge base the chain was built from (empty: the user's)", read_only=True)
+        declare_property(obj, "App::PropertyLink", "Features", g, "The Machining Features group the chain machines")
+        declare_property(obj, "App::PropertyLinkList", "Jobs", g, "Path Jobs of the chain, one per setup")
+        declare_property(obj, "App::PropertyString", "Family", g, "Part family of the process template", read_only=True)
+        declare_property(obj, "App::PropertyString", "Material", g, "Workpiece material", read_only=True)
+        declare_property(obj, "App::PropertyString", "Machine", g, "Machine of the process plan", read_only=True)
+        declare_property(obj, "App::PropertyString", "KnowledgeBase", g,
+                         "Knowledge base the chain was built from (empty: the user's)", read_only=True)
         g = "Result"
-        add_property(obj, "App::PropertyInteger", "UnitCount", g, "Machining units", read_only=True)
-        add_property(obj, "App::PropertyInteger", "DisabledCount", g, "Units the user disabled", read_only=True)
-        add_property(obj, "App::PropertyFloat", "TravelSavedPercent", g,
-                     "Rapid travel saved by ordering, against the rules-only order", read_only=True)
-        add_property(obj, "App::PropertyInteger", "FailedChecks", g, "Construction rules that fail", read_only=True)
-        add_property(obj, "App::PropertyStringList", "Unmachined", g, "Elements no unit machines, and why",
-                     read_only=True)
-        add_property(obj, "App::PropertyStringList", "Messages", g,
-                     "What the last update kept of the user's edits, and what it could not keep", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "UnitCount", g, "Machining units", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "DisabledCount", g, "Units the user disabled", read_only=True)
+        declare_property(obj, "App::PropertyFloat", "TravelSavedPercent", g,
+                         "Rapid travel saved by ordering, against the rules-only order", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "FailedChecks", g, "Construction rules that fail", read_only=True)
+        declare_property(obj, "App::PropertyStringList", "Unmachined", g, "Elements no unit machines, and why",
+                         read_only=True)
+        declare_property(obj, "App::PropertyStringList", "Messages", g,
+                         "What the last update kept of the user's edits, and what it could not keep", read_only=True)
         g = "Data"
-        add_property(obj, "App::PropertyString", "Built", g, "The chain as the core built it (JSON)", hidden=True)
-        add_property(obj, "App::PropertyString", "Edits", g, "The user's edits of the chain (JSON)", hidden=True)
-        add_property(obj, "App::PropertyString", "Chain", g, "The chain with the edits, checked (JSON)", hidden=True)
-
-    def onDocumentRestored(self, obj):
-        self.add_properties(obj)
-        import FreeCAD
-        if FreeCAD.GuiUp:
-            from aeronc.viewproviders.view_machining_chain import attach
-            attach(obj)
+        declare_property(obj, "App::PropertyString", "Built", g, "The chain as the core built it (JSON)", hidden=True)
+        declare_property(obj, "App::PropertyString", "Edits", g, "The user's edits of the chain (JSON)", hidden=True)
+        declare_property(obj, "App::PropertyString", "Chain", g, "The chain with the edits, checked (JSON)", hidden=True)
 
     def execute(self, obj):
         pass
@@ -77,9 +69,3 @@ def edits_of(obj):
 def chains_of_features(group):
     """The MachiningChain objects built from a Machining Features group."""
     return [o for o in group.InList if is_machining_chain(o) and o.Features is group]
-
-
-def make(doc):
-    obj = doc.addObject("App::FeaturePython", "MachiningChain")
-    MachiningChain(obj)
-    return obj

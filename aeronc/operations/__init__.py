@@ -11,7 +11,7 @@ They are Path::FeaturePython objects with a Path, in a Job's Operations group: F
 framework, the Job's commands and the 3-D view treat them like Path's own operations.
 """
 from aeronc import pathcompat
-from aeronc.objects.base import proxy_type
+from aeronc.objects.base import attach_views, proxy_type
 
 
 def _classes():
@@ -40,20 +40,19 @@ def operation_class(operation):
     return _classes()[kind]
 
 
+TYPES = {"AeroNC::GeneralisedPocket", "AeroNC::Profile", "AeroNC::Drilling", "AeroNC::HelicalInterpolation"}
+
+
 def is_machining_operation(obj):
-    t = proxy_type(obj) or ""
-    return t.startswith("AeroNC::") and t in {c.Type for c in _classes().values()}
+    return proxy_type(obj) in TYPES
 
 
 def create(doc, unit, label):
     """A new operation (not yet in a Job, no unit yet) of the unit's operation type."""
-    import FreeCAD
     cls = operation_class(unit.get("operation", ""))
     obj = pathcompat.create_path_object(doc, cls.__name__)
     cls(obj)
     obj.Active = True
     obj.Label = label
-    if FreeCAD.GuiUp:
-        from aeronc.viewproviders.view_operation import attach
-        attach(obj)
+    attach_views([obj])
     return obj

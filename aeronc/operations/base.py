@@ -12,10 +12,9 @@ everything is in properties and survives save and reopen.
 """
 import json
 
-import FreeCAD
 
 from aeronc import pathcompat
-from aeronc.objects.base import BaseProxy, add_property
+from aeronc.objects.base import BaseProxy, declare_property
 from aeronc.operations import moves
 
 COOLANT_MODES = ["None", "Flood", "Mist"]
@@ -83,44 +82,38 @@ class MachiningOperation(BaseProxy):
 
     def __init__(self, obj):
         super().__init__(obj)
-        self.add_properties(obj)
+        self.declare(obj)
 
-    @classmethod
-    def add_properties(cls, obj):
+    def declare(self, obj):
+        cls = type(self)
         g = "Path"
-        add_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
-        add_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
-        add_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation")
-        if not obj.CoolantMode:
-            obj.CoolantMode = COOLANT_MODES
+        declare_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
+        declare_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
+        if "CoolantMode" not in obj.PropertiesList:
+            declare_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation",
+                             COOLANT_MODES)
             obj.CoolantMode = "Flood"
-        add_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
-                     read_only=True)
+        declare_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
+                         read_only=True)
         g = "Machining unit"
-        add_property(obj, "App::PropertyInteger", "UnitId", g, "Unit of the machining chain", read_only=True)
-        add_property(obj, "App::PropertyInteger", "ElementId", g, "Domain element the unit machines", read_only=True)
-        add_property(obj, "App::PropertyInteger", "SetupId", g, "Setup of the unit", read_only=True)
-        add_property(obj, "App::PropertyString", "Operation", g, "Operation type of the unit", read_only=True)
-        add_property(obj, "App::PropertyString", "Step", g, "Step of the process (r, w, c, ss, sf, fs, ff)",
-                     read_only=True)
-        add_property(obj, "App::PropertyString", "Tool", g, "Tool of the unit in the knowledge base", read_only=True)
-        add_property(obj, "App::PropertyDistance", "Top", g, "Top of the unit (Job frame)", read_only=True)
-        add_property(obj, "App::PropertyDistance", "Bottom", g, "Bottom of the unit (Job frame)", read_only=True)
-        add_property(obj, "App::PropertyString", "Unit", g, "The unit as the chain gave it (JSON)", hidden=True)
-        add_property(obj, "App::PropertyStringList", "UserEdited", g,
-                     "Parameters changed by hand: rebuilding the chain keeps them", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "UnitId", g, "Unit of the machining chain", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "ElementId", g, "Domain element the unit machines", read_only=True)
+        declare_property(obj, "App::PropertyInteger", "SetupId", g, "Setup of the unit", read_only=True)
+        declare_property(obj, "App::PropertyString", "Operation", g, "Operation type of the unit", read_only=True)
+        declare_property(obj, "App::PropertyString", "Step", g, "Step of the process (r, w, c, ss, sf, fs, ff)",
+                         read_only=True)
+        declare_property(obj, "App::PropertyString", "Tool", g, "Tool of the unit in the knowledge base", read_only=True)
+        declare_property(obj, "App::PropertyDistance", "Top", g, "Top of the unit (Job frame)", read_only=True)
+        declare_property(obj, "App::PropertyDistance", "Bottom", g, "Bottom of the unit (Job frame)", read_only=True)
+        declare_property(obj, "App::PropertyString", "Unit", g, "The unit as the chain gave it (JSON)", hidden=True)
+        declare_property(obj, "App::PropertyStringList", "UserEdited", g,
+                         "Parameters changed by hand: rebuilding the chain keeps them", read_only=True)
         g = "Parameters"
         for p in cls.PARAMETERS:
-            add_property(obj, p.prop_type, p.name, g, p.doc)
+            declare_property(obj, p.prop_type, p.name, g, p.doc)
         g = "Result"
-        add_property(obj, "App::PropertyLength", "CutLength", g, "Length of the feed moves", read_only=True)
-        add_property(obj, "App::PropertyLength", "RapidLength", g, "Length of the rapid moves", read_only=True)
-
-    def onDocumentRestored(self, obj):
-        type(self).add_properties(obj)  # properties added since the document was saved
-        if FreeCAD.GuiUp:
-            from aeronc.viewproviders.view_operation import attach
-            attach(obj)
+        declare_property(obj, "App::PropertyLength", "CutLength", g, "Length of the feed moves", read_only=True)
+        declare_property(obj, "App::PropertyLength", "RapidLength", g, "Length of the rapid moves", read_only=True)
 
     # --- user edits --------------------------------------------------------------------------
 

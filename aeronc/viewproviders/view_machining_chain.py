@@ -18,10 +18,3 @@ class ViewMachiningChain(BaseView):
         FreeCADGui.Control.showDialog(MachiningChainPanel(obj.Features, obj))
         return True
 
-
-def attach(obj):
-    vobj = getattr(obj, "ViewObject", None)
-    if vobj is None or getattr(vobj, "Proxy", None) is not None:
-        return
-    ViewMachiningChain(vobj)
-    vobj.Visibility = True

@@ -6,9 +6,7 @@ from aeronc.viewproviders.view_base import BaseView
 
 
 class ViewOperation(BaseView):
-    def __init__(self, vobj, icon="MachiningOperation"):
-        super().__init__(vobj)
-        self.ICON = icon
+    ICON = "MachiningOperation"
 
     def attach(self, vobj):
         self.Object = vobj.Object
@@ -20,11 +18,3 @@ class ViewOperation(BaseView):
     def doubleClicked(self, vobj):
         return False  # no task panel of its own: the property editor shows the parameters
 
-
-def attach(obj):
-    """Give an operation its view provider proxy (once)."""
-    vobj = getattr(obj, "ViewObject", None)
-    if vobj is None or getattr(vobj, "Proxy", None) is not None:
-        return
-    ViewOperation(vobj, getattr(obj.Proxy, "ICON", "MachiningOperation"))
-    vobj.Visibility = True

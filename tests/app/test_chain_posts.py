@@ -11,10 +11,10 @@ import unittest
 
 import FreeCAD
 
-from aeronc import machining_chain, pathcompat
-from aeronc.objects import machining_features
+from aeronc import machining_chain, makers, pathcompat
 from aeronc.post import machines
 from aeronc.tests.app import post_support as ps
+from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.tests.app.support import make_panel_object, new_document
 
 PANEL = {"pocketsX": 2, "pocketsY": 1, "bottomPockets": True, "joggles": False}
@@ -45,7 +45,7 @@ class ChainPostTest(unittest.TestCase):
         cls.tmp = tempfile.mkdtemp(prefix="aeronc_chainpost_")
         cls.doc = new_document("AeroNCChainPost")
         part, _ = make_panel_object(cls.doc, PANEL)
-        group = machining_features.create_machining_features(cls.doc, part)
+        group = makers.create_machining_features(cls.doc, part)
         cls.chain = machining_chain.build(group, "integral_panel", "7050-T7451",
                                           kb_path=os.path.join(cls.tmp, "kb.sqlite"))
         cls.machine_json, _ = machines.load("AC-5AX")
@@ -68,7 +68,7 @@ class ChainPostTest(unittest.TestCase):
         ps.match_in_order(self, expected, cut, 0)
 
     def test_aeronc_linuxcnc(self):
-        post = pathcompat.post_processor("aeronc_linuxcnc")
+        post = test_pathcompat.post_processor("aeronc_linuxcnc")
         for job in self.chain.Jobs:
             text = post.export([job], "-", EXACT)
             self._read_back(ps.read_linuxcnc(text, self.machine_json), job)
@@ -77,7 +77,7 @@ class ChainPostTest(unittest.TestCase):
                 self.assertRegex(text, r"T{}\b.*M6|M6.*T{}\b".format(tc.ToolNumber, tc.ToolNumber))
 
     def test_aeronc_840d(self):
-        post = pathcompat.post_processor("aeronc_840d")
+        post = test_pathcompat.post_processor("aeronc_840d")
         for job in self.chain.Jobs:
             text = post.export([job], "-", EXACT)
             self._read_back(ps.read_sinumerik(text, self.machine_json), job)
@@ -85,7 +85,7 @@ class ChainPostTest(unittest.TestCase):
             self.assertEqual(len(re.findall(r"CYCLE8[123]\(", text)), cycles)
 
     def test_freecad_linuxcnc_post(self):
-        post = pathcompat.builtin_post("linuxcnc")
+        post = test_pathcompat.builtin_post("linuxcnc")
         for job in self.chain.Jobs:
             text = post.export(pathcompat.job_post_objects(job), "-", "--no-show-editor --precision=6")
             read, pos, motion = [], [0.0, 0.0, 0.0], None
@@ -111,7 +111,7 @@ class ChainPostTest(unittest.TestCase):
         rs274 = shutil.which("rs274")
         if not rs274:
             self.skipTest("rs274 not installed (linuxcnc-uspace)")
-        post = pathcompat.post_processor("aeronc_linuxcnc")
+        post = test_pathcompat.post_processor("aeronc_linuxcnc")
         for job in self.chain.Jobs:
             text = post.export([job], "-", "--precision 4 --angle-precision 4")
             table = os.path.join(self.tmp, "tools.tbl")

@@ -13,7 +13,7 @@ import FreeCAD
 import Part
 
 import aeronc
-from aeronc import chain_edits, machining_chain, operations, pathcompat, setup_job
+from aeronc import chain_edits, machining_chain, makers, operations, pathcompat, setup_job
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
@@ -70,7 +70,7 @@ class ChainFixture:
         self.kb_path = os.path.join(self.tmp, "kb.sqlite")
         self.doc = new_document("AeroNCChain")
         self.part, self.truth = part_maker(self.doc)
-        self.group = machining_features.create_machining_features(self.doc, self.part, directions=directions)
+        self.group = makers.create_machining_features(self.doc, self.part, directions=directions)
 
     def build(self, **kw):
         return machining_chain.build(self.group, FAMILY, MATERIAL, kb_path=self.kb_path, **kw)
@@ -338,7 +338,7 @@ class BadInputTest(unittest.TestCase):
         block = self.doc.addObject("Part::Feature", "Block")
         block.Shape = Part.makeBox(50, 40, 10)
         self.doc.recompute()
-        group = machining_features.create_machining_features(self.doc, block, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, block, directions=[(0, 0, 1)])
         self.assertEqual(machining_features.result_of(group)["elements"], [])
         before, undo = names(self.doc), self.doc.UndoCount
         with self.assertRaises(machining_chain.MachiningChainError) as ctx:
@@ -352,7 +352,7 @@ class BadInputTest(unittest.TestCase):
         with self.assertRaises(machining_chain.MachiningChainError) as ctx:
             machining_chain.build(part, FAMILY, MATERIAL, kb_path=self.kb_path)
         self.assertIn("is not a Machining Features group", str(ctx.exception))
-        group = machining_features.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
+        group = makers.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
         before = names(self.doc)
         with self.assertRaises(machining_chain.MachiningChainError) as ctx:
             machining_chain.build(group, FAMILY, "unobtainium", kb_path=self.kb_path)

@@ -43,7 +43,7 @@ def tool_node(item):
 
 def run():
     import json
-    from aeronc import _core, chain_edits, knowledge_base, machining_chain, objects, pathcompat
+    from aeronc import _core, chain_edits, knowledge_base, machining_chain, makers, pathcompat
     from aeronc.objects import machining_chain as chain_object
     from aeronc.panels import machining_chain_panel
     from aeronc.panels.machining_chain_panel import UNIT_ROLE, MachiningChainPanel
@@ -64,7 +64,7 @@ def run():
     part = doc.addObject("Part::Feature", "Panel")
     part.Shape = shape
     doc.recompute()
-    group = objects.create_machining_features(doc, part)
+    group = makers.create_machining_features(doc, part)
     pump()
 
     cmd = Gui.Command.get("AeroNC_MachiningChain")
