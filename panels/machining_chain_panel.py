@@ -63,7 +63,7 @@ class MachiningChainPanel:
         QtCore.QTimer.singleShot(0, self._widen)
         if self.built:
             self.chain = mc.check(chain_edits.apply(self.built, self.edits)[0])
-            self._refresh(keep_checks=True)
+            self._refresh()
 
     @staticmethod
     def _widen():
@@ -169,7 +169,7 @@ class MachiningChainPanel:
         self.chain, self.notes = chain_edits.apply(self.built, self.edits)
         self.chain = mc.check(self.chain)
         self.checked = True
-        self._refresh(keep_checks=True)
+        self._refresh()
         return True
 
     def _apply_edits(self, select=None):
@@ -188,7 +188,7 @@ class MachiningChainPanel:
             show_error(str(e))
             return False
         self.checked = True
-        self._fill_checks()
+        self._refresh(select=self.selected_unit())  # the check arranges the tree again
         return True
 
     # -- the tree -----------------------------------------------------------------------------
@@ -200,7 +200,7 @@ class MachiningChainPanel:
                 out[op.UnitId] = op.CycleTime
         return out
 
-    def _refresh(self, keep_checks=False, select=None):
+    def _refresh(self, select=None):
         chain = self.chain
         self.tree.blockSignals(True)
         self.tree.clear()
