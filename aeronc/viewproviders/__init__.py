@@ -18,6 +18,8 @@ def attach(obj, restoring=False):
         return
     from aeronc.objects import DOMAIN_ELEMENT, MACHINING_FEATURES, SETUP_DIRECTION
     from aeronc.objects import compensated_drilling, measured_hole_set, photo_hole_set
+    from aeronc.objects.machining_chain import TYPE as MACHINING_CHAIN
+    from aeronc.operations import TYPES as OPERATIONS
     t = proxy_type(obj)
     if t == photo_hole_set.TYPE:
         from aeronc.viewproviders.view_photo_hole_set import ViewPhotoHoleSet as cls
@@ -31,6 +33,10 @@ def attach(obj, restoring=False):
         from aeronc.viewproviders.view_setup_direction import ViewSetupDirection as cls
     elif t == DOMAIN_ELEMENT:
         from aeronc.viewproviders.view_domain_element import ViewDomainElement as cls
+    elif t == MACHINING_CHAIN:
+        from aeronc.viewproviders.view_machining_chain import ViewMachiningChain as cls
+    elif t in OPERATIONS:
+        from aeronc.viewproviders.view_operation import ViewOperation as cls
     else:
         return
     cls(vobj)
