@@ -54,6 +54,7 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 }  // namespace
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+void bindVerify(py::module_& m);    // verify_bindings.cpp: simulation of a program against the part
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -149,4 +150,5 @@ PYBIND11_MODULE(_core, m) {
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
     bindKinematics(m);
+    bindVerify(m);
 }
