@@ -31,6 +31,13 @@ double Cutter::slope(double r) const {
     return q / std::sqrt(std::max(1e-300, cornerRadius * cornerRadius - q * q));
 }
 
+double Cutter::curvature(double r) const {
+    const double q = r - (radius - cornerRadius);
+    if (q <= 0) return 0;
+    const double e = std::max(1e-300, cornerRadius * cornerRadius - q * q);
+    return cornerRadius * cornerRadius / (e * std::sqrt(e));
+}
+
 Cutter Cutter::grownBy(double a) const {
     Cutter c;
     c.radius = std::max(0.0, radius + a);

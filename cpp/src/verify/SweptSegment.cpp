@@ -79,21 +79,42 @@ double SweptSegment::envelope(const Cutter& cutter, double x, double y) const {
         return ballEnvelope(R, x, y);
     } else {
         // Along the segment the envelope is w0 + slope s + height(d(s)): convex in s (height is
-        // convex and non-decreasing in d, d convex in s), so its slope changes sign once.
-        auto derivative = [&](double t) {
-            const double d = dist(t);
-            return slope_ + (d > 0 ? cutter.slope(std::min(d, R)) * (t - a) / d : 0.0);
-        };
-        if (derivative(lo) >= 0) {
-            s = lo;
-        } else if (derivative(hi) <= 0) {
-            s = hi;
-        } else {
-            for (int k = 0; k < 48 && hi - lo > 1e-7; ++k) {
-                const double m = 0.5 * (lo + hi);
-                (derivative(m) < 0 ? lo : hi) = m;
+        // convex and non-decreasing in d, d convex in s), so its slope changes sign once: Newton
+        // on the slope, kept inside a shrinking bracket, bisecting when a step leaves it.
+        auto derivatives = [&](double t, double& g, double& gp) {
+            const double d = dist(t), r = std::min(d, R);
+            if (d <= 0) {
+                g = slope_, gp = cutter.curvature(0);
+                return;
             }
-            s = 0.5 * (lo + hi);
+            const double c = (t - a) / d, sl = cutter.slope(r);
+            g = slope_ + sl * c;
+            gp = cutter.curvature(r) * c * c + sl * p * p / (d * d * d);
+        };
+        double g, gp;
+        derivatives(lo, g, gp);
+        if (g >= 0) {
+            s = lo;
+        } else {
+            derivatives(hi, g, gp);
+            if (g <= 0) {
+                s = hi;
+            } else {
+                s = std::clamp(a, lo, hi);
+                for (int k = 0; k < 60 && hi - lo > 1e-9; ++k) {
+                    derivatives(s, g, gp);
+                    if (g == 0) break;
+                    (g < 0 ? lo : hi) = s;
+                    const double next = gp > 0 ? s - g / gp : lo - 1;
+                    if (!(next > lo && next < hi)) {
+                        s = 0.5 * (lo + hi);
+                        continue;
+                    }
+                    const bool converged = std::abs(next - s) < 1e-10;
+                    s = next;
+                    if (converged) break;
+                }
+            }
         }
     }
     return w0_ + slope_ * s + cutter.height(std::min(dist(s), R));

@@ -16,6 +16,8 @@ struct Cutter {
     double height(double r) const;
     // d height / dr: 0 on the flat part, growing without bound at the rim of a rounded corner.
     double slope(double r) const;
+    // d slope / dr.
+    double curvature(double r) const;
     // The profile of the cutter grown by an allowance a all round: radius + a, corner radius + a
     // (with its tip lowered by a, the Minkowski sum with a ball of radius a). Negative a shrinks it.
     Cutter grownBy(double a) const;
