@@ -112,7 +112,7 @@ void panelMoves(bool quick) {
                 b[3] - b[0], b[4] - b[1], b[5] - b[2], mesh.triangles.size(), grid.nx, grid.ny, since(t));
     std::printf("# facing passes over the panel with a 10 mm cutter, 2 mm moves, 8 mm step-over, 0.5 mm steps "
                 "down into a blank 3 mm above the part\n");
-    std::printf("%8s %-14s %10s %12s %12s\n", "moves", "cutter", "simulate_s", "moves_per_s", "cells_per_s");
+    std::printf("%8s %-14s %10s %12s %14s\n", "moves", "cutter", "simulate_s", "moves_per_s", "removed_mm3");
     const std::vector<std::size_t> sizes = quick ? std::vector<std::size_t>{1000, 10000}
                                                  : std::vector<std::size_t>{1000, 10000, 100000};
     for (std::size_t n : sizes)
@@ -128,19 +128,17 @@ void panelMoves(bool quick) {
             SimulationOptions o;
             o.leftoverMap = false;
             const SimulationReport r = simulate(part, mesh, p, o);
-            // Cells visited: the footprint of each move, about (2 R x length + pi R^2) / cell^2.
-            const double cells = n * (10 * 2 + M_PI * 25) / grid.cellArea();
             const char* name = kind == 0 ? "flat" : kind == 1 ? "ball" : kind == 2 ? "ball, 3-D" : "bull r1, 3-D";
-            std::printf("%8zu %-14s %10.3f %12.0f %12.3g\n", n, name, r.simulateSeconds, n / r.simulateSeconds,
-                        cells / r.simulateSeconds);
+            std::printf("%8zu %-14s %10.3f %12.0f %14.0f\n", n, name, r.simulateSeconds, n / r.simulateSeconds,
+                        r.operations[0].removedVolume);
         }
 }
 
 void pocketScaling(bool quick) {
     std::printf("\n# plates of n pockets (40 x 24 mm, corner radius 4, 12 deep), each cleared by a 6 mm end mill "
                 "(zig-zag and a pass round the outline), every floor and wall finished; cell 0.5 mm\n");
-    std::printf("%6s %9s %11s %8s %10s %10s %10s %8s %8s\n", "pockets", "moves", "grid", "raster_s", "simulate_s",
-                "coverage_s", "total_s", "gouges", "uncov");
+    std::printf("%6s %9s %9s %11s %8s %10s %10s %10s %8s %8s\n", "pockets", "triangles", "moves", "grid", "raster_s",
+                "simulate_s", "coverage_s", "total_s", "gouges", "uncov");
     const std::vector<int> sizes = quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
     for (int n : sizes) {
         const int cols = int(std::ceil(std::sqrt(n * 1.6))), rows = (n + cols - 1) / cols;
@@ -175,7 +173,8 @@ void pocketScaling(bool quick) {
         for (const auto& f : r.coverage.faces) uncovered += f.uncoveredArea;
         char grid[32];
         std::snprintf(grid, sizeof grid, "%dx%d", r.grid.nx, r.grid.ny);
-        std::printf("%6d %9zu %11s %8.3f %10.3f %10.3f %10.3f %8zu %8.1f\n", n, op.moves.size(), grid,
+        std::printf("%6d %9zu %9zu %11s %8.3f %10.3f %10.3f %10.3f %8zu %8.1f\n", n, plate.mesh.triangles.size(),
+                    op.moves.size(), grid,
                     r.rasteriseSeconds, r.simulateSeconds, r.coverageSeconds, total, r.gouges.moves, uncovered);
     }
 }

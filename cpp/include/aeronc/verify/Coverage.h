@@ -4,10 +4,12 @@
 // Floors, and every face not standing near vertical, are measured at the ends of the part's
 // dexels: the stock between that end and the next part span (above a face looking up, below
 // one looking down), times |nz| so that it reads as a thickness along the face normal.
-// Walls (faces whose normal is within about 11 degrees of horizontal) have no dexel ends: they
-// are sampled along their length in bands of height, and from each sample the cells are walked
-// along the wall's normal while they still hold stock over the band; the thickness left is the
-// distance walked, to within one cell.
+// Walls (faces whose normal is within about 11.5 degrees of horizontal) have no dexel ends: they
+// are sampled every half cell along their length, in bands that split the face's height evenly
+// (about wallBand each), and from each sample the cells are walked along the wall's normal while
+// more than half of the band beside the wall is still stock; the thickness left is the distance
+// walked, to within one cell. Material thinner than half a band (a floor's leftover at the foot
+// of the wall) does not count as the wall's.
 #include <aeronc/verify/PartDexels.h>
 #include <aeronc/verify/StockDexels.h>
 #include <aeronc/verify/TriangleMesh.h>
