@@ -88,6 +88,8 @@ class VerifyTest(unittest.TestCase):
             _core.simulate(self.brep, "{", "")
         with self.assertRaisesRegex(_core.VerifyError, "deflection"):
             _core.simulate(self.brep, json.dumps({"ops": []}), json.dumps({"deflection": -1}))
+        with self.assertRaisesRegex(_core.VerifyError, "floorTolerence"):
+            _core.simulate(self.brep, json.dumps({"ops": []}), json.dumps({"floorTolerence": 0.1}))
         with self.assertRaises(RuntimeError):
             _core.simulate("not a shape", json.dumps({"ops": []}), "")
 

@@ -1,6 +1,7 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/verify/ReportJson.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace aeronc::verify {
@@ -112,6 +113,12 @@ SimulationOptions simulationOptionsFromJson(const json& j) {
     SimulationOptions o;
     if (j.is_null()) return o;
     if (!j.is_object()) throw inputError("the simulation options must be a JSON object");
+    static const char* known[] = {"gougeTolerance", "collisionTolerance", "floorTolerance", "wallTolerance",
+                                  "wallSearch",     "wallBand",           "leftoverMap",    "maxListed",
+                                  "deflection",     "angularDeflection"};
+    for (auto it = j.begin(); it != j.end(); ++it)
+        if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return it.key() == k; }))
+            throw inputError("unknown simulation option '" + it.key() + "'");
     o.gougeTolerance = positive(j, "gougeTolerance", o.gougeTolerance, true);
     o.collisionTolerance = positive(j, "collisionTolerance", o.collisionTolerance, true);
     o.coverage.floorTolerance = positive(j, "floorTolerance", o.coverage.floorTolerance, true);

@@ -99,6 +99,8 @@ TEST(ProgramJson, OptionsAreChecked) {
     EXPECT_TRUE(has(inputErrorOf([] { simulationOptionsFromJson(json{{"wallSearch", 0}}); }), "wallSearch"));
     EXPECT_TRUE(has(inputErrorOf([] { simulationOptionsFromJson(json{{"leftoverMap", 1}}); }), "leftoverMap"));
     EXPECT_TRUE(has(inputErrorOf([] { simulationOptionsFromJson(json{{"maxListed", 1.5}}); }), "maxListed"));
+    EXPECT_TRUE(has(inputErrorOf([] { simulationOptionsFromJson(json{{"floorTolerence", 0.1}}); }), "floorTolerence"));
+    EXPECT_NO_THROW(simulationOptionsFromJson(json{{"deflection", 0.01}}));
 }
 
 TEST(ProgramJson, ReportCarriesTheChecksAndTheMap) {
