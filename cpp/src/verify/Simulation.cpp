@@ -13,41 +13,54 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// What one offending cell shows: copied for every hit, so no label in it.
+struct CellHit {
+    double depth = 0;
+    bool wall = false;
+    int face = 0;
+    std::array<double, 3> position{};
+};
+
 // Counts offending cells of one check, and per move its deepest cell.
 class Tally {
 public:
     Tally(CheckResult& result, double tolerance, int maxListed) : r_(result), maxListed_(maxListed) {
         r_.tolerance = tolerance;
     }
-    void startSegment(int op, int move) {
-        op_ = op, move_ = move;
+    void startSegment(int op, const std::string& label, const Segment& seg) {
+        op_ = op, label_ = &label, seg_ = &seg;
         segmentWorst_.reset();
     }
-    void hit(const MoveEvent& e) {
+    void hit(const CellHit& h) {
         ++r_.cells;
-        if (!segmentWorst_ || e.depth > segmentWorst_->depth) segmentWorst_ = e;
+        if (!segmentWorst_ || h.depth > segmentWorst_->depth) segmentWorst_ = h;
     }
-    // Returns true when the segment had an offending cell.
+    // Returns true when the segment's move offends and was not counted yet.
     bool endSegment() {
         if (!segmentWorst_) return false;
-        const MoveEvent& e = *segmentWorst_;
-        const bool sameMove = lastOp_ == op_ && lastMove_ == move_;
+        MoveEvent e;
+        e.operation = op_, e.label = *label_, e.move = seg_->move, e.tip = seg_->to;
+        e.depth = segmentWorst_->depth, e.wall = segmentWorst_->wall, e.face = segmentWorst_->face;
+        e.position = segmentWorst_->position;
+        const bool sameMove = lastOp_ == op_ && lastMove_ == e.move;
         if (!sameMove) ++r_.moves;
         if (!r_.worst || e.depth > r_.worst->depth) r_.worst = e;
-        if (sameMove && !r_.listed.empty() && r_.listed.back().operation == op_ && r_.listed.back().move == move_) {
+        if (sameMove && !r_.listed.empty() && r_.listed.back().operation == op_ && r_.listed.back().move == e.move) {
             if (e.depth > r_.listed.back().depth) r_.listed.back() = e;
         } else if (!sameMove && int(r_.listed.size()) < maxListed_) {
             r_.listed.push_back(e);
         }
-        lastOp_ = op_, lastMove_ = move_;
+        lastOp_ = op_, lastMove_ = e.move;
         return !sameMove;
     }
 
 private:
     CheckResult& r_;
     int maxListed_;
-    int op_ = -1, move_ = -1, lastOp_ = -1, lastMove_ = -1;
-    std::optional<MoveEvent> segmentWorst_;
+    int op_ = -1, lastOp_ = -1, lastMove_ = -1;
+    const std::string* label_ = nullptr;
+    const Segment* seg_ = nullptr;
+    std::optional<CellHit> segmentWorst_;
 };
 
 struct Run {
@@ -61,7 +74,7 @@ struct Run {
 // depth is the smaller of the vertical and the horizontal overlap. Fills e and returns true
 // beyond the tolerance.
 bool gougeAt(const PartDexels& part, std::size_t c, const SweptSegment& sw, const Cutter& grown, double axial,
-             int s, double tol, double x, double y, double d, MoveEvent& e) {
+             int s, double tol, double x, double y, double d, CellHit& e) {
     if (part.empty(c)) return false;
     const double partTop = s > 0 ? (part.end(c) - 1)->z1 : -part.begin(c)->z0;
     if (sw.lowerBound(grown, d) - axial >= partTop - tol) return false;  // clear of it everywhere
@@ -108,10 +121,8 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
     summary.segments = segments.size();
     for (const Segment& seg : segments) {
         const SweptSegment sw(seg.from[0], seg.from[1], s * seg.from[2], seg.to[0], seg.to[1], s * seg.to[2]);
-        run.gouges.startSegment(index, seg.move);
-        run.collisions.startSegment(index, seg.move);
-        MoveEvent proto;
-        proto.operation = index, proto.label = op.label, proto.move = seg.move, proto.tip = seg.to;
+        run.gouges.startSegment(index, op.label, seg);
+        run.collisions.startSegment(index, op.label, seg);
 
         const auto rows = grid.rows(sw.minY() - reach, sw.maxY() + reach);
         for (int j = rows.first; j <= rows.second; ++j) {
@@ -125,7 +136,7 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
                 const double d = sw.distance(x, y);
 
                 if (!seg.rapid && d <= grown.radius) {
-                    MoveEvent e = proto;
+                    CellHit e;
                     if (gougeAt(run.part, c, sw, grown, op.axialAllowance, s, gougeTol, x, y, d, e)) run.gouges.hit(e);
                 }
 
@@ -136,11 +147,7 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
                 if (h == HUGE_VAL) continue;
                 if (seg.rapid) {
                     const double depth = std::min(top - h, cutter.radius - d);
-                    if (top - h > collisionTol && depth > collisionTol) {
-                        MoveEvent e = proto;
-                        e.depth = depth, e.wall = cutter.radius - d < top - h, e.position = {x, y, s * top};
-                        run.collisions.hit(e);
-                    }
+                    if (depth > collisionTol) run.collisions.hit({depth, cutter.radius - d < top - h, 0, {x, y, s * top}});
                 }
                 removed += s > 0 ? run.stock.removeAbove(c, h) : run.stock.removeBelow(c, -h);
             }
