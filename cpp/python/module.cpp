@@ -59,6 +59,7 @@ void bindOptimise(py::module_& m);  // optimise_bindings.cpp
 void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
 void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
 void bindChain(py::module_& m);     // chain_bindings.cpp
+void bindVerify(py::module_& m);    // verify_bindings.cpp: simulation of a program against the part
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -153,4 +154,5 @@ PYBIND11_MODULE(_core, m) {
     bindKinematics(m);
     bindToolpath(m);
     bindCompensation(m);
+    bindVerify(m);
 }
