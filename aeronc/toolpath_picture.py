@@ -76,10 +76,10 @@ def draw(setups, path, title=""):
         ax.set_ylabel("v (mm)")
     handles = [Line2D([0], [0], color=colour_of[t], lw=2, label=t) for t in tools]
     handles.append(Line2D([0], [0], color="#555555", lw=1, ls="dashed", label="rapid"))
-    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 6), frameon=False)
+    fig.legend(handles=handles, loc="lower center", ncol=min(len(handles), 7), frameon=False)
     if title:
         fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0.07, 1, 0.95))
+    fig.tight_layout(rect=(0, 0.11, 1, 0.95))
     tmp = path + ".part.png"
     fig.savefig(tmp)
     plt.close(fig)

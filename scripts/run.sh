@@ -5,8 +5,6 @@
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
-#   scripts/run.sh drill     datum holes, camera program, measurements and compensated
-#                            drilling of a generated wing-skin panel -> out/drill/
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
@@ -37,17 +35,14 @@ case "${1:-}" in
   demo)
     out=$ROOT/out/demo
     mkdir -p "$out"
-    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py"
+    # FreeCAD's start-up banner is not the job's; the job's own log follows it.
+    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py" 2>&1 |
+      awk 'banner && / ##  ##  ##$/ { banner = 0; next } !banner' banner=1
     ;;
   post)
     out=$ROOT/out/post
     mkdir -p "$out"
     HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$ROOT/scripts/post_sample.py"
-    ;;
-  drill)
-    out=$ROOT/out/drill
-    mkdir -p "$out"
-    HOME=$(fc_home drill) AERONC_OUT=$out freecadcmd "$STAGE/AeroNC/aeronc/drill_demo.py"
     ;;
   test)
     ctest --test-dir "$BUILD" --output-on-failure
@@ -59,7 +54,7 @@ case "${1:-}" in
     cmake --install "$BUILD" --component addon  # without the tests
     ;;
   *)
-    echo "usage: scripts/run.sh demo|post|drill|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|post|test|bench|install" >&2
     exit 2
     ;;
 esac
