@@ -2,7 +2,7 @@
 // OCCT's), simulating generated paths of 1,000 to 100,000 moves on the sample panel, and
 // plates of 10 to 1,000 machined pockets.
 // Usage: aeronc_verify_bench [--quick]   (--quick: fewer sizes, for a smoke run)
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/brep/ShapeMesh.h>
 #include <aeronc/verify/Simulation.h>
 

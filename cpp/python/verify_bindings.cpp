@@ -4,7 +4,7 @@
 #include "Guarded.h"
 
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/verify/ReportJson.h>
 #include <aeronc/brep/ShapeMesh.h>
 

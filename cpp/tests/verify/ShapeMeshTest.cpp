@@ -1,6 +1,6 @@
 // The OCCT adapter and real parts: B-rep solids meshed, tagged with FreeCAD's face numbers and
 // rasterised to the volume OCCT computes for them.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/verify/PartDexels.h>
 #include <aeronc/brep/ShapeMesh.h>
 #include <aeronc/verify/Simulation.h>
