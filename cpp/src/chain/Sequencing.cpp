@@ -57,6 +57,7 @@ public:
                 case RuleKind::CentreOut: centreOut = true; break;
             }
         }
+        holdParentsFirst();
         const Ordering o = ordering();
 
         // Rule 5 (or the unit order when the template leaves it out) inside the groups.
@@ -189,6 +190,29 @@ private:
         // Parents first, so a raised key runs down a whole branch.
         std::sort(found.begin(), found.end());
         for (const auto& [d, a, b] : found) edges_.emplace_back(a, b);
+    }
+
+    // Rule 3 holds over every key rule: a child's unit starts below material only its parent's
+    // unit removes, so a child that a key would send first (a larger tool under a narrow parent)
+    // goes right after its parent's group instead, still ordered by its own keys there.
+    // Appending the child's keys to the parent's sorts it after every unit keyed like the parent
+    // and before every unit keyed higher.
+    void holdParentsFirst() {
+        // Edges run parents first and only raise keys, so a second pass finds nothing to do
+        // unless a deeper edge came first.
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (const auto& [a, b] : edges_) {
+                const auto& ka = keys_[static_cast<std::size_t>(a)];
+                auto& kb = keys_[static_cast<std::size_t>(b)];
+                if (!(kb < ka)) continue;
+                std::vector<double> raised = ka;
+                const auto own = std::mismatch(kb.begin(), kb.end(), ka.begin(), ka.end()).first;
+                raised.insert(raised.end(), own, kb.end());
+                kb.swap(raised);
+                changed = true;
+            }
+        }
     }
 
     Ordering ordering() const {

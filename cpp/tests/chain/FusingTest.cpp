@@ -67,29 +67,38 @@ int expectSoundChain(const recognition::DomainTree& tree, const MachiningChain& 
     std::map<std::pair<int, StepCode>, const MachiningUnit*> byElementStep;
     for (const MachiningUnit& u : c.units) byElementStep[{u.element, u.step}] = &u;
     const ProcessTemplate& t = c.processTemplate;
+    // The unit of the nearest ancestor with a unit in the same step, lying higher.
+    auto parentUnit = [&](const MachiningUnit& b) -> const MachiningUnit* {
+        for (int p = byId[b.element]->parent; p >= 0; p = byId[p]->parent) {
+            const auto it = byElementStep.find({p, b.step});
+            if (it == byElementStep.end()) continue;
+            return it->second->bottom > b.bottom + 1e-9 ? it->second : nullptr;
+        }
+        return nullptr;
+    };
+    // Rule 3 holds over rule 1: a child cut with a larger tool than an ancestor waits for it.
+    auto underNarrowerParent = [&](const MachiningUnit& a) {
+        for (const MachiningUnit* p = parentUnit(a); p; p = parentUnit(*p))
+            if (p->cutter.diameter < a.cutter.diameter - 1e-9) return true;
+        return false;
+    };
     int parentPairs = 0;
     for (const MachiningUnit& a : c.units)
         for (const MachiningUnit& b : c.units) {
             if (a.setup != b.setup || a.id == b.id) continue;
             if (t.rank(a.step) < t.rank(b.step)) EXPECT_LT(pos[a.id], pos[b.id]) << a.id << " before " << b.id;
             if (a.step != b.step) continue;
-            if (a.cutter.diameter > b.cutter.diameter + 1e-9) EXPECT_LT(pos[a.id], pos[b.id]) << "rule 1";
+            if (a.cutter.diameter > b.cutter.diameter + 1e-9 && !underNarrowerParent(a))
+                EXPECT_LT(pos[a.id], pos[b.id]) << "rule 1";
             if (a.tool == b.tool && outer(a) && !outer(b)) EXPECT_LT(pos[a.id], pos[b.id]) << "rule 2";
         }
-    for (const MachiningUnit& b : c.units) {
-        // The nearest ancestor with a unit in the same step.
-        for (int p = byId[b.element]->parent; p >= 0; p = byId[p]->parent) {
-            const auto it = byElementStep.find({p, b.step});
-            if (it == byElementStep.end()) continue;
-            const MachiningUnit& a = *it->second;
-            if (a.tool == b.tool && outer(a) == outer(b) && a.bottom > b.bottom + 1e-9) {
-                EXPECT_LT(pos[a.id], pos[b.id]) << "rule 3: unit " << a.id << " (element " << a.element
-                                                << ") before unit " << b.id << " (element " << b.element << ")";
-                ++parentPairs;
-            }
-            break;
+    // Rule 3 whatever the tools: a child's unit starts below material its parent's unit removes.
+    for (const MachiningUnit& b : c.units)
+        if (const MachiningUnit* a = parentUnit(b)) {
+            EXPECT_LT(pos[a->id], pos[b.id]) << "rule 3: unit " << a->id << " (element " << a->element
+                                             << ") before unit " << b.id << " (element " << b.element << ")";
+            ++parentPairs;
         }
-    }
 
     EXPECT_LE(c.travel.optimised, c.travel.rulesOnly + 1e-9);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << ": " << r.node << ": " << r.message;

@@ -118,19 +118,56 @@ TEST(Sequencing, RulesOrderTheSmallPart) {
     EXPECT_EQ(c.units[static_cast<std::size_t>(c.order.back())].setup, 1);
     EXPECT_LE(c.travel.optimised, c.travel.rulesOnly + 1e-9);
 
-    // Smaller tools first reverses the roughing processes of +Z: F10 (element 1) before R20.
-    MachiningChain small = test::smallChain();
-    small.processTemplate.rules[0].largerToolFirst = false;
-    sequence(small);
-    arrange(small);
+    // Smaller tools first reverses the roughing processes of +Z where no parent is in the way:
+    // with element 1 a pocket of its own, F10 (element 1) before R20.
+    recognition::DomainTree loose = test::smallTree();
+    loose.elements[1].parent = -1;
+    loose.elements[0].children = {2};
+    TemplateRows rows = test::panelRows();
+    rows.rules[0].parameters = "order=smaller_tool_first";
+    MachiningChain small = buildChain(loose, test::smallPlan(), parseTemplate(rows), test::smallOptions());
+    ASSERT_EQ(small.processTemplate.rules[0].largerToolFirst, false);
     EXPECT_EQ(small.setups[0].processes[0].tool, "F10");
-    // ... and the child goes first then: a rule of higher priority wins over higher_z_first.
-    std::map<int, int> sp;
-    for (std::size_t i = 0; i < small.order.size(); ++i) sp[small.order[i]] = static_cast<int>(i);
-    int r0 = -1, r1 = -1;
-    for (const MachiningUnit& u : small.units)
-        if (u.step == StepCode::Rough && u.element <= 1) (u.element == 0 ? r0 : r1) = u.id;
-    EXPECT_LT(sp[r1], sp[r0]);
+}
+
+namespace {
+
+// Position of the unit of `element` in `step` in an order.
+int positionOf(const MachiningChain& c, const std::vector<int>& order, int element, StepCode step) {
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const MachiningUnit& u = c.units[static_cast<std::size_t>(order[i])];
+        if (u.element == element && u.step == step) return static_cast<int>(i);
+    }
+    return -1;
+}
+
+}  // namespace
+
+// Rule 3 over rule 1: a child roughed with a larger tool than its parent (a narrow parent ring
+// around a wide deeper pocket) starts below the parent's material, so the parent's unit still
+// goes first, in the rules-only order and after the travel optimisation, whichever tool order
+// the template asks for.
+TEST(Sequencing, ParentFirstEvenWhenTheChildsToolIsLarger) {
+    for (bool largerFirst : {true, false}) {
+        toolselect::ToolPlan plan = test::smallPlan();
+        plan.elements[0].roughingTool = 1;  // parent: F10
+        plan.elements[1].roughingTool = 0;  // child: R20
+        TemplateRows rows = test::panelRows();
+        if (!largerFirst) rows.rules[0].parameters = "order=smaller_tool_first";
+        for (bool optimise : {false, true}) {
+            ChainOptions o = test::smallOptions();
+            o.optimiseTravel = optimise;
+            const MachiningChain c = buildChain(test::smallTree(), plan, parseTemplate(rows), o);
+            const int parent = positionOf(c, c.order, 0, StepCode::Rough);
+            const int child = positionOf(c, c.order, 1, StepCode::Rough);
+            ASSERT_GE(parent, 0);
+            ASSERT_GE(child, 0);
+            EXPECT_LT(parent, child) << "larger first " << largerFirst << ", optimised " << optimise;
+            EXPECT_LT(c.units[static_cast<std::size_t>(c.order[static_cast<std::size_t>(child)])].top,
+                      c.units[static_cast<std::size_t>(c.order[static_cast<std::size_t>(parent)])].top);
+            for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+        }
+    }
 }
 
 // Many pockets of one step and tool, no precedences: the rules-only order goes from the centre
