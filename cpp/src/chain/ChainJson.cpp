@@ -75,6 +75,7 @@ json unitJson(const MachiningUnit& u) {
             {"holes", holes},
             {"radialAllowance", u.radialAllowance},
             {"axialAllowance", u.axialAllowance},
+            {"floorFilletRadius", u.floorFilletRadius},
             {"stepDown", num(u.stepDown)},
             {"stepOver", num(u.stepOver)},
             {"at", pt(u.at)},
@@ -217,6 +218,7 @@ MachiningUnit readUnit(const In& in) {
     }
     u.radialAllowance = in["radialAllowance"].number();
     u.axialAllowance = in["axialAllowance"].number();
+    if (in.has("floorFilletRadius")) u.floorFilletRadius = in["floorFilletRadius"].number();  // older chains: none
     u.stepDown = in["stepDown"].numberOr(NAN);
     u.stepOver = in["stepOver"].numberOr(NAN);
     u.at = point(in["at"]);

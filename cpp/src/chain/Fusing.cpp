@@ -381,6 +381,7 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     const bool floorless = e.type == ElementType::Opening || e.type == ElementType::Hole;
     u.radialAllowance = step.radialAllowance;
     u.axialAllowance = floorless ? 0.0 : step.axialAllowance;
+    u.floorFilletRadius = floorless ? 0.0 : std::max(0.0, e.floorFilletRadius);
 
     const char* op0 = settingOperation(step.code);
     std::optional<toolselect::ToolSetting> s = settingOf_(static_cast<std::size_t>(toolIndex), op0);

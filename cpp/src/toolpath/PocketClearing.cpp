@@ -5,6 +5,7 @@
 #include "Validate.h"
 
 #include <aeronc/core/Error.h>
+#include <aeronc/toolpath/FloorFillet.h>
 #include <aeronc/toolpath/Levels.h>
 
 #include <algorithm>
@@ -62,7 +63,8 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
                             !(cutter.radius() + p.finishingAllowance > 0)))
         throw inputError("finishingAllowance must lie between -R and radialAllowance");
     const double R = cutter.radius(), tol = p.chordTolerance;
-    const double off = R + p.radialAllowance;
+    const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.radialAllowance);
+    const double off = R + p.radialAllowance + fillet;
     const PocketArea area = pocketArea(unit, 2 * off + p.clearance);
     const clip::Paths centres = clip::offset(area.region, -off, tol);
     if (!(clip::area(centres) > 0))
@@ -96,7 +98,8 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     w.rapid(plan.chains.front().path.front()[0], plan.chains.front().path.front()[1], hs.safe);
     clearingMoves(w, plan, levels, unit.top, es);
     if (p.finishingPass) {
-        const clip::Paths finish = clip::offset(area.region, -(R + p.finishingAllowance), tol);
+        const double finishFillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.finishingAllowance);
+        const clip::Paths finish = clip::offset(area.region, -(R + p.finishingAllowance + finishFillet), tol);
         finishingMoves(w, finish, centres, levels, unit.top, es);
     }
     w.retract(hs.safe);

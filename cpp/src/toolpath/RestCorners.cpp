@@ -5,6 +5,7 @@
 #include "Validate.h"
 
 #include <aeronc/core/Error.h>
+#include <aeronc/toolpath/FloorFillet.h>
 #include <aeronc/toolpath/Levels.h>
 
 #include <algorithm>
@@ -18,10 +19,13 @@ Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutte
     if (!(R < R0)) throw inputError("rest machining needs a cutter smaller than the previous one");
     // The same extension as the previous cutter's clearing had.
     const PocketArea area = pocketArea(unit, 2 * (R0 + a) + p.clearance);
-    const clip::Paths centres = clip::offset(area.region, -(R + a), tol);
+    const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, a);
+    const clip::Paths centres = clip::offset(area.region, -(R + a + fillet), tol);
     if (!(clip::area(centres) > 0)) throw inputError("the rest-machining cutter does not fit in the pocket");
     const clip::Paths reached = clip::offset(centres, R, tol);
-    const clip::Paths reachedBefore = clip::offset(clip::offset(area.region, -(R0 + a), tol), R0, tol);
+    const double filletBefore = floorFilletOffset(unit.floorFilletRadius, previous.cornerRadius, a);
+    const clip::Paths reachedBefore =
+        clip::offset(clip::offset(area.region, -(R0 + a + filletBefore), tol), R0 + filletBefore, tol);
     // What is left, without the slivers that only rounding makes.
     const clip::Paths rest =
         clip::offset(clip::offset(clip::subtract(reached, reachedBefore), -2 * tol, tol), 2 * tol, tol);

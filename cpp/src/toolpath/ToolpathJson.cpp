@@ -26,7 +26,7 @@ const std::set<std::string> kCommon{"operation", "name", "cutter", "top", "botto
 std::set<std::string> keysOf(const std::string& op) {
     std::set<std::string> k = kCommon;
     auto add = [&](std::initializer_list<const char*> more) { k.insert(more.begin(), more.end()); };
-    if (op == "pocket" || op == "rest") add({"contour", "islands", "openEdges", "finishingPass", "finishingAllowance"});
+    if (op == "pocket" || op == "rest") add({"contour", "islands", "openEdges", "floorFilletRadius", "finishingPass", "finishingAllowance"});
     if (op == "rest") add({"previousCutter"});
     if (op == "profile") add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit"});
     if (op == "helix") add({"holes", "finishingAllowance", "breakThrough"});
@@ -90,6 +90,7 @@ PocketUnit pocketUnit(const json& j) {
         }
     u.top = required(j, "top");
     u.bottom = required(j, "bottom");
+    get(j, "floorFilletRadius", u.floorFilletRadius);
     return u;
 }
 

@@ -56,6 +56,7 @@ struct MachiningUnit {
     std::vector<std::array<Point2, 2>> openEdges;  // stretches of the contour open to the blank
     std::vector<HoleTarget> holes;
     double radialAllowance = 0, axialAllowance = 0;
+    double floorFilletRadius = 0;  // the element's: the toolpath keeps the cutter out of it
     double stepDown = 0;  // the knowledge base's a_p for the tool
     double stepOver = 0;  // a_e
     Point2 at{0, 0};      // where rapid travel to and from the unit is measured

@@ -13,6 +13,7 @@ struct PocketUnit {
     std::vector<Segment> openEdges;
     double top = 0;     // top constraint height
     double bottom = 0;  // floor height
+    double floorFilletRadius = 0;  // of the floor's edge along the walls; the cutter keeps out of it
 };
 
 struct PocketParameters : CutParameters {
