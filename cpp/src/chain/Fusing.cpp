@@ -312,11 +312,11 @@ int Fuser::finisher(const DomainElement& e, std::string& why) {
 }
 
 int Fuser::floorTool(const DomainElement& e, const TemplateStep& step, std::string& why) {
-    std::string finishWhy;
-    const int f = finisher(e, finishWhy);
-    if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
-    // A floor needs no tool as thin as the corners: the largest end mill fitting the floor fillet
-    // (one equal to it first), no wider than the roughing tool.
+    // A floor needs no tool as thin as the corners: the largest flat or bull end mill whose corner
+    // fits the floor fillet (at one diameter, the one whose corner equals the fillet), no wider
+    // than the roughing tool. A ball's scallops would need a step-over a fraction of a millimetre
+    // wide; the corner and wall steps take what the wide tool cannot reach. Only when no such
+    // end mill fits does the element's finishing tool do the floor.
     const int r = roughingTool(e);
     const double maxD = r >= 0 ? tool(r).diameter : kInf;
     const double fillet = std::max(0.0, e.floorFilletRadius);
@@ -328,16 +328,19 @@ int Fuser::floorTool(const DomainElement& e, const TemplateStep& step, std::stri
         if (!hasSetting(static_cast<int>(i), "finishing")) continue;
         if (!mismatch(t, e, step, Operation::Pocket, e.level).empty()) continue;
         const bool matches = fillet > 0 && std::fabs(t.cornerRadius - fillet) <= kTol;
-        if (best < 0 || (matches && !bestMatches) ||
-            (matches == bestMatches && t.diameter > tool(best).diameter + 1e-9)) {
+        if (best < 0 || t.diameter > tool(best).diameter + 1e-9 ||
+            (std::fabs(t.diameter - tool(best).diameter) <= 1e-9 && matches && !bestMatches)) {
             best = static_cast<int>(i);
             bestMatches = matches;
         }
     }
-    if (best < 0)
-        why = "no end mill with a corner radius of at most " + fmt(fillet) + " mm reaches the " + fmt(e.depth) +
-              " mm deep floor of " + elementName(e);
-    return best;
+    if (best >= 0) return best;
+    std::string finishWhy;
+    const int f = finisher(e, finishWhy);
+    if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
+    why = "no end mill with a corner radius of at most " + fmt(fillet) + " mm reaches the " + fmt(e.depth) +
+          " mm deep floor of " + elementName(e);
+    return -1;
 }
 
 int Fuser::helixTool(const DomainElement& e, std::string& why) const {
@@ -522,6 +525,8 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             // A floor pass clears an area: the roughing width of cut with the finishing speeds.
             if (const auto rs = settingOf_(static_cast<std::size_t>(f), "roughing")) u.stepOver = rs->ae;
             else u.stepOver = 0.5 * u.cutter.diameter;
+            // ... but no wider than leaves a scallop within the floor's tolerance.
+            u.stepOver = std::min(u.stepOver, floorStepOver(u.cutter.diameter, u.cutter.cornerRadius, opt_.floorScallop));
             st.floorAllowance = u.axialAllowance;
             if (st.roughUnit < 0) st.roughUnit = u.id;
             return;
@@ -709,6 +714,11 @@ MachiningChain Fuser::run() {
 }
 
 }  // namespace
+
+double floorStepOver(double diameter, double cornerRadius, double scallop) {
+    const double R = 0.5 * diameter, r = std::clamp(cornerRadius, 0.0, R), h = std::clamp(scallop, 0.0, r);
+    return std::min(diameter, 2 * (R - r) + 2 * std::sqrt(std::max(0.0, r * r - (r - h) * (r - h))));
+}
 
 std::string featureTypeOf(const DomainElement& e) {
     if (e.type == ElementType::Hole) return "hole";

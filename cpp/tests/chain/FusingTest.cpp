@@ -226,6 +226,26 @@ TEST(Fusing, SamplePanel) {
     EXPECT_EQ(sharp, sharpPockets);
     EXPECT_EQ(countersinks, countersunk);
     EXPECT_GT(c.travel.savedPercent, 0);
+
+    // Floors are finished with flat or bull end mills whose corner fits the floor fillet (the
+    // ball end mills stay in the corners and on the walls), at a step-over whose scallops stay
+    // under 0.01 mm: checked against the scallop of two corner arcs side by side.
+    std::map<int, const recognition::DomainElement*> byId;
+    for (const auto& e : tree.elements) byId[e.id] = &e;
+    int webs = 0;
+    for (const MachiningUnit& u : c.units) {
+        if (u.step != StepCode::Web) continue;
+        ++webs;
+        const auto& e = *byId.at(u.element);
+        EXPECT_NE(u.cutter.type, "ball") << "web unit " << u.id << " (element " << u.element << ")";
+        EXPECT_LE(u.cutter.cornerRadius, std::max(0.0, e.floorFilletRadius) + 1e-3) << "web unit " << u.id;
+        EXPECT_DOUBLE_EQ(u.floorFilletRadius, std::max(0.0, e.floorFilletRadius));
+        const double R = u.cutter.diameter / 2, r = u.cutter.cornerRadius;
+        const double gap = u.stepOver - 2 * (R - r);  // where the corners of two passes overlap
+        const double scallop = gap <= 0 ? 0.0 : r - std::sqrt(std::max(0.0, r * r - gap * gap / 4));
+        EXPECT_LE(scallop, 0.01 + 1e-9) << "web unit " << u.id;
+    }
+    EXPECT_GT(webs, 10);
 }
 
 class NistChain : public ::testing::TestWithParam<std::string> {};

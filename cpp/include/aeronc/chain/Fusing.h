@@ -28,6 +28,7 @@ struct ChainOptions {
     double restMinArea = 0.5;    // a rest unit when the roughing tool leaves more than this, mm²
     double helixMinRatio = 0.5;  // helical interpolation: end-mill diameter / hole diameter from ...
     double helixMaxRatio = 0.8;  // ... to (below half the hole a core would stand in the middle)
+    double floorScallop = 0.01;  // a floor (web) pass leaves scallops at most this high, mm
     bool optimiseTravel = true;
     bool listCandidateTools = true;  // also list the tools the chain could use instead (for editing)
 };
@@ -43,6 +44,11 @@ MachiningChain fuse(const recognition::DomainTree& tree, const toolselect::ToolP
 MachiningChain buildChain(const recognition::DomainTree& tree, const toolselect::ToolPlan& plan,
                           const ProcessTemplate& processTemplate, const ChainOptions& options,
                           const ToolSettingOf& settingOf = {});
+
+// The widest step-over of passes of a cutter (corner radius r) over a flat floor that leaves
+// scallops at most `scallop` high: the flat bottom's width 2 (R - r), and where the corners of
+// neighbouring passes meet, the chord of the corner arc at that height, 2 sqrt(r^2 - (r - h)^2).
+double floorStepOver(double diameter, double cornerRadius, double scallop);
 
 // The feature type a template step names for an element: hole, opening, flange (a pocket
 // carrying a flange), open_pocket or closed_pocket.
