@@ -153,12 +153,43 @@ private:
     // roughing tool does not bind it.
     int roughingTool(const DomainElement& e) const {
         const int r = plannedRoughingTool(e);
-        if (e.type != ElementType::OpenPocket || e.openEdges.empty()) return r;
+        if (e.type != ElementType::OpenPocket || e.openEdges.empty()) {
+            const auto cached = roughWithAllowance_.find(e.id);
+            if (cached != roughWithAllowance_.end()) return cached->second;
+            const int fitted = roughingToolWithAllowance(e, r, roughingAllowance());
+            roughWithAllowance_[e.id] = fitted;
+            return fitted;
+        }
         const auto c = choice_.find(e.id);
         const int f = c == choice_.end() ? -1 : c->second->finishingTool;
         if (f >= 0 && (r < 0 || tool(f).diameter > tool(r).diameter + 1e-9) && hasSetting(f, "roughing")) return f;
         return r;
     }
+    // The planner chose the roughing tool by eta without the step's radial allowance. When the
+    // tool grown by the allowance reaches none of the region (a slot-like opening barely wider
+    // than the tool), the largest roughing end mill that does; else the planned one.
+    int roughingToolWithAllowance(const DomainElement& e, int r, double ar) const {
+        if (r < 0 || e.type == ElementType::OpenPocket) return r;
+        const auto d = directions_.find(e.setup);
+        if (d == directions_.end()) return r;
+        const toolselect::PocketGeometry g = toolselect::pocketGeometry(e, d->second);
+        auto reaches = [&](const Tool& t) { return toolselect::machinableRatio(g, t.radius() + ar).eta > 0.0; };
+        if (reaches(tool(r))) return r;
+        int best = -1;
+        for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
+            const Tool& t = plan_.tools[i];
+            if (!t.isEndMill() || t.diameter >= tool(r).diameter || !hasSetting(static_cast<int>(i), "roughing")) continue;
+            if (best >= 0 && t.diameter <= tool(best).diameter) continue;
+            if (reaches(t)) best = static_cast<int>(i);
+        }
+        return best >= 0 ? best : r;
+    }
+    double roughingAllowance() const {
+        for (const TemplateStep& st : tmpl_.steps)
+            if (st.code == StepCode::Rough) return st.radialAllowance;
+        return 0.0;
+    }
+    mutable std::map<int, int> roughWithAllowance_;  // element -> roughing tool fitted to the allowance
     int finishingTool(const DomainElement& e, std::string& why) const;
     int finisher(const DomainElement& e, std::string& why);
     int floorTool(const DomainElement& e, const TemplateStep& step, std::string& why);
