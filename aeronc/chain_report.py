@@ -146,11 +146,11 @@ def _coverage(run):
     if not rows:
         return ""
     out = ["<h3>Material left per element (simulated against the blank)</h3>",
-           "<table><tr><th>setup</th><th>element</th><th>finished floor area (mm&sup2;)</th>"
+           "<table><tr><th>element</th><th>finished face area (mm&sup2;)</th>"
            "<th>area left &gt; tolerance (mm&sup2;)</th><th>max left (mm)</th></tr>"]
     for r in rows:
-        out.append("<tr><td>{}</td><td class='n'>{}</td><td class='n'>{}</td><td class='n'>{}</td>"
-                   "<td class='n'>{}</td></tr>".format(_e(r.get("setup", "")), _e(r.get("element")),
+        out.append("<tr><td class='n'>{}</td><td class='n'>{}</td><td class='n'>{}</td>"
+                   "<td class='n'>{}</td></tr>".format(_e(r.get("element")),
                                                       _num(r.get("area"), 0), _num(r.get("leftArea"), 0),
                                                       _num(r.get("maxLeft"), 2)))
     out.append("</table>")

@@ -137,6 +137,14 @@ def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, hori
     return tc
 
 
+def add_tool_controller(job, label, number):
+    """A new ToolController with FreeCAD's default tool bit in the Job (the caller sets the bit's
+    diameter, speeds and feeds)."""
+    tc = _tool_controller_module().Create(label, toolNumber=number)
+    job.Proxy.addToolController(tc)
+    return tc
+
+
 def _set_bit_attributes(bit, attributes):
     """FreeCAD 0.20's CreateFromAttrs drops a bit file's "attribute" section (Flutes, Material,
     ...): set the ones the bit's shape defines. An enumeration takes its option whatever the case."""

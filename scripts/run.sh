@@ -37,7 +37,7 @@ case "${1:-}" in
     mkdir -p "$out"
     # FreeCAD's start-up banner is not the job's; the job's own log follows it.
     HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py" 2>&1 |
-      awk 'banner && / ##  ##  ##$/ { banner = 0; next } !banner' banner=1
+      awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
     ;;
   post)
     out=$ROOT/out/post

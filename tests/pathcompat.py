@@ -48,13 +48,8 @@ def create_profile(name="Profile"):
 
 def add_tool_controller(job, label, number):
     """A new tool controller (FreeCAD's default tool bit) in the Job."""
-    try:
-        from Path.Tool import Controller  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathToolController as Controller  # FreeCAD 0.20
-    tc = Controller.Create(label, toolNumber=number)
-    job.Proxy.addToolController(tc)
-    return tc
+    from aeronc import pathcompat
+    return pathcompat.add_tool_controller(job, label, number)
 
 
 def create_pocket_shape(name="Pocket"):
