@@ -286,13 +286,11 @@ int optimiseCmd(int argc, char** argv) {
         return true;
     });
     const auto how = aeronc::optimise::parseMethod(method);
-    std::ifstream in(file);
-    if (!in) throw aeronc::inputError(file + ": no such file or not readable");
     nlohmann::json params;
     try {
-        params = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw aeronc::inputError(file + ": not valid JSON: " + e.what());
+        params = aeronc::optimise::parameterJson(aeronc::readTextFile(file, "parameter file"));
+    } catch (const aeronc::Error& e) {
+        throw aeronc::inputError(file + ": " + e.what());
     }
     if (!kbPath.empty()) {
         const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
