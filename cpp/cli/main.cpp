@@ -12,6 +12,7 @@
 //                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
+#include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
@@ -30,7 +31,9 @@
 #include <Standard_Failure.hxx>
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -38,6 +41,9 @@
 #include <map>
 #include <sstream>
 #include <algorithm>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -122,8 +128,13 @@ int recogniseCmd(int argc, char** argv) {
         else return false;
         return true;
     });
-    const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
-    const auto tree = aeronc::recognition::recognise(solid, opt);
+    aeronc::recognition::DomainTree tree;
+    aeronc::runCatchingOcctFaults(
+        [&] {
+            const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
+            tree = aeronc::recognition::recognise(solid, opt);
+        },
+        part);
     std::string text = aeronc::recognition::toJson(tree);
     if (faceNames) {  // the STEP name of each face, for comparing with labelled data
         auto j = nlohmann::json::parse(text);
@@ -253,7 +264,8 @@ int selectToolsCmd(int argc, char** argv) {
                                  ")");
     }
 
-    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt);
+    if (!fromTree)
+        aeronc::runCatchingOcctFaults([&] { tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt); }, input);
     const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
@@ -369,13 +381,11 @@ int optimiseCmd(int argc, char** argv) {
         return true;
     });
     const auto how = aeronc::optimise::parseMethod(method);
-    std::ifstream in(file);
-    if (!in) throw aeronc::inputError(file + ": no such file or not readable");
     nlohmann::json params;
     try {
-        params = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw aeronc::inputError(file + ": not valid JSON: " + e.what());
+        params = aeronc::optimise::parameterJson(aeronc::readTextFile(file, "parameter file"));
+    } catch (const aeronc::Error& e) {
+        throw aeronc::inputError(file + ": " + e.what());
     }
     if (!kbPath.empty()) {
         const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
@@ -402,15 +412,8 @@ void quietOcct() {
     m->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    quietOcct();
-    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
-        std::cerr << kUsage;
-        return argc < 2 ? 2 : 0;
-    }
-    const std::string cmd = argv[1];
+// One command, every failure a one-line message: exit 1 for an error, 2 for a usage mistake.
+int runCommand(const std::string& cmd, int argc, char** argv) {
     try {
         if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
         if (cmd == "panel") return panelCmd(argc, argv);
@@ -429,4 +432,48 @@ int main(int argc, char** argv) {
         std::cerr << "aeronc: error: " << e.what() << "\n";
         return 1;
     }
+}
+
+// The last line of defence for the commands that read a part: a fault the OCCT handlers cannot
+// turn into an error (one in another thread, one that breaks the handler itself) kills only a
+// child process; this process reports it in one line and exits 1, never with a signal.
+int inChildProcess(const std::function<int()>& command, const std::string& input) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return command();  // no child to be had: run here
+    if (pid == 0) {
+        const int code = command();
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        _exit(code);  // no static destructors after a fault the handlers caught
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) {
+            std::cerr << "aeronc: error: lost the process reading " << input << "\n";
+            return 1;
+        }
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    std::cerr << "aeronc: error: " << input << ": reading or recognising the part failed with signal " << sig << " ("
+              << strsignal(sig) << "); the file is probably damaged\n";
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    quietOcct();
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::cerr << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string cmd = argv[1];
+    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools") && argc > 2 &&
+                           std::string(argv[2]) != "--tree";
+    if (readsPart) return inChildProcess([&] { return runCommand(cmd, argc, argv); }, argv[2]);
+    return runCommand(cmd, argc, argv);
 }

@@ -2,6 +2,8 @@
 // PostError (a RuntimeError) with the core's message; the posting itself runs without the GIL.
 #include "Guarded.h"
 
+#include <aeronc/core/JsonNesting.h>
+
 #include <aeronc/post/Post.h>
 
 #include <nlohmann/json.hpp>
@@ -60,8 +62,17 @@ std::vector<PathSection> sectionsFrom(const py::list& list) {
 }
 
 // Options as JSON text, keys as in docs/post.md.
+// A whole-number option, refused rather than wrapped when it does not fit an int.
+int wholeOption(const nlohmann::json& v, const std::string& key) {
+    if (!v.is_number_integer() || v.get<long long>() < -1000000 || v.get<long long>() > 1000000)
+        throw aeronc::inputError("post option '" + key + "' must be a whole number");
+    return static_cast<int>(v.get<long long>());
+}
+
 std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
+    aeronc::checkJsonNesting(text, "post options");
     const auto j = text.empty() ? nlohmann::json::object() : nlohmann::json::parse(text);
+    if (!j.is_object()) throw aeronc::inputError("post options must be a JSON object");
     NcOptions nc;
     PlanOptions plan;
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -73,9 +84,9 @@ std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
             else if (d == "linuxcnc") nc.dialect = Dialect::LinuxCnc;
             else throw aeronc::inputError("unknown dialect '" + d + "' (840d, linuxcnc)");
         } else if (k == "vectors") nc.vectors = v.get<bool>();
-        else if (k == "precision") nc.precision = v.get<int>();
-        else if (k == "angle_precision") nc.anglePrecision = v.get<int>();
-        else if (k == "vector_precision") nc.vectorPrecision = v.get<int>();
+        else if (k == "precision") nc.precision = wholeOption(v, k);
+        else if (k == "angle_precision") nc.anglePrecision = wholeOption(v, k);
+        else if (k == "vector_precision") nc.vectorPrecision = wholeOption(v, k);
         else if (k == "comments") nc.comments = v.get<bool>();
         else if (k == "line_numbers") nc.lineNumbers = v.get<bool>();
         else if (k == "inverse_time") nc.inverseTime = v.get<bool>();

@@ -1,6 +1,7 @@
 // aeronc._core: the binding between FreeCAD's Python and the C++ core.
 // Every C++ and OCCT exception stops here and becomes RecognitionError.
 #include <aeronc/core/Error.h>
+#include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
@@ -66,11 +67,14 @@ PYBIND11_MODULE(_core, m) {
     aeronc::python::errorType() = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
     aeronc::python::bindKnowledgeBase(m);
 
-    auto recogniseWith = [](const TopoDS_Shape& solid, const recognition::RecogniseOptions& o) {
+    // Reading and recognition run with OCCT's faults caught: a damaged shape that makes
+    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on.
+    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const recognition::RecogniseOptions& o,
+                            const std::string& what) {
         recognition::DomainTree t;
         {
             py::gil_scoped_release nogil;
-            t = recognition::recognise(solid, o);
+            runCatchingOcctFaults([&] { t = recognition::recognise(load(), o); }, what);
         }
         return recognition::toJson(t, -1);
     };
@@ -82,7 +86,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(partFromBrepText(brep), o);
+                return recogniseWith([&] { return partFromBrepText(brep); }, o, "recognising the shape");
             });
         },
         py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
@@ -97,7 +101,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(loadPart(path), o);
+                return recogniseWith([&] { return loadPart(path); }, o, path);
             });
         },
         py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,

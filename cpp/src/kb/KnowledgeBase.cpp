@@ -412,7 +412,7 @@ std::vector<Tool> KnowledgeBase::tools() const {
     Statement s(db_.get(), path_,
                 (std::string("SELECT ") + kToolColumns + " FROM tool ORDER BY diameter DESC, id").c_str());
     std::vector<Tool> out;
-    while (s.step("reading the tools")) out.push_back(toolFromRow(s));
+    while (s.step("reading the tools")) out.push_back(toolFromRow(s, path_));
     return out;
 }
 
@@ -467,8 +467,10 @@ double KnowledgeBase::threshold(const std::string& name) const {
     Statement s(db_.get(), path_, "SELECT value FROM threshold WHERE name = ?");
     s.bind(1, name);
     if (!s.step("reading a threshold"))
-        throw inputError("knowledge base " + quoted(path_) + ": unknown threshold " + quoted(name) + " (known: " +
-                         joined(names(db_.get(), path_, "SELECT name FROM threshold ORDER BY name")) + ")");
+        notFound(db_.get(), path_,
+                 "knowledge base " + quoted(path_) + ": unknown threshold " + quoted(name) + " (known: " +
+                     joined(names(db_.get(), path_, "SELECT name FROM threshold ORDER BY name")) + ")");
+    s.about("threshold " + quoted(name));
     return s.real(0);
 }
 
@@ -480,15 +482,17 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
         Statement s(db, path_, "SELECT 1 FROM workpiece_material WHERE name = ?");
         s.bind(1, workpieceMaterial);
         if (!s.step())
-            throw inputError("unknown workpiece material " + quoted(workpieceMaterial) + " (known: " +
-                             joined(workpieceMaterials()) + ")");
+            notFound(db, path_,
+                     "unknown workpiece material " + quoted(workpieceMaterial) + " (known: " +
+                         joined(workpieceMaterials()) + ")");
     }
     {
         Statement s(db, path_, "SELECT 1 FROM tool_material WHERE name = ?");
         s.bind(1, toolMaterial);
         if (!s.step())
-            throw inputError("unknown tool material " + quoted(toolMaterial) + " (known: " +
-                             joined(names(db, path_, "SELECT name FROM tool_material ORDER BY name")) + ")");
+            notFound(db, path_,
+                     "unknown tool material " + quoted(toolMaterial) + " (known: " +
+                         joined(names(db, path_, "SELECT name FROM tool_material ORDER BY name")) + ")");
     }
     // ?4 NULL (no diameter) matches only rows without a range; ranged rows sort first.
     Statement s(db, path_,
@@ -504,6 +508,7 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
                          "AND operation = ?");
         ranged.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
         ranged.step();
+        checkIntact(db, path_);
         if (ranged.integer(0) > 0) {
             std::ostringstream d;
             if (toolDiameter) d << "a " << *toolDiameter << " mm tool";
@@ -522,6 +527,7 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
                          " tools and operation " + quoted(operation) + " (operations known for this pair: " +
                          (known.empty() ? std::string("none") : joined(known)) + ")");
     }
+    s.about("cutting condition " + quoted(workpieceMaterial) + "/" + quoted(toolMaterial) + "/" + quoted(operation));
     CuttingCondition c;
     c.workpieceMaterial = workpieceMaterial;
     c.toolMaterial = toolMaterial;
@@ -541,6 +547,14 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
     c.taylorM = s.real(12);
     c.dMin = s.optReal(13);
     c.dMax = s.optReal(14);
+    const std::string who = "knowledge base " + quoted(path_) + ": cutting condition " + quoted(workpieceMaterial) + "/" +
+                            quoted(toolMaterial) + "/" + quoted(operation) + ": ";
+    const std::pair<double, const char*> positive[] = {{c.vc, "vc_m_min"}, {c.fz, "fz_mm"},       {c.ap, "ap_mm"},
+                                                       {c.cF, "c_f"},      {c.kFc, "k_fc"},       {c.taylorC, "taylor_c"},
+                                                       {c.taylorM, "taylor_m"}, {c.aeRatio, "ae_ratio"}};
+    for (const auto& [v, name] : positive)
+        if (!(v > 0)) throw inputError(who + name + " must be positive, not " + std::to_string(v));
+    if (c.aeRatio > 1) throw inputError(who + "ae_ratio must be at most 1, not " + std::to_string(c.aeRatio));
     return c;
 }
 
@@ -551,7 +565,8 @@ Machine KnowledgeBase::machine(const std::string& name) const {
                 "FROM machine WHERE name = ?");
     s.bind(1, name);
     if (!s.step("reading a machine"))
-        throw inputError("unknown machine " + quoted(name) + " (known: " + joined(machineNames()) + ")");
+        notFound(db_.get(), path_, "unknown machine " + quoted(name) + " (known: " + joined(machineNames()) + ")");
+    s.about("machine " + quoted(name));
     Machine m;
     m.name = s.text(0);
     m.type = s.text(1);
@@ -569,6 +584,15 @@ Machine KnowledgeBase::machine(const std::string& name) const {
     m.maxForceN = s.real(13);
     m.efficiency = s.real(14);
     m.toolChangeS = s.real(15);
+    const std::string who = "knowledge base " + quoted(path_) + ": machine " + quoted(name) + ": ";
+    const std::pair<double, const char*> positive[] = {{m.travelX, "travel_x"}, {m.travelY, "travel_y"},
+                                                       {m.travelZ, "travel_z"}, {m.maxSpindleRpm, "max_spindle_rpm"},
+                                                       {m.powerKw, "power_kw"}, {m.maxFeedMmMin, "max_feed_mm_min"},
+                                                       {m.maxForceN, "max_force_n"}, {m.efficiency, "efficiency"}};
+    for (const auto& [v, column] : positive)
+        if (!(v > 0)) throw inputError(who + column + " must be positive, not " + std::to_string(v));
+    if (m.efficiency > 1) throw inputError(who + "efficiency must be at most 1, not " + std::to_string(m.efficiency));
+    if (m.toolChangeS < 0) throw inputError(who + "tool_change_s must not be negative");
     return m;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <optional>
 
 namespace aeronc::post {
@@ -42,10 +43,11 @@ public:
         std::string pending;
         int pendingLine = 0;
         while (pos <= text_.size()) {
-            size_t eol = text_.find('\n', pos);
+            // Lines end in LF, CR LF or CR alone.
+            size_t eol = text_.find_first_of("\r\n", pos);
             if (eol == std::string::npos) eol = text_.size();
             std::string_view l(text_.data() + pos, eol - pos);
-            pos = eol + 1;
+            pos = eol + (eol + 1 < text_.size() && text_[eol] == '\r' && text_[eol + 1] == '\n' ? 2 : 1);
             ++line;
             if (const size_t c = l.find("$$"); c != std::string_view::npos) l = l.substr(0, c);
             std::string t = trim(l);
@@ -101,6 +103,14 @@ private:
         return v;
     }
 
+    // A whole number in [0, 2^31): tool numbers.
+    int whole(const Statement& s, size_t i, const char* what) const {
+        const double v = need(s, i, what);
+        if (v != std::floor(v) || v < 0 || v > 2147483647.0)
+            fail(s.line, s.major + ": " + what + " '" + s.args[i] + "' must be a whole number from 0 to 2147483647");
+        return static_cast<int>(v);
+    }
+
     double need(const Statement& s, size_t i, const char* what) const {
         if (i >= s.args.size()) fail(s.line, s.major + " lacks its " + what);
         const auto v = number(s.args[i], s.line);
@@ -145,7 +155,7 @@ private:
             pprint(s);
         } else if (m == "LOADTL") {
             ClRecord r = base(ClKind::LoadTool, s.line);
-            r.tool.number = static_cast<int>(need(s, 0, "tool number"));
+            r.tool.number = whole(s, 0, "tool number");
             r.tool.name = "T" + std::to_string(r.tool.number);
             for (size_t i = 1; i + 1 < s.args.size(); ++i)
                 if (upper(s.args[i]) == "LENGTH") r.tool.length = need(s, i + 1, "tool length");
@@ -193,6 +203,7 @@ private:
         } else if (m == "DELAY") {
             ClRecord r = base(ClKind::Dwell, s.line);
             r.seconds = need(s, 0, "seconds");
+            if (r.seconds < 0) fail(s.line, "DELAY needs a dwell of 0 s or more, not " + s.args[0]);
             prog_.records.push_back(r);
         } else if (m == "STOP" || m == "OPSTOP") {
             ClRecord r = base(ClKind::Stop, s.line);
@@ -234,6 +245,8 @@ private:
             r.rpm = rpm_, r.spindleDir = rpm_ > 0 ? dir_ : 0;
         } else {
             r.rpm = need(s, 0, "speed");
+            if (!(r.rpm > 0))
+                fail(s.line, "SPINDL: spindle speed " + s.args[0] + " must be positive (SPINDL/OFF stops the spindle)");
             r.spindleDir = 1;
             for (size_t i = 1; i < s.args.size(); ++i) {
                 const std::string k = upper(s.args[i]);
@@ -328,6 +341,7 @@ private:
         c.rapto = keyword(s, "RAPTO", 0.0);
         c.rtrcto = keyword(s, "RTRCTO", c.rapto);
         c.dwell = keyword(s, "DWELL", 0.0);
+        if (c.dwell < 0) fail(s.line, "the cycle's DWELL must be 0 s or more");
         c.feed = keyword(s, "MMPM", feed_ > 0 ? std::optional<double>(feed_) : std::nullopt);
         if (c.kind != CycleKind::Drill) {
             c.step = keyword(s, "STEP", std::nullopt);

@@ -84,6 +84,7 @@ private:
     void feedWord(const PlannedStep& s) {
         if (s.motion == Motion::Rapid) return;
         if (inverse_) {
+            checkValue("inverse-time feed", 1.0 / s.minutes, "1/min", 4, true);
             w_.value("F", 1.0 / s.minutes, 4);
         } else if (s.rotaryMoved && s.minutes > 0) {
             // LinuxCNC times the move by the XYZ words it reads (rounded as written), or by the
@@ -99,6 +100,7 @@ private:
             xyz = std::sqrt(xyz);
             const double f = (xyz > 0 ? xyz : rot) / s.minutes;
             if (f > 0) {
+                checkValue("feed", f, "mm/min", 3, true);
                 w_.value("F", f, 3);
                 f_.forget();
             } else {

@@ -3,9 +3,33 @@
 
 #include <aeronc/core/Error.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 namespace aeronc::post {
 
 using namespace kinematics;
+
+namespace {
+
+std::string num(double v) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
+// Whether a non-negative v is written as 0 with `decimals` decimals.
+bool writtenAsZero(double v, int decimals) {
+    static constexpr double kScale[16] = {1,    1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                          1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    return std::round(v * kScale[std::clamp(decimals, 0, 15)]) < 1;
+}
+
+// The S word is an integer; LinuxCNC and the 840D read it into 32 bits.
+constexpr double kMaxSpindleWord = 2147483647.0;
+
+}  // namespace
 
 NcFormatter::NcFormatter(const Plan& plan, const NcOptions& o, bool semicolonComments, const char* dwellWord)
     : plan_(plan), prog_(*plan.program), m_(plan.machine), o_(o), w_(o.lineNumbers, semicolonComments),
@@ -38,15 +62,17 @@ void NcFormatter::step(const PlannedStep& s, const ClRecord& r) {
             workOffset(r);
             return;
         case ClKind::LoadTool:
+            if (r.tool.number < 0) throw inputError("tool number " + std::to_string(r.tool.number) + " is negative");
             loadTool(r);
             return;
         case ClKind::Spindle:
-            w_.spindle(r.rpm, r.spindleDir);
+            spindle(r);
             return;
         case ClKind::Coolant:
             coolant_ = w_.coolant(r.text);
             return;
         case ClKind::Dwell:
+            checkValue("dwell", r.seconds, "s", 3, false);
             w_.value(dwellWord_, r.seconds, 3);
             w_.end();
             return;
@@ -54,14 +80,54 @@ void NcFormatter::step(const PlannedStep& s, const ClRecord& r) {
             w_.line(r.text);
             return;
         case ClKind::Move:
+            if (s.motion != Motion::Rapid) checkFeed(s.feed, 3);
             move(s);
             if (o_.comments && s.origin == MoveOrigin::Reposition)
                 w_.comment("branch change: retracted, repositioned, re-entering");
             return;
         case ClKind::Cycle:
+            checkCycle(r);
             cycle(s, r);
             return;
     }
+}
+
+void NcFormatter::spindle(const ClRecord& r) {
+    if (r.spindleDir == 0) {
+        w_.line("M5");
+        return;
+    }
+    if (m_.maxSpindleSpeed && r.rpm > *m_.maxSpindleSpeed)
+        throw inputError("spindle speed " + num(r.rpm) + " r/min exceeds the machine's maximum spindle speed " +
+                         num(*m_.maxSpindleSpeed) + " r/min");
+    checkValue("spindle speed", r.rpm, "r/min", 0, true);
+    if (r.rpm > kMaxSpindleWord) throw inputError("spindle speed " + num(r.rpm) + " r/min does not fit the S word");
+    w_.spindle(r.rpm, r.spindleDir);
+}
+
+void NcFormatter::checkCycle(const ClRecord& r) const {
+    checkFeed(r.feed, 3);
+    checkValue("the hole's feed depth (R level to bottom)", r.retract, "mm", o_.precision, true);
+    checkValue("the hole's return level above the bottom", r.clearance, "mm", o_.precision, true);
+    if (r.cycle == CycleKind::Peck || r.cycle == CycleKind::ChipBreak)
+        checkValue("peck depth", r.peck, "mm", o_.precision, true);
+    checkValue("dwell", r.seconds, "s", 3, false);
+}
+
+void NcFormatter::checkFeed(double f, int decimals) const {
+    if (m_.maxFeed && f > *m_.maxFeed)
+        throw inputError("feed " + num(f) + " mm/min exceeds the machine's maximum feed " + num(*m_.maxFeed) + " mm/min");
+    checkValue("feed", f, "mm/min", decimals, true);
+}
+
+void NcFormatter::checkValue(const char* what, double v, const char* unit, int decimals, bool positive) const {
+    const std::string named = std::string(what) + " " + num(v) + " " + unit;
+    if (!std::isfinite(v)) throw inputError(std::string(what) + " is not a finite number");
+    if (positive && (v <= 0 || writtenAsZero(v, decimals)))
+        throw inputError(named + " must be positive" +
+                         (v > 0 ? " (it is written as 0 with " + std::to_string(decimals) + " decimals)" : ""));
+    if (!positive && v < 0) throw inputError(named + " must not be negative");
+    if (std::abs(v) >= kMaxNcValue) throw inputError(named + " does not fit an NC word (below 1e9)");
 }
 
 void NcFormatter::operation(const ClRecord& r) {

@@ -42,6 +42,13 @@ protected:
     // G93 inverse time (F = 1/minutes) on feed moves that turn a rotary axis, when asked for,
     // else G94; the mode word goes first in the block, F last.
     void feedMode(const kinematics::PlannedStep& s);
+    // The checks of the numbers that reach a word; each throws inputError saying what is wrong,
+    // run() adds the line. `decimals`: as the word is written, so that nothing becomes 0 there.
+    // A feed in mm/min: positive, within the machine's maxFeed and the word's range.
+    void checkFeed(double mmPerMin, int decimals) const;
+    // Any other value: finite, positive (or, with positive false, not negative) once written,
+    // below kMaxNcValue.
+    void checkValue(const char* what, double v, const char* unit, int decimals, bool positive) const;
     // Back to G94, as drilling cycles need.
     void unitsPerMinute();
     void forgetModal();
@@ -58,6 +65,8 @@ protected:
 
 private:
     void step(const kinematics::PlannedStep& s, const kinematics::ClRecord& r);
+    void spindle(const kinematics::ClRecord& r);
+    void checkCycle(const kinematics::ClRecord& r) const;
 
     const char* dwellWord_;
 };

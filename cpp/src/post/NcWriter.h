@@ -43,9 +43,10 @@ public:
         block_ += address;
         appendNumber(block_, v, decimals);
     }
-    // Spindle and coolant words are the same M codes in both dialects (DIN 66025).
+    // Spindle and coolant words are the same M codes in both dialects (DIN 66025). The caller
+    // checks the speed (NcFormatter::spindle).
     void spindle(double rpm, int direction) {
-        if (direction == 0 || rpm <= 0) {
+        if (direction == 0) {
             line("M5");
             return;
         }
@@ -75,16 +76,18 @@ public:
         word(block);
         end();
     }
+    // A line break inside a comment would start a block of its own: control characters become
+    // spaces.
     void comment(std::string_view text) {
         end();
-        if (semicolon_) {
-            out_ += "; ";
-            out_ += text;
-        } else {
-            out_ += '(';
-            for (char c : text) out_ += c == '(' ? '[' : c == ')' ? ']' : c;  // no nesting in LinuxCNC comments
-            out_ += ')';
+        out_ += semicolon_ ? "; " : "(";
+        for (char c : text) {
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+            else if (!semicolon_ && c == '(') c = '[';  // no nesting in LinuxCNC comments
+            else if (!semicolon_ && c == ')') c = ']';
+            out_ += c;
         }
+        if (!semicolon_) out_ += ')';
         out_ += '\n';
     }
     void raw(std::string_view text) {

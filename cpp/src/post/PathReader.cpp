@@ -1,7 +1,11 @@
 // FreeCAD Path commands (Path.toGCode() text) -> CL program. See PathReader.h for the convention.
 #include <aeronc/post/PathReader.h>
 
+#include <aeronc/core/Error.h>
+
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace aeronc::post {
@@ -11,6 +15,16 @@ using namespace kinematics;
 namespace {
 
 constexpr double kNotANumberInPath = 922337203685.0;
+// The S word is an integer; LinuxCNC and the 840D read it into 32 bits.
+constexpr double kMaxSpindleSpeed = 2147483647.0;
+
+// The character at line[i] whole: all bytes of a UTF-8 sequence, so that a message never ends
+// inside one.
+std::string_view character(std::string_view line, size_t i) {
+    size_t n = 1;
+    while (i + n < line.size() && n < 4 && (static_cast<unsigned char>(line[i + n]) & 0xC0) == 0x80) ++n;
+    return line.substr(i, n);
+}
 
 // Parses a decimal number as FreeCAD writes it ("-12.345678"): the digits as an integer, then
 // one division by a power of ten. Exact integers below 2^53 divided by an exact power of ten
@@ -51,6 +65,7 @@ std::from_chars_result parseNumber(const char* first, const char* last, double& 
 struct Command {
     char letter = 0;       // 'G', 'M', or 0 for a comment
     double code = 0;       // 0, 1, 81, 54, 59.1 ...
+    int code10 = 0;        // code * 10: 0, 10, 810, 540, 591 ...
     std::string_view text;  // the whole line, for messages
     std::string_view comment;
     double value[26];
@@ -66,6 +81,13 @@ public:
     void section(const PathSection& s) {
         const int op = static_cast<int>(prog_.operations.size());
         if (s.kind == PathSection::Kind::ToolChange) {
+            const std::string who = "tool controller '" + s.label + "': ";
+            if (s.tool.number < 0) throw inputError(who + "tool number " + std::to_string(s.tool.number) + " is negative");
+            char rpm[32];
+            std::snprintf(rpm, sizeof rpm, "%g", s.rpm);
+            if (!std::isfinite(s.rpm) || s.rpm < 0)
+                throw inputError(who + "spindle speed " + rpm + " r/min must be 0 or more");
+            if (s.rpm > kMaxSpindleSpeed) throw inputError(who + "spindle speed " + rpm + " r/min does not fit the S word");
             // Held back so that the operation it belongs to is announced before the tool call.
             ClRecord r = base(ClKind::LoadTool, op, 0);
             r.tool = s.tool;
@@ -102,11 +124,12 @@ public:
         const char* end = p + s.gcode.size();
         int number = 0;
         while (p < end) {
-            const char* eol = static_cast<const char*>(std::memchr(p, '\n', end - p));
-            if (!eol) eol = end;
+            // Lines end in LF, CR LF or CR alone.
+            const char* eol = p;
+            while (eol < end && *eol != '\n' && *eol != '\r') ++eol;
             std::string_view line(p, eol - p);
-            p = eol + 1;
-            while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
+            p = eol + (eol + 1 < end && eol[0] == '\r' && eol[1] == '\n' ? 2 : 1);
+            while (!line.empty() && line.back() == ' ') line.remove_suffix(1);
             if (line.empty()) continue;
             ++number;
             command(parse(line, number), number, isOp);
@@ -156,9 +179,10 @@ private:
         while (i < line.size()) {
             while (i < line.size() && line[i] == ' ') ++i;
             if (i >= line.size()) break;
+            const size_t start = i;
             char letter = line[i];
             if (letter >= 'a' && letter <= 'z') letter = static_cast<char>(letter - 'a' + 'A');
-            if (letter < 'A' || letter > 'Z') fail(number, line, std::string("cannot read '") + line[i] + "'");
+            if (letter < 'A' || letter > 'Z') fail(number, line, "cannot read '" + std::string(character(line, i)) + "'");
             ++i;
             double v = 0;
             const auto res = parseNumber(line.data() + i, line.data() + line.size(), v);
@@ -168,6 +192,13 @@ private:
             if (first) {
                 c.letter = letter;
                 c.code = v;
+                // G and M numbers: 0 to 999 with at most one decimal (G59.1). NaN, infinities and
+                // 1e308 once fell through to G1 and M0.
+                const double tenths = v * 10;
+                if (!(v >= 0 && v < 1000) || std::abs(tenths - std::round(tenths)) > 1e-6)
+                    fail(number, line, "'" + std::string(line.substr(start, i - start)) +
+                                           "' is no command: the code must be a number from 0 to 999 with at most one decimal");
+                c.code10 = static_cast<int>(std::lround(tenths));
                 first = false;
                 continue;
             }
@@ -218,7 +249,7 @@ private:
             prog_.records.push_back(r);
             return;
         }
-        const int code10 = static_cast<int>(std::lround(c.code * 10));
+        const int code10 = c.code10;
         if (c.letter == 'G') {
             switch (code10) {
                 case 0: case 10: motion(c, number, isOp); return;
@@ -259,6 +290,7 @@ private:
                     ClRecord r = base(ClKind::Spindle, op_, number);
                     r.spindleDir = code10 == 30 ? 1 : code10 == 40 ? -1 : 0;
                     r.rpm = c.has('S') ? c.get('S') : lastRpm_;
+                    if (r.rpm < 0) fail(number, c.text, "negative spindle speed; M4 turns the spindle the other way");
                     if (r.spindleDir == 0) r.rpm = 0;
                     lastRpm_ = r.rpm;
                     prog_.records.push_back(r);
@@ -266,8 +298,11 @@ private:
                 }
                 case 60: {
                     if (!c.has('T')) fail(number, c.text, "tool change without T");
+                    const double t = c.get('T');
+                    if (t != std::floor(t) || t < 0 || t > 2147483647.0)
+                        fail(number, c.text, "the tool number must be a whole number from 0 to 2147483647");
                     ClRecord r = base(ClKind::LoadTool, op_, number);
-                    r.tool.number = static_cast<int>(c.get('T'));
+                    r.tool.number = static_cast<int>(t);
                     r.tool.name = "T" + std::to_string(r.tool.number);
                     toolLoaded_ = true;
                     prog_.records.push_back(r);

@@ -62,6 +62,8 @@ public:
         else if (o.smoothing == "semifinish") smoothing_ = "_SEMIFIN";
         else if (o.smoothing == "rough") smoothing_ = "_ROUGH";
         else if (o.smoothing != "off") throw inputError("unknown smoothing '" + o.smoothing + "' (finish, semifinish, rough, off)");
+        if (!smoothing_.empty() && !(o.smoothingTolerance > 0 && o.smoothingTolerance < 1000))
+            throw inputError("the smoothing tolerance must be a positive number of mm below 1000");
     }
 
 private:
@@ -176,10 +178,13 @@ private:
 
     void feedWord(const PlannedStep& s) {
         if (s.motion == Motion::Rapid) return;
-        if (inverse_)
+        if (inverse_) {
+            checkValue("inverse-time feed", 1.0 / s.minutes, "1/min", 4, true);
             w_.value("F", 1.0 / s.minutes, 4);
-        else
+        } else {
+            checkFeed(s.feed, std::min(o_.precision, 3));
             w_.modal("F", s.feed, std::min(o_.precision, 3), f_);
+        }
     }
 
     void xyz(const Vec3& p, const std::array<bool, 3>& known) {
@@ -207,6 +212,7 @@ private:
             std::string n = r.tool.name;
             for (char& c : n)
                 if (c == '"') c = '\'';
+                else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';  // one block, one line
             t = "T=\"" + n + "\" D1 M6";
         } else {
             t = "T" + std::to_string(r.tool.number) + " D1 M6";
@@ -267,6 +273,7 @@ private:
         const double rfp = frame_.local(s.pose.tip + r.retract * u).z();
         const double rtp = frame_.local(s.pose.tip + r.clearance * u).z();
         unitsPerMinute();
+        checkFeed(r.feed, std::min(o_.precision, 3));
         w_.modal("F", r.feed, std::min(o_.precision, 3), f_);
         w_.end();
         std::string call;

@@ -7,8 +7,6 @@
 //     inverse-time feeds on moves that turn a rotary axis, G81/G82/G83/G73.
 #include <aeronc/kinematics/Planner.h>
 
-#include <charconv>
-#include <cmath>
 #include <string>
 
 namespace aeronc::post {
@@ -32,46 +30,15 @@ struct NcOptions {
 
 std::string formatNc(const kinematics::Plan& plan, const NcOptions& options);
 
-// Appends v with `decimals` decimals, trailing zeros dropped ("12.5", "-3", "0"). The common
-// case (up to 9 decimals, |v| below 1e9) rounds the scaled value to an integer and writes its
-// digits, several times faster than general floating-point formatting; the result differs from
-// correctly rounded decimal output at most in a tie of the last digit.
-inline void appendNumber(std::string& out, double v, int decimals) {
-    static constexpr double kScale[10] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
-    if (decimals >= 0 && decimals <= 9 && std::abs(v) < 1e9) {
-        const long long q = std::llround(v * kScale[decimals]);
-        if (q == 0) {
-            out += '0';
-            return;
-        }
-        unsigned long long a = q < 0 ? static_cast<unsigned long long>(-q) : static_cast<unsigned long long>(q);
-        char buf[32];
-        char* end = buf + sizeof buf;
-        char* p = end;
-        int d = decimals;
-        while (d > 0 && a % 10 == 0) a /= 10, --d;  // trailing zeros of the fraction
-        for (int k = 0; k < d; ++k) *--p = static_cast<char>('0' + a % 10), a /= 10;
-        if (d > 0) *--p = '.';
-        do {
-            *--p = static_cast<char>('0' + a % 10);
-            a /= 10;
-        } while (a);
-        if (q < 0) *--p = '-';
-        out.append(p, end);
-        return;
-    }
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-    char* end = res.ptr;
-    if (decimals > 0) {
-        while (end[-1] == '0') --end;
-        if (end[-1] == '.') --end;
-    }
-    if (end - buf == 2 && buf[0] == '-' && buf[1] == '0') {
-        out += '0';
-        return;
-    }
-    out.append(buf, end);
-}
+// The largest magnitude an NC word takes: the 840D's value range is +-999 999 999.9999, and no
+// length, angle, feed, speed or time of a real program comes near it.
+constexpr double kMaxNcValue = 1e9;
+
+// Appends v with `decimals` decimals (0 to 15), trailing zeros dropped ("12.5", "-3", "0").
+// Throws inputError for a value no NC word can take (NaN, infinite, |v| >= kMaxNcValue); `out`
+// is then unchanged. Up to 9 decimals the scaled value is rounded to an integer and its digits
+// written, several times faster than general floating-point formatting; the result differs
+// from correctly rounded decimal output at most in a tie of the last digit.
+void appendNumber(std::string& out, double v, int decimals);
 
 }  // namespace aeronc::post
