@@ -77,6 +77,7 @@ std::string toJson(const DomainTree& t, int indent) {
     j["faceRoles"] = json::array();
     for (FaceRole r : t.faceRoles) j["faceRoles"].push_back(toString(r));
     j["faceElement"] = t.faceElement;
+    j["unclaimedFaces"] = t.unclaimedFaces;
     j["warnings"] = t.warnings;
     return j.dump(indent);
 }
@@ -110,6 +111,10 @@ public:
         return Field(j_.at(i), where_ + "[" + std::to_string(i) + "]");
     }
     bool isNull() const { return j_.is_null(); }
+    bool has(const char* key) const {
+        expect(j_.is_object(), "an object");
+        return j_.contains(key);
+    }
 
     int integer() const {
         expect(j_.is_number_integer(), "a whole number");
@@ -338,6 +343,7 @@ void checkLinks(const DomainTree& t, const Field& root) {
     if (t.faceElement.size() != faces)
         root["faceElement"].fail(std::to_string(t.faceElement.size()) + " entries for " + std::to_string(faces) +
                                  " faces");
+    if (root.has("unclaimedFaces")) face(root["unclaimedFaces"], t.unclaimedFaces);
     for (std::size_t k = 0; k < faces; ++k)
         if (t.faceElement[k] < -1 || t.faceElement[k] >= n)
             root["faceElement"].at(k).fail("element " + std::to_string(t.faceElement[k]) + " does not exist (-1 or " +
@@ -369,6 +375,7 @@ DomainTree fromJson(const std::string& text) {
     t.elements = root["elements"].list(element);
     t.faceRoles = root["faceRoles"].list(faceRole);
     t.faceElement = root["faceElement"].integers();
+    if (root.has("unclaimedFaces")) t.unclaimedFaces = root["unclaimedFaces"].integers();  // added later: optional
     t.warnings = root["warnings"].list([](const Field& f) { return f.text(); });
     checkLinks(t, root);
     return t;
