@@ -61,11 +61,13 @@ PYBIND11_MODULE(_core, m) {
     aeronc::python::errorType() = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
     aeronc::python::bindKnowledgeBase(m);
 
-    auto recogniseWith = [](const TopoDS_Shape& solid, const recognition::RecogniseOptions& o) {
+    // Faces numbered as the shape numbers them: the FaceN of the object the shape came from.
+    auto recogniseWith = [](const TopoDS_Shape& shape, const std::string& origin,
+                            const recognition::RecogniseOptions& o) {
         recognition::DomainTree t;
         {
             py::gil_scoped_release nogil;
-            t = recognition::recognise(solid, o);
+            t = recognition::recogniseShape(shape, origin, o);
         }
         return recognition::toJson(t, -1);
     };
@@ -77,7 +79,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(partFromBrepText(brep), o);
+                return recogniseWith(shapeFromBrepText(brep), "BREP text", o);
             });
         },
         py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
@@ -92,7 +94,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(loadPart(path), o);
+                return recogniseWith(loadPart(path), path, o);
             });
         },
         py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,

@@ -19,7 +19,10 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Pln.hxx>
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -208,6 +211,55 @@ TEST(Recognition, FaceInsideTheBlankThatNoElementClaimsIsReported) {
     bool warned = false;
     for (const std::string& w : t.warnings) warned |= w.find("Face" + std::to_string(bore)) != std::string::npos;
     EXPECT_TRUE(warned) << "no warning names Face" << bore;
+}
+
+// A STEP import can hold free faces and shells besides the solid. Face numbers then follow
+// the whole shape (FreeCAD's FaceN of the imported object), wherever the free shapes lie.
+TEST(Recognition, FreeShapesBesideTheSolidKeepTheShapesFaceNumbers) {
+    const TopoDS_Shape solid =
+        validatedSolid(cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), roundedBox(30, 25, 10, 40, 30, 15, 5)), "test");
+    const TopoDS_Shape freeFace = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 50), gp_Dir(0, 0, 1)), 0, 10, 0, 10).Face();
+    TopoDS_Shape freeShell;
+    for (TopExp_Explorer e(BRepPrimAPI_MakeBox(gp_Pnt(200, 0, 0), 5, 5, 5).Shape(), TopAbs_SHELL); e.More(); e.Next())
+        freeShell = e.Current();
+    TopoDS_Compound all;
+    BRep_Builder b;
+    b.MakeCompound(all);
+    b.Add(all, freeFace);  // first, so that the solid's faces do not start at Face1
+    b.Add(all, solid);
+    b.Add(all, freeShell);
+    TopTools_IndexedMapOfShape allFaces, solidFaces;
+    TopExp::MapShapes(all, TopAbs_FACE, allFaces);
+    TopExp::MapShapes(solid, TopAbs_FACE, solidFaces);
+    ASSERT_EQ(allFaces.Extent(), solidFaces.Extent() + 7);
+
+    const DomainTree alone = recognise(solid, along({{0, 0, 1}}));
+    const DomainTree t = recogniseShape(all, "import", along({{0, 0, 1}}));
+    EXPECT_EQ(t.faceCount, allFaces.Extent());
+    ASSERT_EQ(t.faceRoles.size(), static_cast<std::size_t>(allFaces.Extent()));
+    ASSERT_EQ(t.elements.size(), alone.elements.size());
+    // Each face of the solid has the role it has alone, under the whole shape's number.
+    for (int i = 1; i <= solidFaces.Extent(); ++i) {
+        const int n = allFaces.FindIndex(solidFaces(i));
+        EXPECT_EQ(t.faceRoles[static_cast<std::size_t>(n - 1)], alone.faceRoles[static_cast<std::size_t>(i - 1)]);
+        EXPECT_EQ(t.faceElement[static_cast<std::size_t>(n - 1)], alone.faceElement[static_cast<std::size_t>(i - 1)]);
+    }
+    std::vector<int> floors;
+    for (int f : alone.elements[0].floorFaces) floors.push_back(allFaces.FindIndex(solidFaces(f)));
+    EXPECT_EQ(t.elements[0].floorFaces, floors);
+    // The free faces: no element, listed and named.
+    std::vector<int> leftOut{allFaces.FindIndex(freeFace)};
+    for (TopExp_Explorer e(freeShell, TopAbs_FACE); e.More(); e.Next()) leftOut.push_back(allFaces.FindIndex(e.Current()));
+    std::sort(leftOut.begin(), leftOut.end());
+    EXPECT_EQ(t.leftOutFaces, leftOut);
+    for (int f : leftOut) EXPECT_EQ(t.faceElement[static_cast<std::size_t>(f - 1)], -1);
+    bool named = false;
+    for (const std::string& w : t.warnings) named |= w.find("Face" + std::to_string(leftOut.back())) != std::string::npos;
+    EXPECT_TRUE(named);
+    // The numbers survive the JSON.
+    EXPECT_EQ(fromJson(toJson(t)).leftOutFaces, leftOut);
+    // A solid alone keeps its own numbering.
+    EXPECT_EQ(toJson(recogniseShape(solid, "solid", along({{0, 0, 1}}))), toJson(alone));
 }
 
 TEST(BadInput, NotAPartFile) {

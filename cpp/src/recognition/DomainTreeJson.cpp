@@ -78,6 +78,7 @@ std::string toJson(const DomainTree& t, int indent) {
     for (FaceRole r : t.faceRoles) j["faceRoles"].push_back(toString(r));
     j["faceElement"] = t.faceElement;
     j["unclaimedFaces"] = t.unclaimedFaces;
+    j["leftOutFaces"] = t.leftOutFaces;
     j["warnings"] = t.warnings;
     return j.dump(indent);
 }
@@ -344,6 +345,7 @@ void checkLinks(const DomainTree& t, const Field& root) {
         root["faceElement"].fail(std::to_string(t.faceElement.size()) + " entries for " + std::to_string(faces) +
                                  " faces");
     if (root.has("unclaimedFaces")) face(root["unclaimedFaces"], t.unclaimedFaces);
+    if (root.has("leftOutFaces")) face(root["leftOutFaces"], t.leftOutFaces);
     for (std::size_t k = 0; k < faces; ++k)
         if (t.faceElement[k] < -1 || t.faceElement[k] >= n)
             root["faceElement"].at(k).fail("element " + std::to_string(t.faceElement[k]) + " does not exist (-1 or " +
@@ -375,7 +377,9 @@ DomainTree fromJson(const std::string& text) {
     t.elements = root["elements"].list(element);
     t.faceRoles = root["faceRoles"].list(faceRole);
     t.faceElement = root["faceElement"].integers();
-    if (root.has("unclaimedFaces")) t.unclaimedFaces = root["unclaimedFaces"].integers();  // added later: optional
+    // Added later: optional, so that older trees still read.
+    if (root.has("unclaimedFaces")) t.unclaimedFaces = root["unclaimedFaces"].integers();
+    if (root.has("leftOutFaces")) t.leftOutFaces = root["leftOutFaces"].integers();
     t.warnings = root["warnings"].list([](const Field& f) { return f.text(); });
     checkLinks(t, root);
     return t;
