@@ -22,7 +22,8 @@ if _mod and os.path.isdir(os.path.join(_mod, "aeronc")) and _mod not in sys.path
     sys.path.insert(0, _mod)
 
 from PySide import QtGui  # noqa: E402
-from aeronc.tests.gui.harness import ARTIFACTS, check, click_ok, main, pump, window_shot  # noqa: E402
+from aeronc.tests.gui.harness import (  # noqa: E402
+    ARTIFACTS, check, click_ok, combo_view_width, fits_combo_view, main, pump, window_shot)
 
 PART = os.path.join(os.environ.get("AERONC_SHARED_DATA", ""), "nist", "nist_ctc_04_asme1_ap203.stp")
 
@@ -47,6 +48,8 @@ def run():
 
     Gui.activateWorkbench("PathWorkbench")
     pump()
+    default_width = combo_view_width()
+    check("the combo view is at its default width", default_width and default_width < 400, default_width)
     doc = FreeCAD.newDocument("Imported")
     ImportGui.insert(PART, doc.Name)  # what File > Import runs for a STEP file
     doc.recompute()
@@ -68,6 +71,11 @@ def run():
     Gui.runCommand("AeroNC_RecogniseFeatures")
     pump()
     check("recognise panel open", RecognisePanel.current is not None)
+    RecognisePanel.current.direction.setCurrentIndex(len(recognise_panel.DIRECTION_CHOICES) - 1)  # all rows shown
+    fits, detail = fits_combo_view(RecognisePanel.current.form, default_width)
+    window_shot(doc, "aeronc_panel_recognise")
+    check("the recognise panel fits the default combo view", fits, detail)
+    RecognisePanel.current.direction.setCurrentIndex(0)
     check("OK pressed", click_ok())
     pump(0.5)
     check("recognised without error", not errors, errors)
@@ -81,6 +89,9 @@ def run():
     check("the free faces are named as left out", len(result.get("leftOutFaces", [])) == faces - solid_faces and
           any("left out" in w for w in group.Warnings), (result.get("leftOutFaces"), list(group.Warnings)))
     check("the group is up to date", not group.Outdated)
+    check("nothing selected after Recognise: the colours show", not Gui.Selection.getSelection(),
+          [o.Label for o in Gui.Selection.getSelection()])
+    window_shot(doc, "aeronc_recognised_ctc04")
     colours = [tuple(round(c, 3) for c in col[:3]) for col in part.ViewObject.DiffuseColor]
     want = [tuple(round(c, 3) for c in col[:3]) for col in role_colours(result["faceRoles"])]
     check("every face of the object coloured by its role", colours == want, (len(colours), len(want)))
@@ -103,6 +114,14 @@ def run():
     panel.run_button.click()
     pump()
     check("Select tools does not refuse", not errors and panel.plan is not None, errors)
+    check("the knowledge base path is elided, whole in its tooltip",
+          panel.kb_label.toolTip() == knowledge_base.user_kb_path() and panel.kb_label.text() != panel.kb_label.toolTip(),
+          (panel.kb_label.text(), panel.kb_label.toolTip()))
+    fits, detail = fits_combo_view(panel.form, default_width)
+    window_shot(doc, "aeronc_panel_select_tools")
+    check("the Select tools panel fits the default combo view", fits, detail)
+    check("its table scrolls sideways", panel.table.horizontalScrollBar().maximum() > 0,
+          panel.table.horizontalScrollBar().maximum())
     check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
     pump()
     jobs = pathcompat.jobs_of_part(doc, part)
@@ -123,10 +142,24 @@ def run():
     answered = [p for p in opt.proposals if p.ok]
     check("Optimise answers for the milling tools", answered and not errors,
           (errors, [(p.tc.Label, p.error) for p in opt.proposals]))
-    window_shot(doc, "aeronc_imported_ctc04")
+    fits, detail = fits_combo_view(opt.form, default_width)
+    window_shot(doc, "aeronc_panel_optimise")
+    check("the Optimise panel fits the default combo view", fits, detail)
     check("OK pressed", click_ok())
     pump()
     check("no refusal on OK", not errors, errors)
+
+    # The knowledge-base editor, with its long path and wide tables.
+    Gui.runCommand("AeroNC_EditKnowledgeBase")
+    pump()
+    from aeronc.panels.knowledge_base_panel import KnowledgeBasePanel
+    kbp = KnowledgeBasePanel.current
+    check("knowledge base panel open", kbp is not None)
+    fits, detail = fits_combo_view(kbp.form, default_width)
+    window_shot(doc, "aeronc_panel_knowledge_base")
+    check("the knowledge base panel fits the default combo view", fits, detail)
+    check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
+    pump()
     FreeCAD.closeDocument(doc.Name)
 
 
