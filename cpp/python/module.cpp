@@ -68,13 +68,14 @@ PYBIND11_MODULE(_core, m) {
     aeronc::python::bindKnowledgeBase(m);
 
     // Reading and recognition run with OCCT's faults caught: a damaged shape that makes
-    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on.
-    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const recognition::RecogniseOptions& o,
-                            const std::string& what) {
+    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on. Faces are
+    // numbered as the shape numbers them: the FaceN of the object the shape came from.
+    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const std::string& origin,
+                            const recognition::RecogniseOptions& o, const std::string& what) {
         recognition::DomainTree t;
         {
             py::gil_scoped_release nogil;
-            runCatchingOcctFaults([&] { t = recognition::recognise(load(), o); }, what);
+            runCatchingOcctFaults([&] { t = recognition::recogniseShape(load(), origin, o); }, what);
         }
         return recognition::toJson(t, -1);
     };
@@ -86,7 +87,8 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith([&] { return partFromBrepText(brep); }, o, "recognising the shape");
+                return recogniseWith([&] { return shapeFromBrepText(brep); }, "BREP text", o,
+                                     "recognising the shape");
             });
         },
         py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
@@ -101,7 +103,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith([&] { return loadPart(path); }, o, path);
+                return recogniseWith([&] { return loadPart(path); }, path, o, path);
             });
         },
         py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,
