@@ -148,22 +148,35 @@ def sim_op(label, moves, cutter, radial=0.0, axial=0.0, to_part=None):
             "radialAllowance": radial, "axialAllowance": axial}
 
 
+def _length(op, prop):
+    """A length property of an operation in mm; 0 where it has none (a drilling leaves nothing)."""
+    v = getattr(op, prop, 0.0)
+    return float(getattr(v, "Value", v))
+
+
 def floor_figures(part_shape, ops, blank, pockets, cell):
     """Simulate ops on the blank; the +Z floors' figures of the pockets."""
     from aeronc import verification
-    floors = sorted({f for e in pockets for f in e["floorFaces"]})
+    floors = {f for e in pockets for f in e["floorFaces"]}
+    fillets = {f for e in pockets for f in e.get("filletFaces", [])} - floors
     elements = {"E{}".format(e["id"]): list(e["floorFaces"]) for e in pockets}
     t0 = time.perf_counter()
-    report = verification.simulate(part_shape, ops, blank, floors, elements, cell, {"leftoverMap": False})
+    report = verification.simulate(part_shape, ops, blank, sorted(floors | fillets), elements, cell,
+                                   {"leftoverMap": False})
     t_sim = time.perf_counter() - t0
-    faces = report["coverage"]["faces"]
+    faces = [f for f in report["coverage"]["faces"] if f["face"] in floors]
+    blends = [f for f in report["coverage"]["faces"] if f["face"] in fillets]
     area = sum(f.get("floorArea", 0.0) for f in faces)
     left = sum(f.get("uncoveredArea", 0.0) for f in faces)
     worst_left = max([f.get("maxLeftover") or 0.0 for f in faces] or [0.0])
     gouge = report["gouges"]
     worst = gouge.get("worst") or {}
     return {"area": area, "left": left, "maxLeft": worst_left, "gouges": int(gouge.get("count", 0)),
-            "worstGouge": float(worst.get("depth", 0.0)), "worstGougeOp": worst.get("op", ""),
+            "filletArea": sum(f.get("floorArea", 0.0) + f.get("wallArea", 0.0) for f in blends),
+            "filletLeft": sum(f.get("uncoveredArea", 0.0) for f in blends),
+            "worstCollision": report["collisions"].get("worst") or {},
+            "worstGouge": float(worst.get("depth", 0.0)), "worst": worst,
+            "gougingOps": [(o["label"], int(o.get("gouges", 0))) for o in report["ops"] if o.get("gouges")],
             "collisions": int(report["collisions"].get("count", 0)),
             "moves": sum(len(o["moves"]) for o in ops), "simSeconds": t_sim,
             "elements": {e["id"]: e for e in report["coverage"]["elements"]}}
@@ -224,13 +237,19 @@ def main():
         sim = [sim_op(op.Label, path_moves(op.Path.Commands), cutter) for op in ops]
         methods.append((name, len(ops), t_ops, op_runs, failed, floor_figures(part.Shape, sim, blank, pockets, cell)))
 
-    sim = []
-    for op in chain_ops:
-        c = cutter_of(op.ToolController)
-        sim.append(sim_op(op.Label, path_moves(op.Path.Commands), c,
-                          float(op.RadialAllowance.Value) if hasattr(op, "RadialAllowance") else 0.0,
-                          float(op.AxialAllowance.Value) if hasattr(op, "AxialAllowance") else 0.0, to_part))
-    chain_fig = floor_figures(part.Shape, sim, blank, pockets, cell)
+    def chain_sim(ops):
+        out = []
+        for op in ops:
+            if not op.Path.Commands:
+                continue
+            out.append(sim_op(op.Label, path_moves(op.Path.Commands), cutter_of(op.ToolController),
+                              _length(op, "RadialAllowance"), _length(op, "AxialAllowance"), to_part))
+        return out
+
+    chain_fig = floor_figures(part.Shape, chain_sim(chain_ops), blank, pockets, cell)
+    # The same floors after every operation of the +Z setup, in chain order (not timed).
+    setup_ops = [op for op in machining_chain.chain_operations(chain_obj) if op.SetupId == sid and op.Active]
+    setup_fig = floor_figures(part.Shape, chain_sim(setup_ops), blank, pockets, cell)
 
     print("  chain operations of those pockets: {} (steps {}){}".format(
         len(chain_ops), ", ".join(sorted({op.Step for op in chain_ops})),
@@ -243,12 +262,13 @@ def main():
     rows = [(n, k, t, fig) for n, k, t, _, _, fig in methods]
     rows.append(("chain: recompute operations", len(chain_ops), t_chain_ops, chain_fig))
     rows.append(("chain: _core.toolpaths", len(inputs), t_chain_core, None))
+    rows.append(("chain, whole +Z setup", len(setup_ops), None, setup_fig))
     for n, k, t, fig in rows:
         if fig is None:
             print("  {:<28} {:>4} {:>9.3f}".format(n, k, t))
             continue
-        print("  {:<28} {:>4} {:>9.3f} {:>8} {:>10.0f} {:>10.0f} {:>6.1f} {:>8.2f} {:>7} {:>9.3f}".format(
-            n, k, t, fig["moves"], fig["area"], fig["left"], 100.0 * fig["left"] / max(fig["area"], 1e-9),
+        print("  {:<28} {:>4} {:>9} {:>8} {:>10.0f} {:>10.0f} {:>6.1f} {:>8.2f} {:>7} {:>9.3f}".format(
+            n, k, "{:.3f}".format(t) if t is not None else "-", fig["moves"], fig["area"], fig["left"], 100.0 * fig["left"] / max(fig["area"], 1e-9),
             fig["maxLeft"], fig["gouges"], fig["worstGouge"]))
     pocket_shape = methods[0]
     print("  Pocket Shape / chain operations: {:.1f}x; Pocket Shape / _core.toolpaths: {:.1f}x".format(
@@ -259,8 +279,22 @@ def main():
     for name, _, _, _, failed, fig in methods:
         if failed:
             print("  {} operations without a path: {}".format(name, ", ".join(failed)))
-    print("  rapid collisions in the simulation: {}".format(
-        ", ".join("{} {}".format(n, fig["collisions"]) for n, _, _, fig in rows if fig is not None)))
+    print("  the pockets' floor fillets (mm2 left >0.2 mm of mm2): {}".format(", ".join(
+        "{} {:.0f} of {:.0f}".format(n.split(":")[0], fig["filletLeft"], fig["filletArea"])
+        for n, _, _, fig in rows if fig is not None)))
+    for n, _, _, fig in rows:
+        if fig is not None and fig["collisions"]:
+            w = fig["worstCollision"]
+            print("  {} rapids through material: {} moves; worst {:.3f} mm in {} move {} at {}".format(
+                n.split(":")[0], fig["collisions"], w.get("depth", 0.0), w.get("op", ""), w.get("move", ""),
+                w.get("position", "")))
+    for n, _, _, fig in rows:
+        if fig is not None and fig["gouges"]:
+            w = fig["worst"]
+            print("  {} gouges: worst {:.3f} mm ({}, face {}) in {} move {} at {}; by operation: {}".format(
+                n.split(":")[0], w.get("depth", 0.0), w.get("kind", ""), w.get("face", ""), w.get("op", ""),
+                w.get("move", ""), w.get("position", ""),
+                ", ".join("{} {}".format(label, k) for label, k in fig["gougingOps"])))
     if os.environ.get("AERONC_BENCH_POCKETS", "0") not in ("", "0"):
         print("  per pocket: floor mm2, left >0.2 mm (mm2), max leftover (mm)")
         for e in pockets:
