@@ -19,7 +19,6 @@ Timings are the best of AERONC_BENCH_REPEAT runs (default 3). AERONC_BENCH_CELL 
 simulation's cell (default 0.5 mm). AERONC_BENCH_POCKETS=1 also prints each pocket's figures.
 """
 import json
-import math
 import os
 import tempfile
 import time
