@@ -94,9 +94,36 @@ def _counts(result):
 
 
 def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,
-        say=print):
+        say=None):
     """Run the main job on a STEP (or BREP) part; returns the report's data (dict).
-    Raises MainJobError naming the stage that failed."""
+    Raises MainJobError naming the stage that failed. say(line) receives the progress lines;
+    by default they go to the terminal while FreeCAD's own output goes to freecad.log."""
+    import FreeCAD
+
+    out = os.path.abspath(out)
+    os.makedirs(out, exist_ok=True)
+    _remove_previous(out)
+    name = os.path.splitext(os.path.basename(part_path))[0]
+    kb_path = os.path.join(out, "knowledge.sqlite")
+    written = ["freecad.log"]
+    log_path = os.path.join(out, "freecad.log")
+    if os.path.exists(log_path):
+        os.unlink(log_path)
+    first = "AeroNC main job: {} ({} on {}, {}) -> {}".format(part_path, material, machine, family, out)
+    (say or print)(first)
+    st = _Stages(say)
+    run_data = {"part": name, "source": os.path.abspath(part_path), "pictures": []}
+    opened = []
+    try:
+        return _stages(st, run_data, opened, part_path, out, name, material, machine, family, cell_size,
+                       kb_path, log_path, written)
+    finally:
+        for doc in opened:  # the job's own document, also when a stage failed
+            FreeCAD.closeDocument(doc.Name)
+
+
+def _stages(st, run_data, opened, part_path, out, name, material, machine, family, cell_size, kb_path, log_path,
+            written):
     import FreeCAD
     import Part
 
@@ -108,26 +135,16 @@ def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integra
     from aeronc.post import machines, nc_post
     from aeronc.post.output import write_atomically
 
-    out = os.path.abspath(out)
-    os.makedirs(out, exist_ok=True)
-    _remove_previous(out)
-    name = os.path.splitext(os.path.basename(part_path))[0]
-    kb_path = os.path.join(out, "knowledge.sqlite")
-    written = ["freecad.log"]
-    log_path = os.path.join(out, "freecad.log")
-    if os.path.exists(log_path):
-        os.unlink(log_path)
-    say("AeroNC main job: {} ({} on {}, {}) -> {}".format(part_path, material, machine, family, out))
-    st = _Stages(say)
-    run_data = {"part": name, "source": os.path.abspath(part_path), "pictures": []}
     with _freecad_output_to(log_path) as terminal:
-        st.say = lambda text: print(text, file=terminal)
+        if st.say is None:
+            st.say = lambda text: print(text, file=terminal)
         with st.stage("read part"):
             try:
                 shape = Part.read(part_path)
             except Exception as e:  # FreeCAD raises its own types for unreadable files
                 raise MainJobError("read part: {}: {}".format(part_path, e)) from None
             doc = FreeCAD.newDocument(name.replace("-", "_").replace(".", "_") or "Part")
+            opened.append(doc)
             part = doc.addObject("Part::Feature", "Part")
             part.Label = name
             part.Shape = shape
@@ -258,7 +275,6 @@ def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integra
         write_atomically(os.path.join(out, MANIFEST), "\n".join(written) + "\n")
         total = sum(t for _, t in st.times)
         st.say("  {:>6.1f} s  total; report: {}".format(total, os.path.join(out, "report.html")))
-    FreeCAD.closeDocument(doc.Name)
     return run_data
 
 
