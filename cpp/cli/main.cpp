@@ -41,6 +41,8 @@
 #include <map>
 #include <sstream>
 #include <algorithm>
+#include <csignal>
+#include <vector>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -50,6 +52,7 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
+    "                  [--time-limit S]\n"
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
     "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
@@ -61,7 +64,8 @@ const char* kUsage =
     "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"
     "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
     "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
-    "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n";
+    "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
+    "  --time-limit S (recognise, select-tools PART): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -437,13 +441,16 @@ int runCommand(const std::string& cmd, int argc, char** argv) {
 // The last line of defence for the commands that read a part: a fault the OCCT handlers cannot
 // turn into an error (one in another thread, one that breaks the handler itself) kills only a
 // child process; this process reports it in one line and exits 1, never with a signal.
-int inChildProcess(const std::function<int()>& command, const std::string& input) {
+// timeLimit > 0: the child is stopped after that many seconds (OCCT's shape healing can loop
+// for good on a damaged file, and takes no request to stop).
+int inChildProcess(const std::function<int()>& command, const std::string& input, unsigned timeLimit) {
     std::cout.flush();
     std::cerr.flush();
     std::fflush(nullptr);
     const pid_t pid = fork();
     if (pid < 0) return command();  // no child to be had: run here
     if (pid == 0) {
+        if (timeLimit > 0) alarm(timeLimit);
         const int code = command();
         std::cout.flush();
         std::cerr.flush();
@@ -458,6 +465,11 @@ int inChildProcess(const std::function<int()>& command, const std::string& input
         }
     if (WIFEXITED(status)) return WEXITSTATUS(status);
     const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    if (sig == SIGALRM) {
+        std::cerr << "aeronc: error: " << input << ": reading or recognising the part took longer than --time-limit "
+                  << timeLimit << " s; the file is probably damaged\n";
+        return 1;
+    }
     std::cerr << "aeronc: error: " << input << ": reading or recognising the part failed with signal " << sig << " ("
               << strsignal(sig) << "); the file is probably damaged\n";
     return 1;
@@ -474,6 +486,23 @@ int main(int argc, char** argv) {
     const std::string cmd = argv[1];
     const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools") && argc > 2 &&
                            std::string(argv[2]) != "--tree";
-    if (readsPart) return inChildProcess([&] { return runCommand(cmd, argc, argv); }, argv[2]);
-    return runCommand(cmd, argc, argv);
+    if (!readsPart) return runCommand(cmd, argc, argv);
+    // --time-limit SECONDS belongs to the child process, not to the command.
+    std::vector<char*> args;
+    unsigned timeLimit = 0;
+    for (int i = 0; i < argc; ++i) {
+        if (std::string(argv[i]) != "--time-limit") {
+            args.push_back(argv[i]);
+            continue;
+        }
+        const std::string v = i + 1 < argc ? argv[++i] : "";
+        if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos || std::stoul(v) == 0) {
+            std::cerr << "aeronc: error: --time-limit wants a whole number of seconds from 1 to 999999\n";
+            return 1;
+        }
+        timeLimit = static_cast<unsigned>(std::stoul(v));
+    }
+    args.push_back(nullptr);
+    const int n = static_cast<int>(args.size()) - 1;
+    return inChildProcess([&] { return runCommand(cmd, n, args.data()); }, argv[2], timeLimit);
 }

@@ -19,7 +19,13 @@ inline void checkNcProgram(const std::string& nc) {
         for (const char c : line)
             if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)
                 finding("a block that is not printable text: " + line);
-        std::istringstream words(line);
+        std::string unquoted;  // names in quotes (T="...", CYCLE800's record) hold no words
+        bool quoted = false;
+        for (const char c : line) {
+            if (c == '"') quoted = !quoted;
+            else if (!quoted) unquoted += c;
+        }
+        std::istringstream words(unquoted);
         std::string w, previous;
         while (words >> w) {
             const char a = w[0];

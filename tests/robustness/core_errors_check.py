@@ -61,6 +61,37 @@ class CoreErrors(unittest.TestCase):
             _core.check_machine(json.dumps(machine), "m.json")
         self.assertIn("\"sinumerik\" must be an object", str(cm.exception))
 
+    def test_a_part_that_makes_occt_fault_raises_recognition_error(self):
+        # A damaged copy of a NIST part on which OpenCASCADE's STEP reader once faulted
+        # (step_mutation_check.py, seed 15, the first copy). In a child: a fault would kill it.
+        nist = os.environ.get("AERONC_NIST_DIR", "")
+        part = os.path.join(nist, "nist_ftc_06_asme1_rd.stp")
+        if not os.path.exists(part):
+            self.skipTest("NIST parts not found (AERONC_NIST_DIR)")
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import step_mutation_check
+        import random
+        with open(part, "rb") as f:
+            kind, damaged = step_mutation_check.mutate(f.read(), random.Random("15:nist_ftc_06_asme1_rd.stp"))
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "damaged.stp")
+            with open(path, "wb") as f:
+                f.write(damaged)
+            code = textwrap.dedent("""
+                import sys
+                sys.path.insert(0, %r)
+                from aeronc import _core
+                try:
+                    _core.recognise_file(%r)
+                    print("recognised")
+                except _core.RecognitionError as e:
+                    print("RecognitionError", e)
+                """) % (MOD, path)
+            r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+        self.assertEqual(r.returncode, 0, "%s copy: %s" % (kind, r.stderr[-500:]))
+        last = r.stdout.strip().splitlines()[-1] if r.stdout.strip() else ""  # OCCT prints its own notes first
+        self.assertTrue(last.startswith(("RecognitionError", "recognised")), r.stdout)
+
     def test_deeply_nested_json_is_an_error_not_a_crash(self):
         # In a child: a stack overflow would take the interpreter with it.
         code = textwrap.dedent("""

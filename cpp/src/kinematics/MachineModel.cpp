@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -147,7 +148,12 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
             if (k != "swivelDataRecord" && k != "directionReference") r.fail("unknown entry sinumerik." + k);
         if (s.contains("swivelDataRecord")) {
             m.swivelDataRecord = r.text(s["swivelDataRecord"], "sinumerik.swivelDataRecord");
-            if (m.swivelDataRecord.empty()) r.fail("sinumerik.swivelDataRecord must not be empty");
+            // Written inside CYCLE800("..."): a quote or a line break there would end the call.
+            const std::string& n = m.swivelDataRecord;
+            const bool name = !n.empty() && n.size() <= 32 && std::all_of(n.begin(), n.end(), [](char c) {
+                return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            });
+            if (!name) r.fail("sinumerik.swivelDataRecord must be a name of 1 to 32 letters, digits or '_'");
         }
         if (s.contains("directionReference")) {
             const auto ref = r.text(s["directionReference"], "sinumerik.directionReference");

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <regex>
 
 namespace aeronc::post {
 
@@ -228,6 +229,9 @@ private:
         } else if (u.rfind("WORK OFFSET ", 0) == 0) {
             ClRecord r = base(ClKind::WorkOffset, s.line);
             r.text = upper(trim(s.rest.substr(12)));
+            // The dialects write it as a block of its own: nothing but the offset's G code.
+            static const std::regex offset("G5[4-9](\\.[1-9])?");
+            if (!std::regex_match(r.text, offset)) fail(s.line, "WORK OFFSET names G54 to G59.9, not '" + r.text + "'");
             prog_.records.push_back(r);
         } else {
             ClRecord r = base(ClKind::Comment, s.line);

@@ -62,6 +62,10 @@ private:
     }
 
     void workOffset(const ClRecord& r) override {
+        static const char* allowed[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+        bool ok = false;
+        for (auto* a : allowed) ok |= r.text == a;
+        if (!ok) throw inputError("work offset " + r.text + " is not one of LinuxCNC's G54 to G59.3");
         w_.line(r.text);
         forgetModal();
     }

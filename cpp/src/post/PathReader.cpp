@@ -272,7 +272,8 @@ private:
                 default:
                     if (code10 >= 540 && code10 <= 599) {
                         ClRecord r = base(ClKind::WorkOffset, op_, number);
-                        r.text = std::string(c.text.substr(0, c.text.find(' ')));
+                        // Written from the code, not copied from the line: "G54", "G59.1".
+                        r.text = "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
                         prog_.records.push_back(r);
                         return;
                     }

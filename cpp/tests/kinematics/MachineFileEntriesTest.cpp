@@ -40,6 +40,10 @@ TEST(MachineFileEntries, ASinumerikEntryThatIsNoObjectIsRefused) {
         expectNamed(std::string(R"(,"sinumerik":)") + s, "\"sinumerik\"");
     expectNamed(R"(,"sinumerik":{"swivelDataRecord":5})", "sinumerik.swivelDataRecord");
     expectNamed(R"(,"sinumerik":{"swivelDataRecord":""})", "sinumerik.swivelDataRecord");
+    // Found by fuzzing: the name is written inside CYCLE800("..."); a quote or a line break
+    // there wrote words of its own into the program.
+    for (const char* name : {R"x("TC1\nM30")x", R"x("TC1\",0,57)")x", R"x(" T1C")x", R"x("TC1;")x"})
+        expectNamed(std::string(R"(,"sinumerik":{"swivelDataRecord":)") + name + "}", "sinumerik.swivelDataRecord");
     expectNamed(R"(,"sinumerik":{"directionReference":["A"]})", "sinumerik.directionReference");
     expectNamed(R"(,"sinumerik":{"swivelRecord":"TC1"})", "sinumerik.swivelRecord");
     EXPECT_EQ(errorFor(R"(,"sinumerik":{"swivelDataRecord":"HEAD2","directionReference":"C"})"), "no error");

@@ -173,3 +173,21 @@ TEST(NcWordRange, AppendNumberRefusesWhatItCannotWrite) {
         EXPECT_EQ(out, "X");
     }
 }
+
+TEST(NcWordRange, AWorkOffsetIsOneGCodeNeverABlockOfOtherWords) {
+    // Found by fuzzing: the APT text after WORK OFFSET was written to the LinuxCNC program as
+    // a block of its own, whatever it held.
+    for (const std::string bad : {"G54 G0 X0", "G,120\x14", "M30", "G53", "G54.1.1"}) {
+        const std::string text = "LOADTL/1\nPPRINT/WORK OFFSET " + bad + "\nRAPID\nGOTO/0,0,50\nFINI\n";
+        for (const Dialect d : kDialects) {
+            const std::string e = inputErrorOf([&] { postAptText(text, d); });
+            EXPECT_NE(e.find("APT line 2: WORK OFFSET"), std::string::npos) << e;
+        }
+    }
+    EXPECT_NE(postAptText("LOADTL/1\nPPRINT/WORK OFFSET g59.1\nRAPID\nGOTO/0,0,50\nFINI\n", Dialect::LinuxCnc).find("\nG59.1\n"),
+              std::string::npos);
+    // From FreeCAD's Path: the offset is written from its code, not copied from the line.
+    const std::string nc = postFreeCad(job("G055 X1\nG0 X0 Y0 Z50\n"), machine("AC-5AX"), options(Dialect::LinuxCnc), {}).text;
+    EXPECT_NE(nc.find("\nG55\n"), std::string::npos) << nc;
+    EXPECT_EQ(nc.find("X1\n"), std::string::npos) << nc;
+}
