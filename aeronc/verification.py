@@ -145,8 +145,15 @@ def plunges_marked(moves):
 
 def finished_faces(chain, result):
     """(faces the plan finishes, {element label: its finished faces}): floors and walls of the
-    elements with an enabled finishing unit (webs, walls, flanges, corners)."""
+    elements with an enabled finishing unit (webs, walls, flanges, corners). The faces of an
+    element the chain lists as not (completely) machined are left out, also where another
+    element shares them: the plan does not finish them, and the report says why."""
     elements = {e["id"]: e for e in result.get("elements", [])}
+    not_finished = set()
+    for gap in chain.get("unmachined", []):
+        e = elements.get(gap.get("element"))
+        if e is not None:
+            not_finished.update(_element_faces(e))
     finished = {}
     for u in chain.get("units", []):
         if not u.get("enabled", True) or u.get("step") not in _FINISHING_STEPS:
@@ -161,8 +168,16 @@ def finished_faces(chain, result):
             faces.update(e.get("contourFaces", []))
             for island in e.get("islandFaces", []):
                 faces.update(island)
+    finished = {k: v - not_finished for k, v in finished.items()}
     faces = sorted(set().union(*finished.values())) if finished else []
     return faces, {k: sorted(v) for k, v in finished.items() if v}
+
+
+def _element_faces(e):
+    faces = set(e.get("floorFaces", [])) | set(e.get("contourFaces", []))
+    for island in e.get("islandFaces", []):
+        faces.update(island)
+    return faces
 
 
 def simulate(part_shape, ops, blank, finished, elements, cell_size=0.5, options=None):

@@ -41,9 +41,13 @@ class Parameter:
 
 
 def reference_top(unit):
-    """The top the relative clearance is measured from: the unit's, or its highest hole's."""
+    """The top the relative clearance is measured from: the unit's, or its highest hole's, or the
+    material earlier units leave standing over it (stockTop) when that is higher."""
     tops = [float(h["top"]) for h in unit.get("holes") or [] if "top" in h]
-    return max(tops) if tops else float(unit.get("top", 0.0))
+    top = max(tops) if tops else float(unit.get("top", 0.0))
+    if unit.get("stockTop") is not None:
+        top = max(top, float(unit["stockTop"]))
+    return top
 
 
 class SafeHeight(Parameter):
@@ -183,6 +187,8 @@ class MachiningOperation(BaseProxy):
         unit = unit_of(obj)
         data = {"operation": unit["operation"], "name": obj.Label}
         data.update({k: unit[k] for k in self.GEOMETRY_KEYS if unit.get(k) is not None})
+        if unit.get("stockTop") is not None:
+            data["stockTop"] = unit["stockTop"]
         for p in self.PARAMETERS:
             key, value = p.input_value(obj, unit)
             data[key] = value

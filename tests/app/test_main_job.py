@@ -53,6 +53,10 @@ class MainJobTest(unittest.TestCase):
         self.assertEqual(len(report["ops"]), len([u for u in chain["units"] if u.get("enabled", True)]))
         self.assertGreater(report["stock"]["blankVolume"], report["stock"]["finalVolume"])
         self.assertTrue(all(op["removedVolume"] >= 0 for op in report["ops"]))
+        # The program neither gouges nor rapids through material, and finishes what the plan finishes.
+        self.assertEqual(report["gouges"]["count"], 0, report["gouges"].get("worst"))
+        self.assertEqual(report["collisions"]["count"], 0, report["collisions"].get("worst"))
+        self.assertEqual([v["check"] for v in run["verification"] if not v["ok"]], [])
         # One progress line per stage, then the total.
         self.assertTrue(lines[0].startswith("AeroNC main job"))
         self.assertIn("total", lines[-1])

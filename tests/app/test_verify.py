@@ -94,5 +94,34 @@ class VerifyTest(unittest.TestCase):
             _core.simulate("not a shape", json.dumps({"ops": []}), "")
 
 
+
+class FinishedFacesTest(unittest.TestCase):
+    """What the coverage check holds the plan to: the faces its finishing units finish, less
+    those of elements the chain lists as not machined."""
+
+    RESULT = {"elements": [
+        {"id": 1, "floorFaces": [10], "contourFaces": [11, 12], "islandFaces": [[13]]},
+        {"id": 2, "floorFaces": [20], "contourFaces": [12, 21], "islandFaces": []},
+    ]}
+
+    def chain(self, unmachined):
+        units = [{"element": 1, "step": "w"}, {"element": 1, "step": "fs"}, {"element": 2, "step": "w"},
+                 {"element": 2, "step": "r"}, {"element": 1, "step": "fs", "enabled": False}]
+        return {"units": units, "unmachined": unmachined}
+
+    def test_floors_and_walls_of_the_finishing_units(self):
+        from aeronc import verification
+        faces, elements = verification.finished_faces(self.chain([]), self.RESULT)
+        self.assertEqual(faces, [10, 11, 12, 13, 20])
+        self.assertEqual(elements, {"E1": [10, 11, 12, 13], "E2": [20]})
+
+    def test_an_unmachined_element_takes_its_faces_out_even_where_shared(self):
+        from aeronc import verification
+        faces, elements = verification.finished_faces(
+            self.chain([{"element": 2, "reason": "no tool", "step": "fs"}]), self.RESULT)
+        self.assertEqual(faces, [10, 11, 13])  # 12 is element 2's wall too
+        self.assertEqual(elements, {"E1": [10, 11, 13]})
+
+
 if __name__ == "__main__":
     unittest.main()

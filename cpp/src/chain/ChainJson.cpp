@@ -68,6 +68,7 @@ json unitJson(const MachiningUnit& u) {
               {"feedMmMin", num(u.setting.feedMmMin)},
               {"plungeFeedMmMin", num(u.setting.plungeFeedMmMin)}}},
             {"top", u.top},
+            {"stockTop", u.stockTop ? json(*u.stockTop) : json(nullptr)},
             {"bottom", u.bottom},
             {"contour", loop(u.contour)},
             {"islands", islands},
@@ -202,6 +203,7 @@ MachiningUnit readUnit(const In& in) {
     u.setting = {s["spindleRpm"].numberOr(NAN), s["feedMmMin"].numberOr(NAN), s["plungeFeedMmMin"].numberOr(NAN)};
     u.top = in["top"].number();
     u.bottom = in["bottom"].number();
+    if (in.has("stockTop")) u.stockTop = in["stockTop"].number();
     u.contour = readLoop(in["contour"]);
     const In islands = in["islands"];
     for (std::size_t i = 0; i < islands.size(); ++i) u.islands.push_back(readLoop(islands[i]));

@@ -1,5 +1,7 @@
 #include <aeronc/chain/ConstructionRules.h>
+#include <aeronc/chain/Fusing.h>
 #include <aeronc/chain/Sequencing.h>
+#include <aeronc/chain/StockTops.h>
 #include <aeronc/core/Error.h>
 
 #include <algorithm>
@@ -282,6 +284,7 @@ void arrange(MachiningChain& c) {
         const auto n = numbers.find(t.id);
         t.number = n == numbers.end() ? 0 : n->second;
     }
+    setStockTops(c);
 }
 
 MachiningChain checkChain(MachiningChain c) {
@@ -318,6 +321,9 @@ MachiningChain checkChain(MachiningChain c) {
             const auto r = t->settings.find("roughing");
             u.stepOver = r != t->settings.end() ? r->second.ae : 0.5 * t->diameter;
         }
+        // A floor pass, or a rest unit down to the floor's final height, leaves the floor's scallop.
+        if (u.step == StepCode::Web || (u.operation == Operation::Rest && u.axialAllowance <= 1e-9))
+            u.stepOver = std::min(u.stepOver, floorStepOver(t->diameter, t->cornerRadius, ChainOptions{}.floorScallop));
     }
     // A rest unit follows the last pocket unit that cleared its element's full height (a floor
     // pass leaves the walls as they were).

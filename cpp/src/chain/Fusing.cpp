@@ -600,6 +600,10 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             }
             MachiningUnit& u = addUnit(e, step, Operation::Rest, c, top, bottom);
             u.previousCutter = before;
+            // Where it reaches the floor's final height it finishes the floor in the corners: no
+            // wider a step-over than leaves the floor's scallop.
+            if (u.axialAllowance <= 1e-9 && e.type != ElementType::Opening)
+                u.stepOver = std::min(u.stepOver, floorStepOver(u.cutter.diameter, u.cutter.cornerRadius, opt_.floorScallop));
             u.eta = eta;
             u.note = "rest: " + fmt(rest) + " mm2 in corners and passages the " + fmt(before.diameter) +
                      " mm tool cannot reach";

@@ -25,11 +25,13 @@ Toolpath drilling(const std::vector<Hole>& holes, const Cutter& drill, const Dri
     requireFinite(p.breakThrough, "breakThrough");
     if (p.safeHeight) requireFinite(*p.safeHeight, "safeHeight");
     if (p.retractHeight) requireFinite(*p.retractHeight, "retractHeight");
+    if (p.stockTop) requireFinite(*p.stockTop, "stockTop");
     if (!(p.clearance > 0)) throw inputError("clearance must be positive");
     if (p.peck < 0 || p.dwell < 0 || p.breakThrough < 0) throw inputError("peck, dwell and breakThrough must be at least 0");
     if (!(p.pointAngleDeg > 0 && p.pointAngleDeg < 180)) throw inputError("pointAngle must lie in (0, 180) degrees");
     double top = holes.front().top;
     for (const Hole& h : holes) top = std::max(top, h.top);
+    if (p.stockTop) top = std::max(top, *p.stockTop);
     const double plane = std::max(top + p.clearance, p.retractHeight ? *p.retractHeight : top);
     const double safe = p.safeHeight ? *p.safeHeight : plane;
     if (safe < plane - 1e-9) throw inputError("safeHeight lies below the plane of the moves between holes");
@@ -40,7 +42,7 @@ Toolpath drilling(const std::vector<Hole>& holes, const Cutter& drill, const Dri
     for (std::size_t i = 0; i < holes.size(); ++i) {
         const Hole& h = holes[i];
         const std::string what = "hole " + std::to_string(i + 1);
-        const double r = p.retractHeight ? *p.retractHeight : h.top + p.clearance;
+        const double r = p.retractHeight ? *p.retractHeight : std::max(h.top, p.stockTop.value_or(h.top)) + p.clearance;
         if (r < h.top) throw inputError(what + ": retractHeight lies below the hole's top");
         const double z = h.through ? h.bottom - tip - p.breakThrough : h.bottom;
         if (p.peck > 0 && (r - z) / p.peck > 1e5) throw inputError(what + ": more than 10^5 pecks");

@@ -41,7 +41,7 @@ Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const
         if (!(floor < h.top)) throw inputError(what + ": the axial allowance leaves nothing to cut");
         // Pitch: at most the step-down, and no steeper than the ramp angle on the helix.
         const double pitch = std::min(p.stepDown, 2 * M_PI * rough * tanAngle / chordFactor(rough, tol));
-        const double start = h.top + approach;
+        const double start = entryTop(p, h.top) + approach;
         const double turns = (start - floor) / pitch;
         if (turns > 1e5) throw inputError(what + ": the helix would take more than 10^5 turns");
         const double a0 = M_PI;  // start on the -u side

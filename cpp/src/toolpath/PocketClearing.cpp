@@ -96,11 +96,12 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     Toolpath tp;
     MoveWriter w(tp);
     w.rapid(plan.chains.front().path.front()[0], plan.chains.front().path.front()[1], hs.safe);
-    clearingMoves(w, plan, levels, unit.top, es);
+    const double above = entryTop(p, unit.top);
+    clearingMoves(w, plan, levels, above, es);
     if (p.finishingPass) {
         const double finishFillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.finishingAllowance);
         const clip::Paths finish = clip::offset(area.region, -(R + p.finishingAllowance + finishFillet), tol);
-        finishingMoves(w, finish, centres, levels, unit.top, es);
+        finishingMoves(w, finish, centres, levels, above, es);
     }
     w.retract(hs.safe);
     return tp;

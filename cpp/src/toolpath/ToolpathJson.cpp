@@ -19,7 +19,7 @@ using json = nlohmann::json;
 
 // The keys each operation takes (the milling ones are accepted, and unused, by drilling too);
 // anything else is a mistake worth naming.
-const std::set<std::string> kCommon{"operation", "name", "cutter", "top", "bottom", "safeHeight", "clearance",
+const std::set<std::string> kCommon{"operation", "name", "cutter", "top", "bottom", "safeHeight", "stockTop", "clearance",
                                     "stepDown", "stepOver", "radialAllowance", "axialAllowance", "rampAngle",
                                     "chordTolerance", "climb"};
 
@@ -62,6 +62,7 @@ void getOptional(const json& j, const char* key, std::optional<double>& v) {
 
 void milling(const json& j, CutParameters& p) {
     getOptional(j, "safeHeight", p.safeHeight);
+    getOptional(j, "stockTop", p.stockTop);
     getOptional(j, "stepOver", p.stepOver);
     get(j, "clearance", p.clearance);
     get(j, "stepDown", p.stepDown);
@@ -170,6 +171,7 @@ Toolpath compute(const json& j) {
     }
     DrillParameters p;
     getOptional(j, "safeHeight", p.safeHeight);
+    getOptional(j, "stockTop", p.stockTop);
     getOptional(j, "retractHeight", p.retractHeight);
     get(j, "clearance", p.clearance);
     get(j, "peck", p.peck);

@@ -113,6 +113,7 @@ double checkMilling(const CutParameters& p, const Cutter& cutter, double top, do
     requireFinite(p.rampAngleDeg, "rampAngle");
     requireFinite(p.chordTolerance, "chordTolerance");
     if (p.safeHeight) requireFinite(*p.safeHeight, "safeHeight");
+    if (p.stockTop) requireFinite(*p.stockTop, "stockTop");
     if (!(bottom < top)) throw inputError("bottom (" + fmt(bottom) + ") must lie below top (" + fmt(top) + ")");
     if (!(p.clearance > 0)) throw inputError("clearance must be positive");
     if (!(p.stepDown > 0)) throw inputError("stepDown must be positive");
@@ -127,14 +128,17 @@ double checkMilling(const CutParameters& p, const Cutter& cutter, double top, do
     if (!(s > 0) || s > cutter.diameter + 1e-9)
         throw inputError("stepOver (" + fmt(s) + " mm) must be positive and at most the cutter diameter (" +
                          fmt(cutter.diameter) + " mm)");
-    if (p.safeHeight && *p.safeHeight < top + p.clearance - 1e-9)
-        throw inputError("safeHeight (" + fmt(*p.safeHeight) + ") lies below top + clearance (" +
-                         fmt(top + p.clearance) + ")");
+    const double above = entryTop(p, top);
+    if (p.safeHeight && *p.safeHeight < above + p.clearance - 1e-9)
+        throw inputError("safeHeight (" + fmt(*p.safeHeight) + ") lies below " + (above > top ? "stockTop" : "top") +
+                         " + clearance (" + fmt(above + p.clearance) + ")");
     return s;
 }
 
+double entryTop(const CutParameters& p, double top) { return p.stockTop ? std::max(top, *p.stockTop) : top; }
+
 Heights heightsOf(const CutParameters& p, double top) {
-    const double c = top + p.clearance;
+    const double c = entryTop(p, top) + p.clearance;
     return {c, p.safeHeight ? *p.safeHeight : c};
 }
 

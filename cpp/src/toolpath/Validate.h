@@ -25,5 +25,7 @@ struct Heights {
     double safe;       // safeHeight, or the clearance plane
 };
 Heights heightsOf(const CutParameters& p, double top);
+// Where the material may start over the unit: top, or stockTop when that is higher.
+double entryTop(const CutParameters& p, double top);
 
 }  // namespace aeronc::toolpath

@@ -71,8 +71,9 @@ struct Run {
 };
 
 // Gouge: part material above the grown cutter's envelope, lowered by the axial allowance. The
-// depth is the smaller of the vertical and the horizontal overlap. Fills e and returns true
-// beyond the tolerance.
+// depth is the smaller of the overlap along the part's normal (the vertical overlap times |nz|
+// of the face the dexel ends on: on a slope the vertical overlap overstates how deep the cutter
+// went) and the horizontal overlap. Fills e and returns true beyond the tolerance.
 bool gougeAt(const PartDexels& part, std::size_t c, const SweptSegment& sw, const Cutter& grown, double axial,
              int s, double tol, double x, double y, double d, CellHit& e) {
     if (part.empty(c)) return false;
@@ -87,7 +88,7 @@ bool gougeAt(const PartDexels& part, std::size_t c, const SweptSegment& sw, cons
         for (const PartSpan* p = part.end(c); p != part.begin(c);) {
             --p;
             if (p->z1 <= hg + tol) break;
-            const double down = p->z1 - hg, dp = std::min(down, sideways);
+            const double down = p->z1 - hg, dp = std::min(down * p->nz1, sideways);
             if (dp <= depth) continue;
             depth = dp, wall = sideways < down;
             contact = wall ? std::max(hg, p->z0) : p->z1, face = wall ? 0 : p->face1;
@@ -95,7 +96,7 @@ bool gougeAt(const PartDexels& part, std::size_t c, const SweptSegment& sw, cons
     } else {
         for (const PartSpan* p = part.begin(c); p != part.end(c); ++p) {
             if (-p->z0 <= hg + tol) break;
-            const double down = -p->z0 - hg, dp = std::min(down, sideways);
+            const double down = -p->z0 - hg, dp = std::min(down * p->nz0, sideways);
             if (dp <= depth) continue;
             depth = dp, wall = sideways < down;
             contact = wall ? std::min(-hg, p->z1) : p->z0, face = wall ? 0 : p->face0;

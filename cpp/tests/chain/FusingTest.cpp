@@ -5,6 +5,7 @@
 #include "Fixtures.h"
 
 #include <aeronc/chain/ChainJson.h>
+#include <aeronc/chain/ConstructionRules.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/recognition/Recogniser.h>
@@ -232,6 +233,22 @@ TEST(Fusing, SamplePanel) {
     // under 0.01 mm: checked against the scallop of two corner arcs side by side.
     std::map<int, const recognition::DomainElement*> byId;
     for (const auto& e : tree.elements) byId[e.id] = &e;
+    auto scallopOf = [](const MachiningUnit& u) {
+        const double R = u.cutter.diameter / 2, r = u.cutter.cornerRadius;
+        const double gap = u.stepOver - 2 * (R - r);  // where the corners of two passes overlap
+        return gap <= 0 ? 0.0 : r - std::sqrt(std::max(0.0, r * r - gap * gap / 4));
+    };
+    // Rest units that go down to the floor's final height finish the floor in the corners: the
+    // same scallop, also once the chain has been checked again (as after an edit).
+    const MachiningChain rechecked = checkChain(c);
+    int floorRests = 0;
+    for (const MachiningChain* chain : {&c, &rechecked})
+        for (const MachiningUnit& u : chain->units) {
+            if (u.operation != Operation::Rest || u.axialAllowance > 1e-9) continue;
+            ++floorRests;
+            EXPECT_LE(scallopOf(u), 0.01 + 1e-9) << "rest unit " << u.id;
+        }
+    EXPECT_GT(floorRests, 0);
     int webs = 0;
     for (const MachiningUnit& u : c.units) {
         if (u.step != StepCode::Web) continue;

@@ -160,3 +160,21 @@ TEST(Drilling, BadInputIsAClearError) {
     p = {}, p.dwell = NAN;
     EXPECT_NE(err(one, p).find("dwell"), std::string::npos);
 }
+
+// An uncut counterbore above the hole (stockTop): the R plane clears it.
+TEST(Drilling, StockTopRaisesTheRPlane) {
+    DrillParameters p;
+    p.clearance = 3;
+    p.stockTop = 6;
+    const Toolpath t = drilling({{{0, 0}, 6.6, 0, -12, true}, {{20, 0}, 6.6, 8, -12, true}}, {6.6, 0}, p);
+    std::vector<double> r;
+    double lowestRapid = 1e9;
+    for (const Move& m : t.moves) {
+        if (m.kind == Move::Kind::Drill) r.push_back(m.r);
+        if (m.kind == Move::Kind::Rapid) lowestRapid = std::min(lowestRapid, m.h);
+    }
+    ASSERT_EQ(r.size(), 2u);
+    EXPECT_DOUBLE_EQ(r[0], 9);   // stockTop + clearance, not the hole's top + clearance (3)
+    EXPECT_DOUBLE_EQ(r[1], 11);  // a hole whose top is higher keeps it
+    EXPECT_GE(lowestRapid, 11 - 1e-9);
+}

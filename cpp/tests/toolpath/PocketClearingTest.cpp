@@ -364,3 +364,35 @@ TEST(PocketClearing, BadInputIsAClearError) {
     island.islands = {rectangle(-1, -1, 41, 41)};
     EXPECT_NE(err(island, c, p).find("islands cover"), std::string::npos);
 }
+
+// Material standing above the unit's top (stockTop): no rapid goes below it, the first level is
+// entered from just above it at feed, the rapids between cuts clear it; the levels stay the unit's.
+TEST(PocketClearing, StockTopIsClearedByEveryRapidAndEnteredAtFeed) {
+    const Loop contour = roundedRectangle(0, 0, 100, 70, 6);
+    const std::vector<Loop> islands{circle({30, 35}, 9)};
+    PocketUnit u{contour, islands, {}, 0, -8};
+    PocketParameters p = params(5);
+    const Toolpath plain = pocketClearing(u, {10, 0}, p);
+    p.stockTop = 6;
+    const Toolpath t = pocketClearing(u, {10, 0}, p);
+    double lowestRapid = 1e9, plainLowestRapid = 1e9, highestFeed = -1e9, lowest = 1e9;
+    for (const Move& m : plain.moves)
+        if (m.kind == Move::Kind::Rapid) plainLowestRapid = std::min(plainLowestRapid, m.h);
+    // A rapid goes below stockTop + approach only down to just above a level this unit has cut.
+    for (const Move& m : t.moves) {
+        if (m.kind == Move::Kind::Rapid) {
+            if (m.h < 6 + 1 - 1e-9) EXPECT_GE(m.h, lowest + 1 - 1e-9) << m.u << " " << m.v;
+            lowestRapid = std::min(lowestRapid, m.h);
+        } else {
+            highestFeed = std::max(highestFeed, m.h), lowest = std::min(lowest, m.h);
+        }
+    }
+    EXPECT_LT(plainLowestRapid, 6);  // without it the tool drops to the unit's top
+    EXPECT_LT(lowestRapid, 6);       // the deeper levels are entered from the one above
+    EXPECT_GT(highestFeed, 6);             // fed down through what may stand there
+    EXPECT_DOUBLE_EQ(lowest, -8);
+    EXPECT_DOUBLE_EQ(t.moves.back().h, 6 + p.clearance);
+    // A safe height below stockTop + clearance is refused.
+    p.safeHeight = 5;
+    EXPECT_NE(inputErrorOf([&] { pocketClearing(u, {10, 0}, p); }).find("stockTop"), std::string::npos);
+}

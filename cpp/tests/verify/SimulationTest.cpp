@@ -261,3 +261,58 @@ TEST(Simulation, DrillCycleCutsTheHoleAndRetracts) {
     EXPECT_NEAR(r.operations[0].removedVolume, cells * g.cellArea() * 8, 1e-6);
     EXPECT_NEAR(r.operations[0].removedVolume, 2 * M_PI * 9 * 8, 0.05 * 2 * M_PI * 9 * 8);
 }
+
+namespace {
+
+// A wedge 20 mm long, 40 wide, whose top rises at 45 degrees from z = 0 at x = 0 to z = 20 at
+// x = 20. Faces: 1 slope, 2 bottom, 3 the wall at x = 20, 4 and 5 the ends.
+TriangleMesh wedge() {
+    TriangleMesh m;
+    const int a = m.addVertex(0, 0, 0), b = m.addVertex(20, 0, 0), c = m.addVertex(20, 40, 0),
+              d = m.addVertex(0, 40, 0), e = m.addVertex(20, 0, 20), f = m.addVertex(20, 40, 20);
+    m.addTriangle(a, e, f, 1), m.addTriangle(a, f, d, 1);
+    m.addTriangle(a, c, b, 2), m.addTriangle(a, d, c, 2);
+    m.addTriangle(b, c, f, 3), m.addTriangle(b, f, e, 3);
+    m.addTriangle(a, b, e, 4), m.addTriangle(d, f, c, 5);
+    return m;
+}
+
+// A ball of radius 3 fed along the slope at `clearance` from it, measured along its normal.
+SimulationReport ballAlongSlope(double clearance) {
+    const double R = 3, s = std::sqrt(0.5);
+    // Ball centre on the line x = 10 - (R + clearance) s, z = 10 + (R + clearance) s: the tip is R below it.
+    const double x = 10 - (R + clearance) * s, z = 10 + (R + clearance) * s - R;
+    Operation op;
+    op.label = "slope";
+    op.cutter = Cutter::fromDiameter(2 * R, R);
+    op.moves = {move(MoveKind::Rapid, x, 5, 30), move(MoveKind::Feed, x, 5, z), move(MoveKind::Feed, x, 35, z),
+                move(MoveKind::Rapid, x, 35, 30)};
+    Program p;
+    p.cellSize = 0.25;
+    p.hasBlank = true;
+    p.blank = {0, 0, 0, 20, 40, 20};
+    p.operations = {op};
+    p.finishedFaces = {1};
+    p.elements = {{"slope", {1}}};
+    return simulate(wedge(), p);
+}
+
+}  // namespace
+
+// On a slope the cutter's depth is measured along the part's normal, not vertically: 0.05 into
+// a 45 degree face is 0.05 deep (0.071 vertically), and 0.008 is within the tolerance (0.011
+// vertically would not be).
+TEST(Simulation, GougeDepthOnASlopeIsAlongItsNormal) {
+    const SimulationReport deep = ballAlongSlope(-0.05);
+    ASSERT_TRUE(deep.gouges.worst.has_value());
+    EXPECT_FALSE(deep.gouges.worst->wall);
+    EXPECT_EQ(deep.gouges.worst->face, 1);
+    EXPECT_NEAR(deep.gouges.worst->depth, 0.05, 0.005);
+
+    const SimulationReport shallow = ballAlongSlope(-0.008);
+    EXPECT_FALSE(shallow.gouges.worst.has_value()) << shallow.gouges.worst->depth;
+    EXPECT_EQ(shallow.gouges.moves, 0u);
+
+    const SimulationReport clear = ballAlongSlope(0.1);
+    EXPECT_FALSE(clear.gouges.worst.has_value());
+}

@@ -51,6 +51,7 @@ struct MachiningUnit {
     std::optional<Cutter> previousCutter;  // rest: the cutter that went before
     Setting setting;
     double top = 0, bottom = 0;  // heights along w
+    std::optional<double> stockTop;  // the material may stand this high over the unit (StockTops.h)
     Loop contour;                // drive loop at the floor (counter-clockwise)
     std::vector<Loop> islands;   // island loops (clockwise)
     std::vector<std::array<Point2, 2>> openEdges;  // stretches of the contour open to the blank

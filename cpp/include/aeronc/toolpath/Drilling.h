@@ -6,6 +6,9 @@ namespace aeronc::toolpath {
 
 struct DrillParameters {
     std::optional<double> safeHeight;     // absolute h where the unit starts and ends
+    // The highest the material may stand over the holes when they are drilled (an uncut
+    // counterbore above them): the R plane and the moves between holes clear it.
+    std::optional<double> stockTop;
     double clearance = 2;                 // above the highest top: the plane of the moves between holes
     std::optional<double> retractHeight;  // absolute R plane; each hole's top + clearance if unset
     double peck = 0;                      // mm per peck, 0: no pecking

@@ -39,13 +39,19 @@ struct Cutter {
 // What the milling operations share. Heights are in the setup frame.
 struct CutParameters {
     std::optional<double> safeHeight;  // absolute h where the unit starts and ends; top + clearance if unset
-    double clearance = 2;              // above top: the plane of the rapids between cuts
+    // The highest the material may stand over the unit when it runs, when above top (what earlier
+    // units leave along walls that rise above the unit's top, an uncut parent): the rapids
+    // between cuts clear it and the first level is entered from it, at feed.
+    std::optional<double> stockTop;
+    double clearance = 2;              // above top (or stockTop): the plane of the rapids between cuts
     double stepDown = 4;               // mm per level, at most
     std::optional<double> stepOver;    // mm between neighbouring passes, at most the diameter; D/2 if unset
     double radialAllowance = 0;        // left on the walls
     double axialAllowance = 0;         // left on the floor
     double rampAngleDeg = 3;           // descent of the helical and linear ramps
-    double chordTolerance = 0.01;      // arcs written as polylines stray from the arc by at most this
+    // Arcs written as polylines stray from the arc by at most this, towards its centre: half the
+    // verification's gouge tolerance, so that a path tangent to a fillet stays within it.
+    double chordTolerance = 0.005;
     bool climb = true;                 // climb milling for a clockwise (M3) spindle
 };
 

@@ -1,0 +1,46 @@
+#include <aeronc/chain/StockTops.h>
+
+#include <algorithm>
+#include <map>
+
+namespace aeronc::chain {
+
+namespace {
+
+// The steps that clear an element's whole region down to their bottom (plus the axial allowance).
+bool clears(StepCode s) { return s == StepCode::Rough || s == StepCode::Web || s == StepCode::HoleMill; }
+
+}  // namespace
+
+void setStockTops(MachiningChain& chain) {
+    // Per element, the enabled clearing units in order: (order, the height they leave).
+    std::map<int, std::vector<std::pair<int, double>>> cleared;
+    for (const MachiningUnit& u : chain.units)
+        if (u.enabled && clears(u.step)) cleared[u.element].push_back({u.order, u.bottom + u.axialAllowance});
+
+    // What stands over an ancestor's region before unit `order` runs: its top, or the lowest
+    // height its clearing units that ran before left.
+    auto standing = [&](const ChainElement& a, int order) {
+        double h = a.top;
+        const auto it = cleared.find(a.id);
+        if (it != cleared.end())
+            for (const auto& [o, left] : it->second)
+                if (o < order) h = std::min(h, left);
+        return h;
+    };
+
+    for (MachiningUnit& u : chain.units) {
+        double top = u.top;
+        const ChainElement* e = chain.element(u.element);
+        if (e) {
+            top = std::max(top, e->top);
+            int guard = 0;  // a parent loop in a damaged chain must not hang
+            for (const ChainElement* a = chain.element(e->parent); a && guard < 64; a = chain.element(a->parent), ++guard)
+                top = std::max(top, standing(*a, u.order));
+        }
+        u.stockTop.reset();
+        if (top > u.top + 1e-9) u.stockTop = top;
+    }
+}
+
+}  // namespace aeronc::chain
