@@ -16,6 +16,7 @@ void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vec
             taken = !e.contourFaces.empty();
             for (int f : e.contourFaces) taken &= claimed[static_cast<std::size_t>(f - 1)];
         }
+        taken |= made[k].dropped;  // replaced by a hole of the adjacency pass
         if (!taken) {
             remap[k] = static_cast<int>(tree.elements.size() + kept.size());
             kept.push_back(made[k]);

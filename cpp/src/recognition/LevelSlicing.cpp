@@ -118,21 +118,24 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
 
     for (std::size_t r = 0; r < regions.size(); ++r) {
         VoidRegion& c = regions[r];
+        // A drilled hole ends here on a drill point (cone or sphere under its walls): a ray
+        // down its axis runs on to the point's apex, so this comes before the exit test.
+        bool drillPoint = !c.floors.empty() || c.exterior ? false : !c.contourFaces.empty() && c.islandFaces.empty();
+        if (drillPoint)
+            for (int f : c.contourFaces)
+                drillPoint = drillPoint && faces_[f].kind == SurfaceKind::Cylinder && faces_[f].concave &&
+                             std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol && onDrillPoint(view_, f, h);
         ElementType type;
         if (!c.floors.empty()) {
             type = c.exterior ? ElementType::OpenPocket : ElementType::ClosedPocket;
         } else if (c.exterior) {
             continue;
+        } else if (drillPoint) {
+            type = ElementType::ClosedPocket;
         } else if (bottom || leavesPart(c, h, z)) {
             type = ElementType::Opening;
         } else {
-            // A drilled hole ends here on a drill point (cone or sphere under its walls).
-            bool ends = !c.contourFaces.empty() && c.islandFaces.empty();
-            for (int f : c.contourFaces)
-                ends = ends && faces_[f].kind == SurfaceKind::Cylinder && faces_[f].concave &&
-                       std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol && onDrillPoint(view_, f, h);
-            if (!ends) continue;
-            type = ElementType::ClosedPocket;
+            continue;
         }
         if (!c.hasSample) c.sample = c.region.interiorPoint();
         if (type == ElementType::Opening) {

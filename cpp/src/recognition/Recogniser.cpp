@@ -4,6 +4,8 @@
 #include <aeronc/recognition/Recogniser.h>
 
 #include "AttachedFeatures.h"
+#include "ChainHoles.h"
+#include "HoleChains.h"
 #include "ElementMeasures.h"
 #include "FaceCatalogue.h"
 #include "FaceClaims.h"
@@ -37,15 +39,21 @@ public:
     }
 
     DomainTree run() {
+        chains_ = findHoleChains(faces_, tol_);
+        for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
         if (opt_.directions.empty()) {
+            reserveChainFaces({});
             runAuto();
         } else {
-            const std::size_t n = opt_.directions.size();
+            std::vector<Vec3> dirs;
+            for (std::size_t k = 0; k < opt_.directions.size(); ++k)
+                dirs.push_back(checkedDirection(faces_, tol_, opt_.directions[k], k));
+            reserveChainFaces(dirs);
+            const std::size_t n = dirs.size();
             for (std::size_t k = 0; k < n; ++k) {
-                const Vec3 d = checkedDirection(faces_, tol_, opt_.directions[k], k);
                 progressBase_ = double(k) / n;
                 progressSpan_ = 1.0 / n;
-                runSetup(d);
+                runSetup(dirs[k]);
             }
         }
         assignFaceRoles(tree_, faces_, tol_);
@@ -62,7 +70,46 @@ private:
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
     std::vector<Vec3> axes_;     // principal axes, on first use
     RegionWidths widths_;
+    std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
+    std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
+    std::vector<std::vector<bool>> reservedSegment_;  // per chain and segment: a setup will take it
     double progressBase_ = 0, progressSpan_ = 1;
+
+    // The chain segments some setup will take: all with an entry when the setups are found
+    // (their axes propose setups), else those entered along a given direction.
+    void reserveChainFaces(const std::vector<Vec3>& given) {
+        for (const HoleChain& c : chains_) {
+            std::vector<bool> r;
+            for (const HoleSegment& s : c.segments) {
+                bool some = false;
+                for (int e : s.entries) {
+                    if (given.empty()) some = true;
+                    for (const Vec3& d : given) some |= e * dot(c.axis, d) >= tol_.parallelCos;
+                }
+                r.push_back(some);
+            }
+            reservedSegment_.push_back(r);
+        }
+    }
+
+    // Per face: a wall of a reserved segment no setup has taken yet, or a step or cone of its
+    // chain (a counterbore's floor is no other pocket's wall).
+    std::vector<bool> pendingChainFaces() const {
+        std::vector<bool> out(static_cast<std::size_t>(faces_.size()), false);
+        for (std::size_t c = 0; c < chains_.size(); ++c) {
+            bool any = false;
+            for (std::size_t k = 0; k < chains_[c].segments.size(); ++k)
+                if (reservedSegment_[c][k] && !chainTaken_[c][k]) {
+                    for (int f : chains_[c].segments[k].faces) out[static_cast<std::size_t>(f)] = true;
+                    any = true;
+                }
+            if (any) {
+                for (int f : chains_[c].steps) out[static_cast<std::size_t>(f)] = true;
+                for (int f : chains_[c].cones) out[static_cast<std::size_t>(f)] = true;
+            }
+        }
+        return out;
+    }
 
     void progress(double f, const std::string& stage) {
         if (opt_.progress && !opt_.progress(progressBase_ + progressSpan_ * f, stage))
@@ -79,12 +126,23 @@ private:
             progressSpan_ = round == 0 ? 0.45 : 0.1;
             runSetup(*d);
         }
+        // Holes along axes no setup took: each axis a setup of its own, for its holes.
+        for (std::size_t c = 0; c < chains_.size(); ++c)
+            for (std::size_t k = 0; k < chains_[c].segments.size(); ++k) {
+                const HoleSegment& s = chains_[c].segments[k];
+                if (chainTaken_[c][k] || s.entries.empty()) continue;
+                const Vec3& d = chains_[c].axis;
+                const int e = s.entries.front();
+                const Vec3 tool{e * d[0], e * d[1], e * d[2]};
+                if (search.markTried(tool)) runSetup(tool, true);
+            }
         for (const Vec3& d : search.untriedPrincipalAxes()) runSetup(d);
         dropEmptySetups(tree_);
         if (tree_.setups.empty()) throw inputError("no machining feature found in any setup direction");
     }
 
-    void runSetup(const Vec3& d) {
+    // holesOnly: a setup a hole's axis proposed, for the hole chains along it alone.
+    void runSetup(const Vec3& d, bool holesOnly = false) {
         if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
         const SetupView view(faces_, tol_, d, axes_, opt_);
         markBlankBoundaryFaces(view, onBlank_);
@@ -94,22 +152,29 @@ private:
         setup.direction = view.frame.w;
         setup.name = directionName(view.frame.w);
 
-        LevelSlicing slicing(view, widths_, tree_.warnings);
-        const std::vector<double>& levels = slicing.levels();
         std::vector<ElementDraft> made;
-        const auto t0 = std::chrono::steady_clock::now();
-        for (std::size_t k = 0; k < levels.size(); ++k) {
-            progress(double(k) / levels.size(), "slicing " + setup.name);
-            slicing.slice(k, setup.id, made);
+        if (!holesOnly) {
+            LevelSlicing slicing(view, widths_, tree_.warnings);
+            const std::vector<double>& levels = slicing.levels();
+            const auto t0 = std::chrono::steady_clock::now();
+            for (std::size_t k = 0; k < levels.size(); ++k) {
+                progress(double(k) / levels.size(), "slicing " + setup.name);
+                slicing.slice(k, setup.id, made);
+            }
+            if (std::getenv("AERONC_TRACE"))
+                std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(),
+                             levels.size(), made.size(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
-        if (std::getenv("AERONC_TRACE"))
-            std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(), levels.size(),
-                         made.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         progress(1.0, "linking " + setup.name);
         linkPocketTree(made, tol_.linear);
         attachElementFeatures(made, view);
         recogniseHoles(made, view);
+        addChainHoles(made, view, chains_, chainTaken_, claimed_);
+        recogniseCounterbores(made, view);
         attachTreeFeatures(made);
+        for (ElementDraft& in : made) in.el.setup = setup.id;
+        releaseReservedFaces(made, pendingChainFaces());
 
         claimFaces(made, setup, claimed_, tree_);
         tree_.setups.push_back(std::move(setup));

@@ -106,6 +106,13 @@ std::vector<Vec3> SetupDirectionSearch::untriedPrincipalAxes() {
     return out;
 }
 
+bool SetupDirectionSearch::markTried(const Vec3& d) {
+    for (const Vec3& t : tried_)
+        if (dot(d, t) >= tol_.parallelCos) return false;
+    tried_.push_back(d);
+    return true;
+}
+
 // Unclaimed floor area seen from d plus half the unclaimed concave cylinder area along d.
 double SetupDirectionSearch::score(const Vec3& d, const std::vector<bool>& claimed, bool consume) {
     const SetupFrame frame(d);

@@ -33,6 +33,8 @@ public:
     std::optional<Vec3> next(const std::vector<bool>& claimed);
     // The principal axes not tried yet: through openings have no floor to call for them.
     std::vector<Vec3> untriedPrincipalAxes();
+    // Records a direction tried for another reason (a hole's axis); false if it was tried.
+    bool markTried(const Vec3& d);
 
 private:
     double score(const Vec3& d, const std::vector<bool>& claimed, bool consume);
