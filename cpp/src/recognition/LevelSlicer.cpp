@@ -64,7 +64,7 @@ bool pointInLoop(const SectionLoop& loop, const P2& p) {
 
 std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vector<int>& candidates,
                                     const SetupFrame& frame, double h, double chordTol, double linTol,
-                                    std::vector<std::string>& warnings) {
+                                    std::vector<std::string>& warnings, MeshSection* meshes) {
     std::vector<SectionLoop> loops;
     if (candidates.empty()) return loops;
     // Faces along the axis are cut in their own parameter space; the rest by OCCT.
@@ -73,9 +73,12 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
     BRep_Builder bb;
     bb.MakeCompound(comp);
     int general = 0;
+    const bool onlyOcct = std::getenv("AERONC_GENERAL_SECTION") != nullptr;  // to compare with OCCT's section
     for (int i : candidates) {
         std::vector<std::vector<P2>> polys;
-        if (!std::getenv("AERONC_GENERAL_SECTION") && sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h, chordTol, polys)) {
+        if (!onlyOcct && (sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h,
+                                              chordTol, polys) ||
+                          (meshes && meshes->section(i, frame, h, polys)))) {
             for (auto& pl : polys) {
                 Piece piece;
                 piece.face = i;

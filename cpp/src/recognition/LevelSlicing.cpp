@@ -63,7 +63,9 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
     }
     // Mid-way to the next height where any face starts or ends: a plane through an
     // edge would give degenerate sections.
-    const double base = h + excess;
+    // Blends that rise to the level above (a shallow engraving rounded to its top) leave no
+    // wall to cut: then the blends are cut.
+    const double base = h + excess < std::min(hn, h1) - tol ? h + excess : h;
     double next = h1;
     for (double c : critical_) {
         if (c > base + tol) {
@@ -81,7 +83,8 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         if (f.lo - m < z && f.hi + m > z) cands.push_back(i);
     }
     const auto ts = std::chrono::steady_clock::now();
-    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings_);
+    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings_,
+                                                view_.meshes);
     if (std::getenv("AERONC_TRACE"))
         std::fprintf(stderr, "  level %.3f: %zu faces cut, %zu loops, %.3f s\n", h, cands.size(), loops.size(),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());

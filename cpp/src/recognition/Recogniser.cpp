@@ -12,6 +12,7 @@
 #include "FaceRoles.h"
 #include "HoleRecognition.h"
 #include "LevelSlicing.h"
+#include "MeshSection.h"
 #include "PocketTree.h"
 #include "SetupDirections.h"
 #include "SetupView.h"
@@ -31,7 +32,8 @@ namespace {
 
 class Recogniser {
 public:
-    Recogniser(const TopoDS_Shape& solid, const RecogniseOptions& o) : opt_(o), tol_(o), faces_(solid) {
+    Recogniser(const TopoDS_Shape& solid, const RecogniseOptions& o)
+        : opt_(o), tol_(o), faces_(solid), meshes_(faces_, o.chordTolerance) {
         tree_.faceCount = faces_.size();
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
@@ -65,6 +67,7 @@ private:
     RecogniseOptions opt_;
     Tolerances tol_;
     FaceCatalogue faces_;
+    MeshSection meshes_;
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
@@ -144,7 +147,8 @@ private:
     // holesOnly: a setup a hole's axis proposed, for the hole chains along it alone.
     void runSetup(const Vec3& d, bool holesOnly = false) {
         if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
-        const SetupView view(faces_, tol_, d, axes_, opt_);
+        SetupView view(faces_, tol_, d, axes_, opt_);
+        view.meshes = &meshes_;
         markBlankBoundaryFaces(view, onBlank_);
 
         SetupDirection setup;

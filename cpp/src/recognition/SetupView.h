@@ -8,6 +8,7 @@
 #include "AxisRays.h"
 #include "FaceCatalogue.h"
 #include "FaceInSetup.h"
+#include "MeshSection.h"
 #include "Tolerances.h"
 
 #include <memory>
@@ -29,6 +30,7 @@ public:
     std::vector<FaceInSetup> fs;  // index: face (0-based)
     double h0 = 0, h1 = 0;        // the part's height range
     P2 blankLo, blankHi;          // the blank's rectangle in the slicing plane
+    MeshSection* meshes = nullptr;  // the part's section of blends and splines, shared by the setups
     double blankH0 = 0, blankH1 = 0;  // and its height range: the part's, or the given blank's
 
     AxisRays& rays() const { return *rays_; }
