@@ -21,9 +21,13 @@ double RegionWidths::minWidth(const Region& r) {
     };
     add(r.outer);
     for (const Path& h : r.holes) add(h);
-    auto it = widths_.find(key);
-    if (it != widths_.end()) return it->second;
-    const double w = r.minWidth();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = widths_.find(key);
+        if (it != widths_.end()) return it->second;
+    }
+    const double w = r.minWidth();  // outside the lock: two threads may both compute one shape
+    std::lock_guard<std::mutex> lock(mutex_);
     widths_.emplace(std::move(key), w);
     return w;
 }

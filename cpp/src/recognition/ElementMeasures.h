@@ -8,6 +8,7 @@
 #include "Region.h"
 #include "VoidRegions.h"
 
+#include <mutex>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -21,6 +22,7 @@ public:
 
 private:
     std::unordered_map<std::string, double> widths_;  // by the region's shape, translation removed
+    std::mutex mutex_;
 };
 
 // Sets e.minCornerRadius from the region's loops (0 where two walls meet sharp, -1 when

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cmath>
+#include <mutex>
 #include <unordered_map>
 
 namespace aeronc::recognition {
@@ -91,12 +92,16 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
         }
     }
     if (general > 0) {
+        // OCCT's Boolean section one at a time: levels may be sliced on several threads.
+        static std::mutex occtSection;
+        std::lock_guard<std::mutex> lock(occtSection);
         const Vec3 o = frame.world({0, 0}, h);
         const gp_Pln plane(gp_Pnt(o[0], o[1], o[2]), gp_Dir(frame.w[0], frame.w[1], frame.w[2]));
         BRepAlgoAPI_Section sec(comp, plane, false);
         sec.ComputePCurveOn1(false);
         sec.Approximation(false);
         sec.SetRunParallel(false);
+        sec.SetNonDestructive(true);  // the part's faces are shared: leave their tolerances alone
         sec.Build();
         if (!sec.IsDone()) {
             warnings.push_back("section at height " + std::to_string(h) + " failed");

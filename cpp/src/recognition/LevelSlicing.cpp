@@ -3,9 +3,15 @@
 #include "FaceLists.h"
 #include "HoleRecognition.h"
 #include "LevelSlicer.h"
+#include "Workers.h"
+
+#include <aeronc/core/Error.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,7 +46,8 @@ LevelSlicing::LevelSlicing(const SetupView& view, RegionWidths& widths, std::vec
     std::sort(critical_.begin(), critical_.end());
 }
 
-void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made) {
+void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made,
+                         std::vector<std::string>& warnings) {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const SetupFrame& frame = view_.frame;
     const double h = levels_[k];
@@ -83,7 +90,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         if (f.lo - m < z && f.hi + m > z) cands.push_back(i);
     }
     const auto ts = std::chrono::steady_clock::now();
-    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings_,
+    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings,
                                                 view_.meshes);
     if (std::getenv("AERONC_TRACE"))
         std::fprintf(stderr, "  level %.3f: %zu faces cut, %zu loops, %.3f s\n", h, cands.size(), loops.size(),
@@ -193,11 +200,75 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
     }
 }
 
+void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int threads,
+                            const std::function<bool(double)>& progress) {
+    const std::size_t n = levels_.size();
+    // What the levels build lazily and share, built here first: the rays' reach of every
+    // floor (done by the constructor), the meshes of the faces cut by their triangulation.
+    if (view_.meshes) {
+        std::vector<int> curved;
+        for (int i = 0; i < faces_.size(); ++i) {
+            const FaceInfo& f = faces_[i];
+            const bool alongAxis = (f.kind == SurfaceKind::Cylinder || f.kind == SurfaceKind::Cone) &&
+                                   std::fabs(dot(f.axisDir, view_.frame.w)) >= 1 - 1e-9;
+            if (f.kind != SurfaceKind::Plane && !alongAxis) curved.push_back(i);
+        }
+        view_.meshes->prepare(curved);
+    }
+    std::vector<std::vector<ElementDraft>> perLevel(n);
+    std::vector<std::vector<std::string>> warned(n);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> stop{false};
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    auto work = [&](int slot) {
+        setWorkerSlot(slot);
+        for (std::size_t k; !stop && (k = next++) < n;) {
+            try {
+                slice(k, setupId, perLevel[k], warned[k]);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(failureMutex);
+                if (!failure) failure = std::current_exception();
+                stop = true;
+            }
+            ++done;
+        }
+    };
+    const int helpers = std::max(0, std::min(threads, static_cast<int>(n)) - 1);
+    std::vector<std::thread> pool;
+    for (int t = 0; t < helpers; ++t) pool.emplace_back(work, t + 1);
+    // This thread slices too, and reports between its levels.
+    for (std::size_t k; !stop && (k = next++) < n;) {
+        if (progress && !progress(double(done) / n)) {
+            stop = true;
+            break;
+        }
+        try {
+            slice(k, setupId, perLevel[k], warned[k]);
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+            stop = true;
+        }
+        ++done;
+    }
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    if (stop) throw inputError("recognition cancelled");
+    for (std::size_t k = 0; k < n; ++k) {
+        for (ElementDraft& d : perLevel[k]) {
+            d.el.id = static_cast<int>(made.size());
+            made.push_back(std::move(d));
+        }
+        warnings_.insert(warnings_.end(), warned[k].begin(), warned[k].end());
+    }
+}
+
 bool LevelSlicing::capped(const VoidRegion& c, double z) const {
-    if (!std::isinf(view_.rays().firstHit(view_.frame.world(c.sample, z), true))) return true;
+    if (view_.rays().anyHit(view_.frame.world(c.sample, z), true)) return true;
     const double inset = std::max(0.05, 100 * view_.tol.linear);
-    for (const P2& p : c.region.boundaryProbes(inset, 24))
-        if (!std::isinf(view_.rays().firstHit(view_.frame.world(p, z), true))) return true;
+    for (const P2& p : c.region.boundaryProbes(inset, 16))
+        if (view_.rays().anyHit(view_.frame.world(p, z), true)) return true;
     return false;
 }
 

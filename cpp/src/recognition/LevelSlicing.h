@@ -7,6 +7,7 @@
 #include "SetupView.h"
 #include "VoidRegions.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,14 @@ public:
     const std::vector<double>& levels() const { return levels_; }
 
     // Appends the elements whose floor (or exit) is levels()[k] to made; their ids are their
-    // indices in made, their faces FaceN.
-    void slice(std::size_t k, int setupId, std::vector<ElementDraft>& made);
+    // indices in made, their faces FaceN. Section warnings go to `warnings`.
+    void slice(std::size_t k, int setupId, std::vector<ElementDraft>& made, std::vector<std::string>& warnings);
+
+    // Slices every level, on up to `threads` threads (the levels are independent), and
+    // appends the elements in level order as slice() would. progress(fraction) is called
+    // from this thread; returning false stops the work and throws the cancel.
+    void sliceAll(int setupId, std::vector<ElementDraft>& made, int threads,
+                  const std::function<bool(double)>& progress);
 
 private:
     bool leavesPart(VoidRegion& c, double h, double z) const;

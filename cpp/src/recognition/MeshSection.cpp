@@ -1,5 +1,6 @@
 #include "MeshSection.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Tool.hxx>
@@ -43,7 +44,14 @@ void MeshSection::build(int i, Mesh& m) const {
     // A copy, so that the part keeps no triangulation of ours.
     BRepBuilderAPI_Copy copy(faces_[i].face, true, false);
     const TopoDS_Face face = TopoDS::Face(copy.Shape());
-    BRepMesh_IncrementalMesh(face, chordTol_, false, 0.35, false);
+    // The chord tolerance, eased on large faces to 1/500 of their size (at most 0.1 mm): a
+    // region's outline needs no finer, and a fine mesh of a large torus costs more than the
+    // section saves.
+    const FaceInfo& f = faces_[i];
+    const double size = std::sqrt(std::pow(f.boxMax[0] - f.boxMin[0], 2) + std::pow(f.boxMax[1] - f.boxMin[1], 2) +
+                                  std::pow(f.boxMax[2] - f.boxMin[2], 2));
+    const double deflection = std::clamp(0.002 * size, chordTol_, std::max(chordTol_, 0.1));
+    BRepMesh_IncrementalMesh(face, deflection, false, 0.5, false);
     TopLoc_Location loc;
     const Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
     if (tri.IsNull() || tri->NbTriangles() == 0) return;
@@ -62,7 +70,7 @@ void MeshSection::build(int i, Mesh& m) const {
         const Handle(Poly_PolygonOnTriangulation) poly = BRep_Tool::PolygonOnTriangulation(e, tri, loc);
         if (poly.IsNull() || !poly->HasParameters()) continue;
         const int c = static_cast<int>(m.curves.size());
-        m.curves.emplace_back(e);
+        m.curves.push_back(e);
         for (int k = 1; k < poly->NbNodes(); ++k) {
             int a = poly->Node(k) - 1, b = poly->Node(k + 1) - 1;
             double ta = poly->Parameter(k), tb = poly->Parameter(k + 1);
@@ -87,6 +95,7 @@ bool MeshSection::section(int i, const SetupFrame& frame, double h, std::vector<
     auto above = [&](int k) { return d[static_cast<std::size_t>(k)] >= 0; };
     // The crossing on mesh edge (a, b): on the exact edge curve for a boundary edge.
     std::unordered_map<long long, P2> point;
+    std::vector<std::unique_ptr<BRepAdaptor_Curve>> adaptors(m.curves.size());
     auto crossing = [&](int a, int b) -> long long {
         const long long k = key(a, b);
         if (point.count(k)) return k;
@@ -97,7 +106,9 @@ bool MeshSection::section(int i, const SetupFrame& frame, double h, std::vector<
         gp_Pnt x = pa.XYZ() + (pb.XYZ() - pa.XYZ()) * (da / (da - db));
         if (it != m.boundary.end()) {
             // Bisection on the edge between the two nodes' parameters.
-            const BRepAdaptor_Curve& c = m.curves[static_cast<std::size_t>(it->second.edge)];
+            auto& adaptor = adaptors[static_cast<std::size_t>(it->second.edge)];
+            if (!adaptor) adaptor = std::make_unique<BRepAdaptor_Curve>(m.curves[static_cast<std::size_t>(it->second.edge)]);
+            const BRepAdaptor_Curve& c = *adaptor;
             const int lo = std::min(a, b);
             double t0 = it->second.t0, t1 = it->second.t1;
             double f0 = d[static_cast<std::size_t>(lo)];

@@ -8,7 +8,7 @@
 
 #include "FaceCatalogue.h"
 
-#include <BRepAdaptor_Curve.hxx>
+#include <TopoDS_Edge.hxx>
 #include <gp_Pnt.hxx>
 
 #include <array>
@@ -37,7 +37,7 @@ private:
         bool ok = false;
         std::vector<gp_Pnt> nodes;
         std::vector<std::array<int, 3>> triangles;
-        std::vector<BRepAdaptor_Curve> curves;
+        std::vector<TopoDS_Edge> curves;  // an adaptor keeps a cache: each section makes its own
         std::unordered_map<long long, BoundarySpan> boundary;  // by mesh edge (lower node, upper node)
     };
     const Mesh& mesh(int i);

@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <thread>
 
 namespace aeronc::recognition {
 namespace {
@@ -77,6 +78,7 @@ private:
     std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
     std::vector<std::vector<bool>> reservedSegment_;  // per chain and segment: a setup will take it
     double progressBase_ = 0, progressSpan_ = 1;
+    int threads_ = opt_.threads > 0 ? opt_.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 
     // The chain segments some setup will take: all with an entry when the setups are found
     // (their axes propose setups), else those entered along a given direction.
@@ -161,10 +163,9 @@ private:
             LevelSlicing slicing(view, widths_, tree_.warnings);
             const std::vector<double>& levels = slicing.levels();
             const auto t0 = std::chrono::steady_clock::now();
-            for (std::size_t k = 0; k < levels.size(); ++k) {
-                progress(double(k) / levels.size(), "slicing " + setup.name);
-                slicing.slice(k, setup.id, made);
-            }
+            slicing.sliceAll(setup.id, made, threads_, [&](double f) {
+                return !opt_.progress || opt_.progress(progressBase_ + progressSpan_ * f, "slicing " + setup.name);
+            });
             if (std::getenv("AERONC_TRACE"))
                 std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(),
                              levels.size(), made.size(),
