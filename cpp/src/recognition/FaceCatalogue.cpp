@@ -1,6 +1,7 @@
 #include "FaceCatalogue.h"
 #include "Workers.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
@@ -106,6 +107,23 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
             if (e > 0 && std::find(faceEdges_[i].begin(), faceEdges_[i].end(), e) == faceEdges_[i].end())
                 faceEdges_[i].push_back(e);
         }
+    // Points along each edge: its ends, and 16 more along a curved one.
+    std::vector<std::vector<Vec3>> alongEdge(static_cast<std::size_t>(edges_.Extent()) + 1);
+    for (int e = 1; e <= edges_.Extent(); ++e) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges_(e));
+        if (BRep_Tool::Degenerated(edge)) continue;
+        BRepAdaptor_Curve c(edge);
+        const int n = c.GetType() == GeomAbs_Line ? 1 : 16;
+        for (int k = 0; k <= n; ++k) {
+            const gp_Pnt p = c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / n);
+            alongEdge[static_cast<std::size_t>(e)].push_back({p.X(), p.Y(), p.Z()});
+        }
+    }
+    edgePoints_.resize(faces_.size());
+    for (std::size_t i = 0; i < faces_.size(); ++i)
+        for (int e : faceEdges_[i])
+            edgePoints_[i].insert(edgePoints_[i].end(), alongEdge[static_cast<std::size_t>(e)].begin(),
+                                  alongEdge[static_cast<std::size_t>(e)].end());
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
     TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
     for (int e = 1; e <= edgeFaces.Extent(); ++e) {
@@ -120,6 +138,16 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
         std::sort(f.neighbours.begin(), f.neighbours.end());
         f.neighbours.erase(std::unique(f.neighbours.begin(), f.neighbours.end()), f.neighbours.end());
     }
+}
+
+double FaceCatalogue::boundaryTop(int i, const Vec3& d) const {
+    double top = -std::numeric_limits<double>::max();
+    for (const Vec3& p : edgePoints_[static_cast<std::size_t>(i)]) top = std::max(top, dot(p, d));
+    if (edgePoints_[static_cast<std::size_t>(i)].empty()) {  // no edge: the box
+        double lo;
+        heightRange(i, d, lo, top);
+    }
+    return top;
 }
 
 double FaceCatalogue::area(int i) const {

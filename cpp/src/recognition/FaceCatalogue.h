@@ -56,6 +56,9 @@ public:
         double lo, hi, base;
     };
     std::vector<HeightRange> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
+    // The highest point of face i's boundary along unit d, from points on its edges (their
+    // ends, and along curved edges): quick, for sorting through many directions.
+    double boundaryTop(int i, const Vec3& d) const;
     // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
     // Classifier of points in face i's parameter space, built once per face and worker (a
@@ -75,6 +78,7 @@ private:
     TopTools_IndexedMapOfShape map_;
     TopTools_IndexedMapOfShape edges_;
     std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
+    std::vector<std::vector<Vec3>> edgePoints_;  // per face: points along its boundary
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::vector<std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>> classifiers_;  // by worker
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;

@@ -46,17 +46,13 @@ LevelSlicing::LevelSlicing(const SetupView& view, RegionWidths& widths, std::vec
     std::sort(critical_.begin(), critical_.end());
 }
 
-void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made,
-                         std::vector<std::string>& warnings) {
+double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
-    const SetupFrame& frame = view_.frame;
     const double h = levels_[k];
     const double hn = k + 1 < levels_.size() ? levels_[k + 1] : view_.h1;
     const double h1 = view_.h1;
-    const bool bottom = k == 0;
     const double tol = 10 * view_.tol.linear;
     // Slice above floor fillets and bottom chamfers so the loops run on the walls.
-    std::vector<int> ups;
     double excess = 0;
     for (int i = 0; i < faces_.size(); ++i) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
@@ -80,15 +76,44 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             break;
         }
     }
-    const double z = 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+    return 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+}
 
+std::vector<int> LevelSlicing::cutFaces(double z) const {
     std::vector<int> cands;
     const double margin = 0.5;  // boxes of spline faces can be tight; extra faces cost little
     for (int i = 0; i < faces_.size(); ++i) {
-        const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
+        const FaceInSetup& f = view_.fs[static_cast<std::size_t>(i)];
         const double m = (f.att == Attitude::Up || f.att == Attitude::Down) ? 0.0 : margin;
         if (f.lo - m < z && f.hi + m > z) cands.push_back(i);
     }
+    return cands;
+}
+
+bool LevelSlicing::useful(std::size_t k, const std::vector<bool>& claimed) const {
+    // An element whose floor an earlier setup machines is dropped, and so is one without a
+    // floor whose walls it all machines: a level where that holds of every floor and every
+    // face cut makes nothing.
+    std::vector<int> ups;
+    const double z = sliceHeight(k, ups);
+    for (int i : ups)
+        if (!claimed[static_cast<std::size_t>(i)]) return true;
+    for (int i : cutFaces(z))
+        if (!claimed[static_cast<std::size_t>(i)]) return true;
+    return false;
+}
+
+void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made,
+                         std::vector<std::string>& warnings) {
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    const SetupFrame& frame = view_.frame;
+    const double h = levels_[k];
+    const double h1 = view_.h1;
+    const bool bottom = k == 0;
+    const double tol = 10 * view_.tol.linear;
+    std::vector<int> ups;
+    const double z = sliceHeight(k, ups);
+    const std::vector<int> cands = cutFaces(z);
     const auto ts = std::chrono::steady_clock::now();
     std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings,
                                                 view_.meshes);
@@ -201,20 +226,11 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
 }
 
 void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int threads,
-                            const std::function<bool(double)>& progress) {
-    const std::size_t n = levels_.size();
-    // What the levels build lazily and share, built here first: the rays' reach of every
-    // floor (done by the constructor), the meshes of the faces cut by their triangulation.
-    if (view_.meshes) {
-        std::vector<int> curved;
-        for (int i = 0; i < faces_.size(); ++i) {
-            const FaceInfo& f = faces_[i];
-            const bool alongAxis = (f.kind == SurfaceKind::Cylinder || f.kind == SurfaceKind::Cone) &&
-                                   std::fabs(dot(f.axisDir, view_.frame.w)) >= 1 - 1e-9;
-            if (f.kind != SurfaceKind::Plane && !alongAxis) curved.push_back(i);
-        }
-        view_.meshes->prepare(curved);
-    }
+                            const std::function<bool(double)>& progress, const std::vector<bool>& claimed) {
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < levels_.size(); ++k)
+        if (useful(k, claimed)) todo.push_back(k);
+    const std::size_t n = todo.size();
     std::vector<std::vector<ElementDraft>> perLevel(n);
     std::vector<std::vector<std::string>> warned(n);
     std::atomic<std::size_t> next{0}, done{0};
@@ -225,7 +241,7 @@ void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int th
         setWorkerSlot(slot);
         for (std::size_t k; !stop && (k = next++) < n;) {
             try {
-                slice(k, setupId, perLevel[k], warned[k]);
+                slice(todo[k], setupId, perLevel[k], warned[k]);
             } catch (...) {
                 std::lock_guard<std::mutex> lock(failureMutex);
                 if (!failure) failure = std::current_exception();
@@ -244,7 +260,7 @@ void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int th
             break;
         }
         try {
-            slice(k, setupId, perLevel[k], warned[k]);
+            slice(todo[k], setupId, perLevel[k], warned[k]);
         } catch (...) {
             std::lock_guard<std::mutex> lock(failureMutex);
             if (!failure) failure = std::current_exception();

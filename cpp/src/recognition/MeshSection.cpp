@@ -24,19 +24,18 @@ long long key(int a, int b) {
 }  // namespace
 
 MeshSection::MeshSection(const FaceCatalogue& faces, double chordTol)
-    : faces_(faces), chordTol_(chordTol), meshes_(static_cast<std::size_t>(faces.size())) {}
-
-void MeshSection::prepare(const std::vector<int>& faces) {
-    for (int i : faces) mesh(i);
-}
+    : faces_(faces),
+      chordTol_(chordTol),
+      meshes_(static_cast<std::size_t>(faces.size())),
+      once_(new std::once_flag[static_cast<std::size_t>(faces.size())]) {}
 
 const MeshSection::Mesh& MeshSection::mesh(int i) {
-    std::lock_guard<std::mutex> lock(mutex_);
     auto& m = meshes_[static_cast<std::size_t>(i)];
-    if (!m) {
-        m = std::make_unique<Mesh>();
-        build(i, *m);
-    }
+    std::call_once(once_[static_cast<std::size_t>(i)], [&] {
+        auto made = std::make_unique<Mesh>();
+        build(i, *made);
+        m = std::move(made);
+    });
     return *m;
 }
 

@@ -22,10 +22,9 @@ namespace aeronc::recognition {
 class MeshSection {
 public:
     MeshSection(const FaceCatalogue& faces, double chordTol);
-    // Meshes the faces now (once), so that section() may then run from several threads.
-    void prepare(const std::vector<int>& faces);
     // Appends the section polylines of face i with the plane at height h along frame.w;
-    // false when the face could not be meshed (the caller then uses OCCT's section).
+    // false when the face could not be meshed (the caller then uses OCCT's section). A face is
+    // meshed when it is first cut; threads may cut faces at once.
     bool section(int i, const SetupFrame& frame, double h, std::vector<std::vector<P2>>& out);
 
 private:
@@ -46,7 +45,7 @@ private:
     const FaceCatalogue& faces_;
     double chordTol_;
     std::vector<std::unique_ptr<Mesh>> meshes_;
-    std::mutex mutex_;
+    std::unique_ptr<std::once_flag[]> once_;  // per face: its mesh is built once
 };
 
 }  // namespace aeronc::recognition

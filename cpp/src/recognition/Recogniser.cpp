@@ -163,9 +163,13 @@ private:
             LevelSlicing slicing(view, widths_, tree_.warnings);
             const std::vector<double>& levels = slicing.levels();
             const auto t0 = std::chrono::steady_clock::now();
-            slicing.sliceAll(setup.id, made, threads_, [&](double f) {
-                return !opt_.progress || opt_.progress(progressBase_ + progressSpan_ * f, "slicing " + setup.name);
-            });
+            slicing.sliceAll(
+                setup.id, made, threads_,
+                [&](double f) {
+                    return !opt_.progress ||
+                           opt_.progress(progressBase_ + progressSpan_ * f, "slicing " + setup.name);
+                },
+                claimed_);
             if (std::getenv("AERONC_TRACE"))
                 std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(),
                              levels.size(), made.size(),

@@ -116,20 +116,20 @@ bool SetupDirectionSearch::markTried(const Vec3& d) {
 // Unclaimed floor area seen from d plus half the unclaimed concave cylinder area along d.
 double SetupDirectionSearch::score(const Vec3& d, const std::vector<bool>& claimed, bool consume) {
     const SetupFrame frame(d);
-    const std::vector<FaceInSetup> fs = classifyFaces(faces_, frame, tol_);
     std::unique_ptr<AxisRays> rays;  // built on the first floor that needs it
     double s = 0;
     for (int i = 0; i < faces_.size(); ++i) {
         if (claimed[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
         const double before = s;
         const FaceInfo& f = faces_[i];
-        const FaceInSetup& fi = fs[static_cast<std::size_t>(i)];
-        if (fi.att == Attitude::Up) {
+        if (f.kind == SurfaceKind::Plane && dot(f.normal, frame.w) >= tol_.parallelCos) {
+            // A floor: a neighbour rises above it, and the tool reaches it.
+            const double h = dot(f.planePoint, frame.w);
             bool rising = false;
-            for (int n : f.neighbours) rising |= fs[static_cast<std::size_t>(n)].hi > fi.h + 10 * tol_.linear;
+            for (int n : f.neighbours) rising = rising || faces_.boundaryTop(n, frame.w) > h + 10 * tol_.linear;
             if (rising && !rays) rays = std::make_unique<AxisRays>(faces_, frame);
             if (rising && rays->reachable(i)) s += faces_.area(i);
-        } else if (f.kind == SurfaceKind::Cylinder && f.concave && fi.att == Attitude::Vertical) {
+        } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, frame.w)) >= tol_.parallelCos) {
             s += 0.5 * faces_.area(i);
         }
         if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;
