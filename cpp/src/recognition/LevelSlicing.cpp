@@ -189,7 +189,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         e.type = type;
         e.level = h;
         e.area = c.region.area();
-        e.minWidth = widths_.minWidth(c.region);
+        e.minWidth = -1;  // measured once it is known to stay (measureWidths)
         for (int f : c.contourFaces) e.contourFaces.push_back(f + 1);
         for (auto& isl : c.islandFaces) {
             std::vector<int> v;

@@ -181,6 +181,7 @@ private:
         recogniseHoles(made, view);
         addChainHoles(made, view, chains_, chainTaken_, claimed_);
         recogniseCounterbores(made, view);
+        measureWidths(made, claimed_, widths_, threads_);
         attachTreeFeatures(made);
         for (ElementDraft& in : made) in.el.setup = setup.id;
         releaseReservedFaces(made, pendingChainFaces());
