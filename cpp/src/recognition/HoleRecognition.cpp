@@ -77,6 +77,7 @@ void recogniseHole(ElementDraft& in, const SetupView& view) {
         }
     e.type = ElementType::Hole;
     e.hole = hi;
+    e.minWidth = hi.diameter;  // a round region: no erosion needed
 }
 
 }  // namespace
