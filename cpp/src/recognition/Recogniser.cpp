@@ -6,6 +6,7 @@
 #include "AttachedFeatures.h"
 #include "ChainHoles.h"
 #include "HoleChains.h"
+#include "EdgeChamfers.h"
 #include "ElementMeasures.h"
 #include "FaceCatalogue.h"
 #include "FaceClaims.h"
@@ -42,6 +43,8 @@ public:
     }
 
     DomainTree run() {
+        axes_ = principalAxes(faces_, tol_);
+        edgeChamfers_ = findEdgeChamfers(faces_, tol_, axes_);
         chains_ = findHoleChains(faces_, tol_);
         for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
         if (opt_.directions.empty()) {
@@ -60,7 +63,15 @@ public:
             }
         }
         assignFaceRoles(tree_, faces_, tol_);
-        reportUnclaimedFaces(tree_, onBlank_);
+        // The blank's edge chamfers no element took are chamfers of the part itself.
+        std::vector<bool> accounted = onBlank_;
+        accounted.resize(static_cast<std::size_t>(faces_.size()), false);
+        for (std::size_t i = 0; i < edgeChamfers_.size(); ++i)
+            if (edgeChamfers_[i] && tree_.faceElement[i] < 0) {
+                tree_.faceRoles[i] = FaceRole::Chamfer;
+                accounted[i] = true;
+            }
+        reportUnclaimedFaces(tree_, accounted);
         return std::move(tree_);
     }
 
@@ -72,7 +83,8 @@ private:
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
-    std::vector<Vec3> axes_;     // principal axes, on first use
+    std::vector<Vec3> axes_;     // principal axes
+    std::vector<bool> edgeChamfers_;  // per face: a chamfer on an edge of the blank
     RegionWidths widths_;
     std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
     std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
@@ -124,6 +136,7 @@ private:
     // Directions by what is still to machine, then the principal axes.
     void runAuto() {
         SetupDirectionSearch search(faces_, tol_);
+        search.setAside(edgeChamfers_);
         for (int round = 0; round < 12; ++round) {
             const std::optional<Vec3> d = search.next(claimed_);
             if (!d) break;
@@ -184,7 +197,9 @@ private:
         measureWidths(made, claimed_, widths_, threads_);
         attachTreeFeatures(made);
         for (ElementDraft& in : made) in.el.setup = setup.id;
-        releaseReservedFaces(made, pendingChainFaces());
+        std::vector<bool> reserved = pendingChainFaces();
+        for (std::size_t i = 0; i < reserved.size(); ++i) reserved[i] = reserved[i] || edgeChamfers_[i];
+        releaseReservedFaces(made, reserved);
 
         claimFaces(made, setup, claimed_, tree_);
         tree_.setups.push_back(std::move(setup));

@@ -58,6 +58,10 @@ Vec3 checkedDirection(const FaceCatalogue& faces, const Tolerances& tol, const V
 SetupDirectionSearch::SetupDirectionSearch(const FaceCatalogue& faces, const Tolerances& tol)
     : faces_(faces), tol_(tol), consumed_(static_cast<std::size_t>(faces.size()), false) {}
 
+namespace {
+constexpr double kPrincipalShare = 0.2;  // of the best direction's score
+}  // namespace
+
 std::optional<Vec3> SetupDirectionSearch::next(const std::vector<bool>& claimed) {
     std::vector<Vec3> cands;
     for (int i = 0; i < faces_.size(); ++i) {
@@ -77,14 +81,26 @@ std::optional<Vec3> SetupDirectionSearch::next(const std::vector<bool>& claimed)
         for (const Vec3& d : tried_) seen |= dot(d, c) >= tol_.parallelCos;
         if (!seen) dirs.push_back(c);
     }
-    double bestScore = 0;
-    Vec3 best{0, 0, 0};
+    // The part's principal axes first, as a machinist clamps it: a slanted face (an edge
+    // chamfer, a step a few degrees off) calls for a tilted setup only when it holds far more
+    // to machine than any principal axis.
+    if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
+    auto principal = [&](const Vec3& d) {
+        for (const Vec3& a : axes_)
+            if (dot(a, d) >= tol_.parallelCos) return true;
+        return false;
+    };
+    double bestScore = 0, bestPrincipalScore = 0;
+    Vec3 best{0, 0, 0}, bestPrincipal{0, 0, 0};
     const auto ts = std::chrono::steady_clock::now();
     for (const Vec3& d : dirs) {
         const double s = score(d, claimed, false);
         // Ties resolve by the score only up to rounding, then by the first found.
         if (s > bestScore * (1 + 1e-9) + 1e-9) bestScore = s, best = d;
+        if (principal(d) && s > bestPrincipalScore * (1 + 1e-9) + 1e-9) bestPrincipalScore = s, bestPrincipal = d;
     }
+    if (bestPrincipalScore >= kPrincipalShare * bestScore && bestPrincipalScore > 0)
+        bestScore = bestPrincipalScore, best = bestPrincipal;
     if (std::getenv("AERONC_TRACE"))
         std::fprintf(stderr, "scored %zu directions: %.3f s\n", dirs.size(),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
@@ -104,6 +120,11 @@ std::vector<Vec3> SetupDirectionSearch::untriedPrincipalAxes() {
         out.push_back(d);
     }
     return out;
+}
+
+void SetupDirectionSearch::setAside(const std::vector<bool>& faces) {
+    for (std::size_t i = 0; i < faces.size() && i < consumed_.size(); ++i)
+        if (faces[i]) consumed_[i] = true;
 }
 
 bool SetupDirectionSearch::markTried(const Vec3& d) {
