@@ -12,6 +12,7 @@ PKGS=(
   qtbase5-dev python3-pyside2.qtcore python3-pyside2.qtgui python3-pyside2.qtwidgets
   xvfb xauth python3-pytest python3-numpy python3-matplotlib
   linuxcnc-uspace
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${PKGS[@]}"; do

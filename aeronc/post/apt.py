@@ -33,19 +33,21 @@ def export(objectslist, filename, argstring):
 
 
 def post_apt_text(apt_text, argstring="", dialect="840d", program_name="AERONC"):
-    """An APT CL text -> (NC text, summary)."""
+    """An APT CL text (str, or bytes as read from a file) -> (NC text, summary). Bytes that are
+    not UTF-8 can reach the NC text only inside comments (PPRINT); they are shown as U+FFFD."""
     from aeronc import _core
     from aeronc.post import machines, nc_post
     opts, a = nc_post.options(argstring, dialect, None, program_name)
     machine_json, source = machines.load(a.machine, a.machine_file)
     with from_core(PostError):
         data, summary = _core.post_apt(apt_text, machine_json, source, __import__("json").dumps(opts))
-    return data.decode("utf-8"), summary
+    return data.decode("utf-8", errors="replace"), summary
 
 
 def post_apt_file(apt_path, nc_path, argstring="", dialect="840d"):
     """Post an APT file to NC; writes nc_path (atomically) unless it is "-"; returns the text."""
-    with open(apt_path, encoding="utf-8") as f:
+    # As bytes: the core reads them and names the line of anything it cannot read.
+    with open(apt_path, "rb") as f:
         apt_text = f.read()
     name = os.path.splitext(os.path.basename(nc_path if nc_path != "-" else apt_path))[0]
     text, _ = post_apt_text(apt_text, argstring, dialect, name)

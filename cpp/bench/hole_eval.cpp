@@ -2,7 +2,7 @@
 // concave cylinders whose coaxial faces cover more than half the circle). A face counts as
 // found when recognition gives it the role hole_wall.
 // Usage: aeronc_hole_eval PART.step... (automatic setup directions)
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/HoleTruth.h>
 

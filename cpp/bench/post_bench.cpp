@@ -1,6 +1,6 @@
 // Post core figures: FreeCAD Path text of a 5-axis job -> NC text, per dialect, in one run.
 // Usage: aeronc_post_bench [--moves N] [--machines <folder>]
-#include <aeronc/kinematics/Post.h>
+#include <aeronc/post/Post.h>
 
 #include <chrono>
 #include <cmath>
@@ -9,6 +9,7 @@
 #include <string>
 
 using namespace aeronc::kinematics;
+using namespace aeronc::post;
 
 namespace {
 

@@ -4,7 +4,7 @@
 // Usage: aeronc_bench [--sizes 10,100,1000] [--dir FOLDER]
 //        aeronc_bench --parts A.stp B.stp ...
 // Each size or part runs in a child process so its peak memory is its own.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 

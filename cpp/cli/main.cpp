@@ -8,11 +8,17 @@
 //                       [--machine NAME] [--resources DIR]
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
+//   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
+//                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
+#include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/OcctFaults.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
@@ -25,7 +31,9 @@
 #include <Standard_Failure.hxx>
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -33,13 +41,18 @@
 #include <map>
 #include <sstream>
 #include <algorithm>
+#include <csignal>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
 const char* kUsage =
     "usage:\n"
     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
-    "                   [--threads N] [--face-names]\n"
+    "                   [--threads N] [--face-names] [--time-limit S]\n"
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
     "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
@@ -48,7 +61,11 @@ const char* kUsage =
     "      (PART is recognised first; --tree plans a stored recognition, e.g. recognise's --json;\n"
     "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
     "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
-    "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n";
+    "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"
+    "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+    "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
+    "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
+    "  --time-limit S (recognise, select-tools PART): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -116,8 +133,13 @@ int recogniseCmd(int argc, char** argv) {
         else return false;
         return true;
     });
-    const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
-    const auto tree = aeronc::recognition::recognise(solid, opt);
+    aeronc::recognition::DomainTree tree;
+    aeronc::runCatchingOcctFaults(
+        [&] {
+            const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
+            tree = aeronc::recognition::recognise(solid, opt);
+        },
+        part);
     std::string text = aeronc::recognition::toJson(tree);
     if (faceNames) {  // the STEP name of each face, for comparing with labelled data
         auto j = nlohmann::json::parse(text);
@@ -247,8 +269,9 @@ int selectToolsCmd(int argc, char** argv) {
                                  ")");
     }
 
-    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt);
-    const auto plan = aeronc::toolselect::planTools(tree, kb, material, machine);
+    if (!fromTree)
+        aeronc::runCatchingOcctFaults([&] { tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt); }, input);
+    const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
     const std::string text = aeronc::toolselect::toJson(plan, material);
     if (jsonOut.empty()) std::cout << text << "\n";
     else writeText(jsonOut, text);
@@ -264,6 +287,82 @@ int selectToolsCmd(int argc, char** argv) {
         if (!c.error.empty()) std::cerr << "warning: " << c.error << "\n";
     for (const auto& h : plan.holes)
         if (!h.error.empty()) std::cerr << "warning: " << h.error << "\n";
+    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
+    return 0;
+}
+
+// chain PART ... recognises the part, then plans tools and the chain; chain --tree FILE ...
+// plans a stored recognition.
+int chainCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("chain needs a part file or --tree RECOGNITION.json");
+    const bool fromTree = std::string(argv[2]) == "--tree";
+    if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
+    const std::string part = argv[fromTree ? 3 : 2];
+    std::string jsonOut, kbPath, material, resources, machine, family = "integral_panel";
+    bool directions = false;
+    aeronc::recognition::RecogniseOptions opt;
+    forEachOption(
+        argc, argv,
+        [&](const std::string& a, const Next& next) {
+            if (a == "--json") jsonOut = next();
+            else if (a == "--kb") kbPath = next();
+            else if (a == "--material") material = next();
+            else if (a == "--machine") machine = next();
+            else if (a == "--family" || a == "--template") family = next();
+            else if (a == "--directions") {
+                opt.directions = parseDirections(next());
+                directions = true;
+            } else if (a == "--resources") resources = next();
+            else return false;
+            return true;
+        },
+        fromTree ? 4 : 3);
+    if (fromTree && directions)
+        throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
+    if (kbPath.empty()) throw aeronc::inputError("chain needs --kb KB.sqlite (created when missing)");
+    if (material.empty()) throw aeronc::inputError("chain needs --material NAME, e.g. 7050-T7451");
+
+    aeronc::recognition::DomainTree tree;
+    if (fromTree) {
+        const std::string text = aeronc::readTextFile(part, "recognition file");
+        try {
+            tree = aeronc::recognition::fromJson(text);
+        } catch (const aeronc::Error& e) {
+            throw aeronc::inputError(part + ": " + e.what());
+        }
+    }
+    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
+        kbPath, [&] { return kbResources(resources, argv[0]).string(); });
+    // The slow part last: material, machine and template are checked before recognition.
+    const auto known = kb.workpieceMaterials();
+    if (std::find(known.begin(), known.end(), material) == known.end()) {
+        std::string list;
+        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
+        throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list +
+                                 ")");
+    }
+    aeronc::kb::chainOptions(kb, material, machine);
+    aeronc::kb::loadProcessTemplate(kb, family);
+
+    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(part), opt);
+    const auto chain = aeronc::kb::planChain(tree, kb, material, machine, family);
+    const std::string text = aeronc::chain::toJson(chain);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+
+    int failed = 0, processes = 0;
+    for (const auto& c : chain.checks) failed += !c.ok;
+    for (const auto& s : chain.setups) processes += static_cast<int>(s.processes.size());
+    std::cerr << part << ": template " << chain.processTemplate.name << ", " << tree.elements.size()
+              << " element(s), " << chain.units.size() << " unit(s) in " << processes << " process(es), "
+              << chain.unmachined.size() << " unmachined note(s); rapid travel " << chain.travel.rulesOnly << " -> "
+              << chain.travel.optimised << " mm (" << chain.travel.savedPercent << " % saved); " << failed
+              << " rule failure(s)\n";
+    for (const auto& m : chain.unmachined)
+        std::cerr << "unmachined: element " << m.element << (m.step ? std::string(" step ") + toString(*m.step) : "")
+                  << ": " << m.reason << "\n";
+    for (const auto& c : chain.checks)
+        if (!c.ok) std::cerr << "rule " << c.rule << ": " << c.node << ": " << c.message << "\n";
     for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
     return 0;
 }
@@ -287,13 +386,11 @@ int optimiseCmd(int argc, char** argv) {
         return true;
     });
     const auto how = aeronc::optimise::parseMethod(method);
-    std::ifstream in(file);
-    if (!in) throw aeronc::inputError(file + ": no such file or not readable");
     nlohmann::json params;
     try {
-        params = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-        throw aeronc::inputError(file + ": not valid JSON: " + e.what());
+        params = aeronc::optimise::parameterJson(aeronc::readTextFile(file, "parameter file"));
+    } catch (const aeronc::Error& e) {
+        throw aeronc::inputError(file + ": " + e.what());
     }
     if (!kbPath.empty()) {
         const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
@@ -320,20 +417,14 @@ void quietOcct() {
     m->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    quietOcct();
-    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
-        std::cerr << kUsage;
-        return argc < 2 ? 2 : 0;
-    }
-    const std::string cmd = argv[1];
+// One command, every failure a one-line message: exit 1 for an error, 2 for a usage mistake.
+int runCommand(const std::string& cmd, int argc, char** argv) {
     try {
         if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
         if (cmd == "panel") return panelCmd(argc, argv);
         if (cmd == "select-tools") return selectToolsCmd(argc, argv);
         if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
+        if (cmd == "chain") return chainCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {
@@ -346,4 +437,73 @@ int main(int argc, char** argv) {
         std::cerr << "aeronc: error: " << e.what() << "\n";
         return 1;
     }
+}
+
+// The last line of defence for the commands that read a part: a fault the OCCT handlers cannot
+// turn into an error (one in another thread, one that breaks the handler itself) kills only a
+// child process; this process reports it in one line and exits 1, never with a signal.
+// timeLimit > 0: the child is stopped after that many seconds (OCCT's shape healing can loop
+// for good on a damaged file, and takes no request to stop).
+int inChildProcess(const std::function<int()>& command, const std::string& input, unsigned timeLimit) {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return command();  // no child to be had: run here
+    if (pid == 0) {
+        if (timeLimit > 0) alarm(timeLimit);
+        const int code = command();
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        _exit(code);  // no static destructors after a fault the handlers caught
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) {
+            std::cerr << "aeronc: error: lost the process reading " << input << "\n";
+            return 1;
+        }
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    if (sig == SIGALRM) {
+        std::cerr << "aeronc: error: " << input << ": reading or recognising the part took longer than --time-limit "
+                  << timeLimit << " s; the file is probably damaged\n";
+        return 1;
+    }
+    std::cerr << "aeronc: error: " << input << ": reading or recognising the part failed with signal " << sig << " ("
+              << strsignal(sig) << "); the file is probably damaged\n";
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    quietOcct();
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::cerr << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string cmd = argv[1];
+    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools") && argc > 2 &&
+                           std::string(argv[2]) != "--tree";
+    if (!readsPart) return runCommand(cmd, argc, argv);
+    // --time-limit SECONDS belongs to the child process, not to the command.
+    std::vector<char*> args;
+    unsigned timeLimit = 0;
+    for (int i = 0; i < argc; ++i) {
+        if (std::string(argv[i]) != "--time-limit") {
+            args.push_back(argv[i]);
+            continue;
+        }
+        const std::string v = i + 1 < argc ? argv[++i] : "";
+        if (v.empty() || v.size() > 6 || v.find_first_not_of("0123456789") != std::string::npos || std::stoul(v) == 0) {
+            std::cerr << "aeronc: error: --time-limit wants a whole number of seconds from 1 to 999999\n";
+            return 1;
+        }
+        timeLimit = static_cast<unsigned>(std::stoul(v));
+    }
+    args.push_back(nullptr);
+    const int n = static_cast<int>(args.size()) - 1;
+    return inChildProcess([&] { return runCommand(cmd, n, args.data()); }, argv[2], timeLimit);
 }

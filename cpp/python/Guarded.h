@@ -17,6 +17,20 @@ inline PyObject*& errorType() {
     return type;
 }
 
+// Sets the Python exception `type` with `message`. A message may quote input that is not
+// UTF-8 (a byte of a file, half a character): such bytes become \xNN escapes, so the caller
+// always gets `type`, never a UnicodeDecodeError in its place.
+inline void setError(PyObject* type, const std::string& message) {
+    PyObject* text = PyUnicode_DecodeUTF8(message.data(), static_cast<Py_ssize_t>(message.size()), "backslashreplace");
+    if (!text) {
+        PyErr_Clear();
+        PyErr_SetString(type, "a failure in the AeroNC core whose message cannot be shown");
+        return;
+    }
+    PyErr_SetObject(type, text);
+    Py_DECREF(text);
+}
+
 // Runs f; any C++ exception becomes the Python exception `type` with its message.
 template <class F>
 auto guardedAs(PyObject* type, F f) -> decltype(f()) {
@@ -25,13 +39,13 @@ auto guardedAs(PyObject* type, F f) -> decltype(f()) {
     } catch (const pybind11::error_already_set&) {
         throw;
     } catch (const Error& e) {
-        PyErr_SetString(type, e.what());
+        setError(type, e.what());
     } catch (const Standard_Failure& e) {
-        PyErr_SetString(type, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
+        setError(type, std::string("OpenCASCADE: ") + e.GetMessageString());
     } catch (const std::exception& e) {
-        PyErr_SetString(type, e.what());
+        setError(type, e.what());
     } catch (...) {
-        PyErr_SetString(type, "unknown failure in the AeroNC core");
+        setError(type, "unknown failure in the AeroNC core");
     }
     throw pybind11::error_already_set();
 }

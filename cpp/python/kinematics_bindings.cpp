@@ -2,7 +2,9 @@
 // PostError (a RuntimeError) with the core's message; the posting itself runs without the GIL.
 #include "Guarded.h"
 
-#include <aeronc/kinematics/Post.h>
+#include <aeronc/core/JsonNesting.h>
+
+#include <aeronc/post/Post.h>
 
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
@@ -10,6 +12,7 @@
 
 namespace py = pybind11;
 using namespace aeronc::kinematics;
+using namespace aeronc::post;
 
 namespace {
 
@@ -38,7 +41,7 @@ std::vector<PathSection> sectionsFrom(const py::list& list) {
         if (kind == "offset") s.kind = PathSection::Kind::WorkOffset;
         else if (kind == "tool") s.kind = PathSection::Kind::ToolChange;
         else if (kind == "operation") s.kind = PathSection::Kind::Operation;
-        else throw kinematicsError("unknown section kind '" + kind + "'");
+        else throw aeronc::inputError("unknown section kind '" + kind + "'");
         s.label = item<std::string>(d, "label", "");
         s.gcode = item<std::string>(d, "gcode", "");
         if (d.contains("tool")) {
@@ -59,8 +62,17 @@ std::vector<PathSection> sectionsFrom(const py::list& list) {
 }
 
 // Options as JSON text, keys as in docs/post.md.
+// A whole-number option, refused rather than wrapped when it does not fit an int.
+int wholeOption(const nlohmann::json& v, const std::string& key) {
+    if (!v.is_number_integer() || v.get<long long>() < -1000000 || v.get<long long>() > 1000000)
+        throw aeronc::inputError("post option '" + key + "' must be a whole number");
+    return static_cast<int>(v.get<long long>());
+}
+
 std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
+    aeronc::checkJsonNesting(text, "post options");
     const auto j = text.empty() ? nlohmann::json::object() : nlohmann::json::parse(text);
+    if (!j.is_object()) throw aeronc::inputError("post options must be a JSON object");
     NcOptions nc;
     PlanOptions plan;
     for (auto it = j.begin(); it != j.end(); ++it) {
@@ -70,11 +82,11 @@ std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
             const auto d = v.get<std::string>();
             if (d == "840d") nc.dialect = Dialect::Sinumerik840D;
             else if (d == "linuxcnc") nc.dialect = Dialect::LinuxCnc;
-            else throw kinematicsError("unknown dialect '" + d + "' (840d, linuxcnc)");
+            else throw aeronc::inputError("unknown dialect '" + d + "' (840d, linuxcnc)");
         } else if (k == "vectors") nc.vectors = v.get<bool>();
-        else if (k == "precision") nc.precision = v.get<int>();
-        else if (k == "angle_precision") nc.anglePrecision = v.get<int>();
-        else if (k == "vector_precision") nc.vectorPrecision = v.get<int>();
+        else if (k == "precision") nc.precision = wholeOption(v, k);
+        else if (k == "angle_precision") nc.anglePrecision = wholeOption(v, k);
+        else if (k == "vector_precision") nc.vectorPrecision = wholeOption(v, k);
         else if (k == "comments") nc.comments = v.get<bool>();
         else if (k == "line_numbers") nc.lineNumbers = v.get<bool>();
         else if (k == "inverse_time") nc.inverseTime = v.get<bool>();
@@ -84,11 +96,11 @@ std::pair<NcOptions, PlanOptions> optionsFrom(const std::string& text) {
         else if (k == "program_name") nc.programName = v.get<std::string>();
         else if (k == "part_zero") {
             const auto p = v.get<std::vector<double>>();
-            if (p.size() != 3) throw kinematicsError("part_zero must be [x, y, z]");
+            if (p.size() != 3) throw aeronc::inputError("part_zero must be [x, y, z]");
             plan.partZero = Vec3(p[0], p[1], p[2]);
         } else if (k == "retract") plan.retractDistance = v.get<double>();
         else if (k == "chord") plan.chordTolerance = v.get<double>();
-        else throw kinematicsError("unknown post option '" + k + "'");
+        else throw aeronc::inputError("unknown post option '" + k + "'");
     }
     return {nc, plan};
 }

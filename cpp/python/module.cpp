@@ -1,10 +1,12 @@
 // aeronc._core: the binding between FreeCAD's Python and the C++ core.
 // Every C++ and OCCT exception stops here and becomes RecognitionError.
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/OcctFaults.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
@@ -55,19 +57,25 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 }  // namespace
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
+void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
+void bindChain(py::module_& m);     // chain_bindings.cpp
+void bindVerify(py::module_& m);    // verify_bindings.cpp: simulation of a program against the part
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
     aeronc::python::errorType() = py::exception<Error>(m, "RecognitionError", PyExc_RuntimeError).ptr();
     aeronc::python::bindKnowledgeBase(m);
 
-    // Faces numbered as the shape numbers them: the FaceN of the object the shape came from.
-    auto recogniseWith = [](const TopoDS_Shape& shape, const std::string& origin,
-                            const recognition::RecogniseOptions& o) {
+    // Reading and recognition run with OCCT's faults caught: a damaged shape that makes
+    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on. Faces are
+    // numbered as the shape numbers them: the FaceN of the object the shape came from.
+    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const std::string& origin,
+                            const recognition::RecogniseOptions& o, const std::string& what) {
         recognition::DomainTree t;
         {
             py::gil_scoped_release nogil;
-            t = recognition::recogniseShape(shape, origin, o);
+            runCatchingOcctFaults([&] { t = recognition::recogniseShape(load(), origin, o); }, what);
         }
         return recognition::toJson(t, -1);
     };
@@ -79,7 +87,8 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(shapeFromBrepText(brep), "BREP text", o);
+                return recogniseWith([&] { return shapeFromBrepText(brep); }, "BREP text", o,
+                                     "recognising the shape");
             });
         },
         py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
@@ -94,7 +103,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith(loadPart(path), path, o);
+                return recogniseWith([&] { return loadPart(path); }, path, o, path);
             });
         },
         py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,
@@ -110,7 +119,7 @@ PYBIND11_MODULE(_core, m) {
                 py::gil_scoped_release nogil;
                 const auto tree = recognition::fromJson(treeJson);
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
-                return toolselect::toJson(toolselect::planTools(tree, kb, material, machine), material, -1);
+                return toolselect::toJson(kb::planTools(tree, kb, material, machine), material, -1);
             });
         },
         py::arg("tree_json"), py::arg("kb_path"), py::arg("material"), py::arg("sql_folder"),
@@ -147,5 +156,9 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindChain(m);
     bindKinematics(m);
+    bindToolpath(m);
+    bindCompensation(m);
+    bindVerify(m);
 }

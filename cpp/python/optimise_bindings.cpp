@@ -41,13 +41,7 @@ py::tuple solveParameters(const nlohmann::json& params, const std::string& metho
     return py::make_tuple(text, json);
 }
 
-nlohmann::json parseJson(const std::string& text) {
-    try {
-        return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        throw aeronc::inputError(std::string("parameters are not valid JSON: ") + e.what());
-    }
-}
+nlohmann::json parseJson(const std::string& text) { return aeronc::optimise::parameterJson(text); }
 
 }  // namespace
 

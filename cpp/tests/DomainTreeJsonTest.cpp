@@ -1,7 +1,7 @@
 // The domain tree read back from its JSON: every field toJson writes comes back equal, on
 // generated panels, on the NIST parts and on a tree made by hand; bad text is refused with an
 // input error that names the field at fault.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>

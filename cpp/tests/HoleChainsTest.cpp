@@ -1,6 +1,6 @@
 // Holes found over the face adjacency: on any axis, opening onto any face, cut in part by
 // other features; with their counterbores and countersinks as the slicing gives them.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/HoleTruth.h>
 

@@ -1,5 +1,5 @@
 // Recognition of generated integral panels against the truth the generator knows.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 

@@ -1,8 +1,9 @@
 // Tool selection from the stored tree plans exactly what it planned from the part: the tree
 // written as JSON and read back gives the same plan JSON, on the sample panel (both sides) and
 // on a NIST part.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/toolselect/ElementPlanning.h>
@@ -35,9 +36,9 @@ protected:
                                                              [] { return (fs::path(AERONC_RESOURCES) / "kb").string(); });
         const std::string material = "7050-T7451", machine = "AC-5AX";
         const recognition::DomainTree tree = recognition::recognise(loadPart(part), options);
-        const toolselect::ToolPlan direct = toolselect::planTools(tree, kb, material, machine);
+        const toolselect::ToolPlan direct = kb::planTools(tree, kb, material, machine);
         const recognition::DomainTree stored = recognition::fromJson(recognition::toJson(tree, -1));
-        const toolselect::ToolPlan fromStored = toolselect::planTools(stored, kb, material, machine);
+        const toolselect::ToolPlan fromStored = kb::planTools(stored, kb, material, machine);
         EXPECT_EQ(toolselect::toJson(fromStored, material), toolselect::toJson(direct, material));
 
         // The plan is not trivially equal: it has elements and tools.

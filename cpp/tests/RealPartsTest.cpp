@@ -1,6 +1,6 @@
 // Recognition on parts nobody here made: the NIST CTC/FTC test parts (shared/data/nist) and
 // the milled parts of shared/data/real.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/HoleTruth.h>
 

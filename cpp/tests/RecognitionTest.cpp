@@ -1,6 +1,6 @@
 // Recognition on parts built here with known answers, and on bad input.
 #include <aeronc/core/Error.h>
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 
 #include <BRepAlgoAPI_Cut.hxx>

@@ -229,12 +229,15 @@ class PostTest(unittest.TestCase):
             with open(os.path.join(kb, name), encoding="utf-8") as f:
                 db.executescript(f.read())
         for name in machines.known_machines():
-            row = db.execute("SELECT a_min, a_max, c_min, c_max FROM machine WHERE name = ?", (name,)).fetchone()
+            row = db.execute("SELECT a_min, a_max, c_min, c_max, max_feed_mm_min, max_spindle_rpm FROM machine "
+                             "WHERE name = ?", (name,)).fetchone()
             if row is None:
                 continue  # not in the knowledge base yet (the drilling head)
             text, _ = machines.load(name)
-            axes = {a["name"]: (a["min"], a["max"]) for a in json.loads(text)["rotaryAxes"]}
-            self.assertEqual((axes["A"][0], axes["A"][1], axes["C"][0], axes["C"][1]), row, name)
+            machine = json.loads(text)
+            axes = {a["name"]: (a["min"], a["max"]) for a in machine["rotaryAxes"]}
+            self.assertEqual((axes["A"][0], axes["A"][1], axes["C"][0], axes["C"][1],
+                              machine["maxFeed"], machine["maxSpindleSpeed"]), row, name)
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
 #include <aeronc/core/Error.h>
+#include <aeronc/core/JsonNesting.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/FreeCadToolLibrary.h>
 
@@ -30,6 +31,7 @@ std::string lower(std::string s) {
 }
 
 ojson parse(const std::string& text, const std::string& what) {
+    checkJsonNesting(text, what);
     try {
         return ojson::parse(text);
     } catch (const std::exception& e) {
@@ -94,6 +96,27 @@ bool setParam(ojson& bit, const std::string& key, double v, bool add) {
     return true;
 }
 
+// A whole number in [lo, 2^31) from a JSON number or, as FreeCAD 0.19 wrote some, a string
+// of digits; anything else (a fraction, an overflow, text) is an error naming `what`.
+int wholeNumber(const ojson& v, long long lo, const std::string& what) {
+    long long n = 0;
+    bool ok = false;
+    if (v.is_number_integer()) {
+        ok = !(v.is_number_unsigned() && v.get<unsigned long long>() > 2147483647ULL);
+        if (ok) n = v.get<long long>();
+    } else if (v.is_string()) {
+        const std::string& t = v.get_ref<const std::string&>();
+        ok = !t.empty() && t.size() <= 10 && t.find_first_not_of("0123456789") == std::string::npos;
+        if (ok) n = std::stoll(t);
+    }
+    if (!ok || n < lo || n > 2147483647LL) {
+        std::string shown = v.is_primitive() ? v.dump() : std::string(v.is_array() ? "an array" : "an object");
+        if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
+        throw inputError(what + " must be a whole number from " + std::to_string(lo) + " to 2147483647, not " + shown);
+    }
+    return static_cast<int>(n);
+}
+
 }  // namespace
 
 double lengthOf(const std::string& quantity, const std::string& what) {
@@ -130,14 +153,14 @@ FreeCadLibrary readFreeCadLibrary(const std::string& fctlPath) {
     const ojson j = parse(lib.document, who);
     if (!j.is_object() || !j.contains("tools") || !j["tools"].is_array())
         throw inputError(who + ": no \"tools\" list");
-    lib.version = j.value("version", 1);
+    lib.version = j.contains("version") ? wholeNumber(j["version"], 1, who + ": \"version\"") : 1;
     std::set<int> numbers;
     for (const ojson& entry : j["tools"]) {
         if (!entry.is_object() || !entry.contains("nr") || !entry.contains("path") || !entry["nr"].is_number_integer() ||
             !entry["path"].is_string())
             throw inputError(who + ": a tool entry needs an integer \"nr\" and a \"path\"");
         FreeCadBit bit;
-        bit.nr = entry["nr"].get<int>();
+        bit.nr = wholeNumber(entry["nr"], 0, who + ": tool \"nr\"");
         if (!numbers.insert(bit.nr).second)
             throw inputError(who + ": tool number " + std::to_string(bit.nr) + " appears twice");
         const fs::path rel(entry["path"].get<std::string>());
@@ -193,13 +216,16 @@ BitTool toolFromBit(const FreeCadBit& bit, const BitDefaults& defaults) {
     if (!d) throw inputError(who + ": no Diameter parameter");
     t.diameter = *d;
     out.overallLength = param(j, "Length", who);
+    if (out.overallLength && !(*out.overallLength > 0))
+        throw inputError(who + ": parameter Length " + std::to_string(*out.overallLength) + " mm must be positive");
     double cutting = 0;
     for (const char* key : {"CuttingEdgeHeight", "BladeThickness"})
         if (const auto v = param(j, key, who)) {
+            if (!(*v > 0)) throw inputError(who + ": parameter " + key + " " + std::to_string(*v) + " mm must be positive");
             cutting = *v;
             break;
         }
-    if (!(cutting > 0)) cutting = out.overallLength.value_or(t.diameter);  // a drill cuts along its length
+    if (cutting == 0) cutting = out.overallLength.value_or(t.diameter);  // a drill cuts along its length
     t.fluteLength = cutting;
     t.reach = std::max(cutting, out.overallLength.value_or(cutting));
     if (t.type == "ball") {
@@ -211,10 +237,7 @@ BitTool toolFromBit(const FreeCadBit& bit, const BitDefaults& defaults) {
     t.material = defaults.toolMaterial;
     t.flutes = defaults.flutes;
     if (const auto a = j.find("attribute"); a != j.end() && a->is_object()) {
-        if (const auto f = a->find("Flutes"); f != a->end()) {
-            if (f->is_number_integer()) t.flutes = f->get<int>();
-            else if (f->is_string()) t.flutes = std::atoi(f->get<std::string>().c_str());
-        }
+        if (const auto f = a->find("Flutes"); f != a->end()) t.flutes = wholeNumber(*f, 1, who + ": attribute Flutes");
         if (const auto m = a->find("Material"); m != a->end() && m->is_string() && !m->get<std::string>().empty())
             t.material = m->get<std::string>();
     }

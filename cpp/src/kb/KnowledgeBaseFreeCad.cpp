@@ -32,9 +32,9 @@ StoredTool storedTool(sqlite3* db, const std::string& path, const std::string& i
                  "LEFT JOIN freecad_tool_bit b ON b.tool_id = tool.id WHERE tool.id = ?")
                     .c_str());
     s.bind(1, id);
-    if (!s.step("reading a tool")) throw inputError("knowledge base " + quoted(path) + ": unknown tool " + quoted(id));
+    if (!s.step("reading a tool")) notFound(db, path, "knowledge base " + quoted(path) + ": unknown tool " + quoted(id));
     StoredTool out;
-    out.tool = toolFromRow(s);
+    out.tool = toolFromRow(s, path);
     out.overallLength = s.optReal(8);
     if (!s.isNull(9)) out.bitFile = s.text(9), out.bitDocument = s.text(10);
     return out;
@@ -126,10 +126,11 @@ FreeCadLibrary KnowledgeBase::freeCadLibrary(const std::string& name) const {
     Statement lib(db, path_, "SELECT version, document FROM freecad_tool_library WHERE name = ?");
     lib.bind(1, name);
     if (!lib.step("reading a FreeCAD library"))
-        throw inputError("knowledge base " + quoted(path_) + ": no FreeCAD library " + quoted(name) + " (known: " +
+        notFound(db, path_, "knowledge base " + quoted(path_) + ": no FreeCAD library " + quoted(name) + " (known: " +
                          joined(freeCadLibraryNames()) + ")");
     FreeCadLibrary out;
     out.name = name;
+    lib.about("FreeCAD library " + quoted(name));
     out.version = lib.integer(0);
     out.document = lib.text(1);
     Statement e(db, path_, "SELECT nr, tool_id FROM freecad_tool_library_entry WHERE library = ? ORDER BY nr");

@@ -64,7 +64,8 @@ void bindCell(Statement& s, int i, const Cell& v, const TableColumn& c, const st
 
 const std::vector<std::string>& KnowledgeBase::editableTables() {
     static const std::vector<std::string> t = {"tool", "cutting_condition", "machine", "workpiece_material",
-                                               "tool_material", "threshold", "process_template", "sequencing_rule"};
+                                               "tool_material", "threshold", "part_family", "step_order",
+                                               "process_template", "template_step", "sequencing_rule"};
     return t;
 }
 
@@ -82,7 +83,7 @@ Table KnowledgeBase::table(const std::string& name) const {
             if (s.isNull(col)) row.emplace_back(std::nullopt);
             else if (sqlite3_column_type(s.raw(), col) == SQLITE_FLOAT) {
                 // Shortest text that reads back to the same double.
-                const double x = s.real(col);
+                const double x = sqlite3_column_double(s.raw(), col);  // inf too: the editor shows it
                 char buf[32];
                 for (int prec = 6; prec <= 17; ++prec) {
                     std::snprintf(buf, sizeof buf, "%.*g", prec, x);

@@ -5,6 +5,8 @@
 
 #include <sqlite3.h>
 
+#include <climits>
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -75,8 +77,30 @@ public:
         const unsigned char* p = sqlite3_column_text(stmt_, c);
         return p ? reinterpret_cast<const char*>(p) : std::string();
     }
-    double real(int c) const { return sqlite3_column_double(stmt_, c); }
-    int integer(int c) const { return sqlite3_column_int(stmt_, c); }
+    // What the row is, for messages about its cells ("tool 'EM-F2'").
+    void about(std::string row) { row_ = std::move(row); }
+    // A cell of a REAL column: a finite number. SQLite keeps whatever a program stored there
+    // (text, NULL, a blob, an overflow read as inf), and a CHECK (x > 0) lets text through, so
+    // anything else is an error naming the row and the column, never 0.0 or inf.
+    double real(int c) const {
+        const int type = sqlite3_column_type(stmt_, c);
+        if (type != SQLITE_INTEGER && type != SQLITE_FLOAT) notANumber(c, "a number");
+        const double v = sqlite3_column_double(stmt_, c);
+        if (!std::isfinite(v)) notANumber(c, "a finite number");
+        return v;
+    }
+    // A cell of an INTEGER column: a whole number that fits an int.
+    int integer(int c) const {
+        const int type = sqlite3_column_type(stmt_, c);
+        if (type == SQLITE_INTEGER) {
+            const long long v = sqlite3_column_int64(stmt_, c);
+            if (v >= INT_MIN && v <= INT_MAX) return static_cast<int>(v);
+        } else if (type == SQLITE_FLOAT) {
+            const double v = sqlite3_column_double(stmt_, c);
+            if (v == std::floor(v) && v >= INT_MIN && v <= INT_MAX) return static_cast<int>(v);
+        }
+        notANumber(c, "a whole number from " + std::to_string(INT_MIN) + " to " + std::to_string(INT_MAX));
+    }
     bool isNull(int c) const { return sqlite3_column_type(stmt_, c) == SQLITE_NULL; }
     std::optional<double> optReal(int c) const {
         if (sqlite3_column_type(stmt_, c) == SQLITE_NULL) return std::nullopt;
@@ -85,10 +109,28 @@ public:
 
 private:
     void check(int rc) { if (rc != SQLITE_OK) fail(db_, rc, path_, "binding a value"); }
+    [[noreturn]] void notANumber(int c, const std::string& expected) const {
+        std::string held;
+        switch (sqlite3_column_type(stmt_, c)) {
+            case SQLITE_NULL: held = "NULL"; break;
+            case SQLITE_BLOB: held = "binary data"; break;
+            case SQLITE_TEXT: {
+                std::string t = text(c);
+                if (t.size() > 40) t = t.substr(0, 40) + "...";
+                held = "the text " + quoted(t);
+                break;
+            }
+            default: held = text(c);
+        }
+        const char* name = sqlite3_column_name(stmt_, c);
+        throw inputError("knowledge base " + quoted(path_) + ": " + (row_.empty() ? "" : row_ + ": ") + "column " +
+                         (name ? name : "?") + " holds " + held + ", not " + expected);
+    }
     sqlite3* db_;
     const std::string& path_;
     sqlite3_stmt* stmt_ = nullptr;
     int lastError_ = 0;
+    std::string row_;
 };
 
 inline void exec(sqlite3* db, const std::string& path, const std::string& sql, const std::string& what) {
@@ -128,6 +170,35 @@ private:
     bool done_ = false;
 };
 
+
+// A lookup that finds nothing may be looking at a damaged page (an index page emptied by a
+// torn write hides its rows), so the file is checked before a row is called unknown. Throws
+// "the database file is corrupt" when it is damaged.
+inline void checkIntact(sqlite3* db, const std::string& path) {
+    std::string verdict;
+    sqlite3_stmt* s = nullptr;
+    if (sqlite3_prepare_v2(db, "PRAGMA integrity_check(3)", -1, &s, nullptr) == SQLITE_OK) {
+        int rc;
+        while ((rc = sqlite3_step(s)) == SQLITE_ROW) {
+            const unsigned char* t = sqlite3_column_text(s, 0);
+            const std::string line = t ? reinterpret_cast<const char*>(t) : "";
+            if (line != "ok") verdict += (verdict.empty() ? "" : "; ") + line;
+        }
+        if (rc != SQLITE_DONE && verdict.empty()) verdict = sqlite3_errmsg(db);
+    } else {
+        verdict = sqlite3_errmsg(db);
+    }
+    sqlite3_finalize(s);
+    if (!verdict.empty())
+        throw inputError("knowledge base " + quoted(path) + ": the database file is corrupt (" + verdict +
+                         "); restore it from a backup");
+}
+
+// checkIntact(), then inputError(message): the row is really unknown.
+[[noreturn]] inline void notFound(sqlite3* db, const std::string& path, const std::string& message) {
+    checkIntact(db, path);
+    throw inputError(message);
+}
 
 inline std::vector<std::string> names(sqlite3* db, const std::string& path, const char* sql) {
     Statement s(db, path, sql);

@@ -12,7 +12,7 @@ Mat3 rotation(const Vec3& axis, double degrees) {
 }  // namespace
 
 Kinematics::Kinematics(MachineModel model, const MachineSetup& setup) : model_(std::move(model)) {
-    if (model_.rotary.size() != 2) throw kinematicsError("machine " + model_.name + ": needs two rotary axes");
+    if (model_.rotary.size() != 2) throw inputError("machine " + model_.name + ": needs two rotary axes");
     const Vec3 partZero = setup.partZero ? *setup.partZero : model_.partZero;
     for (int i = 0; i < 2; ++i) {
         const RotaryAxis& a = model_.rotary[i];

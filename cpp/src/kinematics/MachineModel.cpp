@@ -1,8 +1,10 @@
 // Machine files: reviewable JSON, one per machine, named like the machines of the knowledge base.
+#include <aeronc/core/JsonNesting.h>
 #include <aeronc/kinematics/MachineModel.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -17,7 +19,7 @@ struct Reader {
     const std::string& source;
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw kinematicsError(source + ": " + what);
+        throw inputError(source + ": " + what);
     }
     const json& need(const json& j, const char* key, const std::string& where) const {
         if (!j.is_object() || !j.contains(key)) fail("missing \"" + std::string(key) + "\"" + where);
@@ -32,6 +34,15 @@ struct Reader {
     Vec3 vec(const json& j, const std::string& what) const {
         if (!j.is_array() || j.size() != 3) fail(what + " must be [x, y, z]");
         return {number(j[0], what), number(j[1], what), number(j[2], what)};
+    }
+    double positive(const json& j, const std::string& what) const {
+        const double v = number(j, what);
+        if (v <= 0) fail(what + " must be positive");
+        return v;
+    }
+    std::string text(const json& j, const std::string& what) const {
+        if (!j.is_string()) fail(what + " must be a string");
+        return j.get<std::string>();
     }
     Vec3 unit(const json& j, const std::string& what) const {
         const Vec3 v = vec(j, what);
@@ -56,19 +67,21 @@ std::string MachineModel::kinematicsName() const {
 }
 
 MachineModel machineFromJson(const std::string& text, const std::string& source) {
+    checkJsonNesting(text, source);
     json j;
     try {
         j = json::parse(text);
     } catch (const json::exception& e) {
-        throw kinematicsError(source + ": not valid JSON (" + e.what() + ")");
+        throw inputError(source + ": not valid JSON (" + e.what() + ")");
     }
     const Reader r{source};
+    if (!j.is_object()) r.fail("a machine file holds one JSON object");
     MachineModel m;
     const auto& name = r.need(j, "name", "");
     if (!name.is_string() || name.get<std::string>().empty()) r.fail("\"name\" must be a non-empty string");
     m.name = name.get<std::string>();
-    if (j.contains("description")) m.description = j["description"].get<std::string>();
-    if (j.contains("controller")) m.controller = j["controller"].get<std::string>();
+    if (j.contains("description")) m.description = r.text(j["description"], "\"description\"");
+    if (j.contains("controller")) m.controller = r.text(j["controller"], "\"controller\"");
     if (j.contains("toolDirection")) m.toolDirection = r.unit(j["toolDirection"], "\"toolDirection\"");
 
     const auto& axes = r.need(j, "rotaryAxes", "");
@@ -76,8 +89,9 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
     for (size_t i = 0; i < axes.size(); ++i) {
         const std::string where = " in rotaryAxes[" + std::to_string(i) + "]";
         RotaryAxis a;
+        if (!axes[i].is_object()) r.fail("rotaryAxes[" + std::to_string(i) + "] must be an object");
         const auto& n = r.need(axes[i], "name", where);
-        if (!n.is_string() || n.get<std::string>().size() != 1 || !std::isupper(n.get<std::string>()[0]))
+        if (!n.is_string() || n.get<std::string>().size() != 1 || !std::isupper(static_cast<unsigned char>(n.get<std::string>()[0])))
             r.fail("the name" + where + " must be one capital letter (the NC address)");
         a.name = n.get<std::string>();
         const auto& carrier = r.need(axes[i], "carrier", where);
@@ -103,6 +117,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
 
     if (j.contains("partZero")) m.partZero = r.vec(j["partZero"], "\"partZero\"");
     if (j.contains("linearTravel")) {
+        if (!j["linearTravel"].is_object()) r.fail("\"linearTravel\" must be an object {\"X\": [min, max], ...}");
         LinearTravel t;
         const char* names[3] = {"X", "Y", "Z"};
         for (int k = 0; k < 3; ++k) {
@@ -114,19 +129,34 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
         }
         m.travel = t;
     }
-    if (j.contains("retractDistance")) {
-        m.retractDistance = r.number(j["retractDistance"], "\"retractDistance\"");
-        if (m.retractDistance <= 0) r.fail("\"retractDistance\" must be positive");
+    if (j.contains("retractDistance")) m.retractDistance = r.positive(j["retractDistance"], "\"retractDistance\"");
+    if (j.contains("maxRotaryFeed")) m.maxRotaryFeed = r.positive(j["maxRotaryFeed"], "\"maxRotaryFeed\"");
+    // Feeds and speeds beyond these are refused by the posts; the NC words take up to 1e9.
+    if (j.contains("maxFeed")) {
+        m.maxFeed = r.positive(j["maxFeed"], "\"maxFeed\"");
+        if (*m.maxFeed >= 1e9) r.fail("\"maxFeed\" must be below 1e9 mm/min");
     }
-    if (j.contains("maxRotaryFeed")) {
-        m.maxRotaryFeed = r.number(j["maxRotaryFeed"], "\"maxRotaryFeed\"");
-        if (m.maxRotaryFeed <= 0) r.fail("\"maxRotaryFeed\" must be positive");
+    if (j.contains("maxSpindleSpeed")) {
+        m.maxSpindleSpeed = r.positive(j["maxSpindleSpeed"], "\"maxSpindleSpeed\"");
+        if (*m.maxSpindleSpeed > 2147483647.0) r.fail("\"maxSpindleSpeed\" must fit the S word (at most 2147483647)");
     }
     if (j.contains("sinumerik")) {
         const auto& s = j["sinumerik"];
-        if (s.contains("swivelDataRecord")) m.swivelDataRecord = s["swivelDataRecord"].get<std::string>();
+        if (!s.is_object())
+            r.fail("\"sinumerik\" must be an object {\"swivelDataRecord\": ..., \"directionReference\": ...}");
+        for (const auto& [k, v] : s.items())
+            if (k != "swivelDataRecord" && k != "directionReference") r.fail("unknown entry sinumerik." + k);
+        if (s.contains("swivelDataRecord")) {
+            m.swivelDataRecord = r.text(s["swivelDataRecord"], "sinumerik.swivelDataRecord");
+            // Written inside CYCLE800("..."): a quote or a line break there would end the call.
+            const std::string& n = m.swivelDataRecord;
+            const bool name = !n.empty() && n.size() <= 32 && std::all_of(n.begin(), n.end(), [](char c) {
+                return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            });
+            if (!name) r.fail("sinumerik.swivelDataRecord must be a name of 1 to 32 letters, digits or '_'");
+        }
         if (s.contains("directionReference")) {
-            const auto ref = s["directionReference"].get<std::string>();
+            const auto ref = r.text(s["directionReference"], "sinumerik.directionReference");
             m.directionReference = m.axisIndex(ref);
             if (m.directionReference < 0) r.fail("sinumerik.directionReference \"" + ref + "\" is not a rotary axis");
         }
@@ -136,7 +166,7 @@ MachineModel machineFromJson(const std::string& text, const std::string& source)
 
 MachineModel loadMachineFile(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw kinematicsError("cannot read machine file " + path);
+    if (!in) throw inputError("cannot read machine file " + path);
     std::ostringstream s;
     s << in.rdbuf();
     return machineFromJson(s.str(), path);

@@ -33,7 +33,7 @@ public:
         setup_.partZero = options.partZero;
         kin_ = std::make_unique<Kinematics>(machine, setup_);
         retract_ = options.retractDistance.value_or(machine.retractDistance);
-        if (!(retract_ > 0)) throw kinematicsError("the retract distance must be positive");
+        if (!(retract_ > 0)) throw inputError("the retract distance must be positive");
         for (const auto& a : machine.rotary) hasHead_ |= a.carrier == Carrier::Head;
     }
 
@@ -60,7 +60,7 @@ public:
                     }
                 }
             } catch (const Error& e) {
-                throw kinematicsError(prog_.where(r) + " (" + describe(r) + "): " + e.what());
+                throw inputError(prog_.where(r) + " (" + describe(r) + "): " + e.what());
             }
         }
         return std::move(plan_);
@@ -131,7 +131,7 @@ private:
                               names[k], v, t.min[k], t.max[k], plan_.machine.name.c_str(),
                               plan_.machine.rotary[0].name.c_str(), s.joints.rotary[0],
                               plan_.machine.rotary[1].name.c_str(), s.joints.rotary[1]);
-                throw kinematicsError(b);
+                throw inputError(b);
             }
         }
     }

@@ -38,8 +38,8 @@ RotaryChoice chooseRotary(const Kinematics& kin, const Vec3& axis, const std::ar
         return "tool axis (" + fmt(axis.x()) + ", " + fmt(axis.y()) + ", " + fmt(axis.z()) + ")";
     };
     if (solutions.empty())
-        throw kinematicsError(axisText() + " cannot be reached by the rotary axes " + m.rotary[0].name + " and " +
-                              m.rotary[1].name + " of machine " + m.name);
+        throw inputError(axisText() + " cannot be reached by the rotary axes " + m.rotary[0].name + " and " +
+                         m.rotary[1].name + " of machine " + m.name);
 
     auto cost = [&](const std::array<double, 2>& a) {
         return std::abs(a[0] - previous[0]) + std::abs(a[1] - previous[1]);
@@ -78,7 +78,7 @@ RotaryChoice chooseRotary(const Kinematics& kin, const Vec3& axis, const std::ar
         }
     }
     if (!std::isfinite(bestCost))
-        throw kinematicsError(axisText() + " is out of reach of machine " + m.name + ": " + refusals);
+        throw inputError(axisText() + " is out of reach of machine " + m.name + ": " + refusals);
     choice.branchChange = bestCost > bestFree + 1e-6;
     return choice;
 }

@@ -67,7 +67,7 @@ bool Region::contains(double n, double fz) const {
         return false;
     const double X = std::log(n), Y = std::log(fz);
     for (const auto& h : planes_)
-        if (h.a * X + h.b * Y > h.c + kFeasibilityTolerance) return false;
+        if (!(h.a * X + h.b * Y <= h.c + kFeasibilityTolerance)) return false;  // NaN: not contained
     return true;
 }
 

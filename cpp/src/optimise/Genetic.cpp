@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -82,10 +83,12 @@ private:
         x.fz = std::exp(x.Y);
         x.objective = f_(x.n, x.fz);
         x.violation = 0;
+        constexpr double kNever = std::numeric_limits<double>::infinity();  // NaN is no solution
         for (const auto& c : constraints_) {
             const double u = c.utilisation(x.n, x.fz);
-            if (u > 1 + kFeasibilityTolerance) x.violation += std::log(u);
+            if (!(u <= 1 + kFeasibilityTolerance)) x.violation += std::isfinite(u) ? std::log(u) : kNever;
         }
+        if (!std::isfinite(x.objective)) x.violation = kNever;
     }
 
     const Individual& tournament(const std::vector<Individual>& pop) {

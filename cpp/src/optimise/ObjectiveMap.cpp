@@ -36,6 +36,7 @@ std::vector<RegionPoint> ordered(std::vector<RegionPoint> pts) {
 }  // namespace
 
 nlohmann::json objectiveMap(const Problem& p, const Solution& s, MapBox box) {
+    validate(p);
     if (box.nCount < 2 || box.fzCount < 2 || box.nCount > 1000 || box.fzCount > 1000)
         throw inputError("the map needs 2 to 1000 points each way");
     if (!(box.spread > 1)) throw inputError("the map's spread must be more than 1");

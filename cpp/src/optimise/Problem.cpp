@@ -1,6 +1,8 @@
 #include <aeronc/optimise/Problem.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/optimise/CuttingModel.h>
+#include <aeronc/optimise/Objective.h>
 
 #include <cmath>
 #include <sstream>
@@ -25,6 +27,38 @@ void positive(double v, const std::string& what) {
 void nonNegative(double v, const std::string& what) {
     finite(v, what);
     if (v < 0) throw inputError(what + " must not be negative, got " + num(v));
+}
+
+// Each quantity of the model is a product of powers of n and f_z (or a sum of such), so its
+// extremes over the search box lie at the box's corners: finite and positive there, it is
+// finite and positive everywhere in between. An exponent or coefficient far outside any
+// physical range (q_v = -9.2e18, q_F = 2^63) fails here instead of giving NaN or 0 later.
+void checkModelRange(const Problem& p) {
+    for (const double n : {p.machine.minSpindle, p.machine.maxSpindle})
+        for (const double fz : {p.feedPerTooth.min, p.feedPerTooth.max}) {
+            const Evaluation e = evaluate(p, n, fz);
+            const struct {
+                double v;
+                const char* what;
+            } quantities[] = {{e.force, "cutting force (C_F, x_F, y_F, u_F, q_F, w_F, K_Fc)"},
+                              {e.power, "cutting power (the force and eta)"},
+                              {e.toolLife, "tool life (C_v, m, q_v, x_v, y_v, u_v, p_v, K_v)"},
+                              {e.time, "time per part"}};
+            for (const auto& [v, what] : quantities)
+                if (!(std::isfinite(v) && v > 0))
+                    throw inputError("the coefficients give a " + std::string(what) + " of " + num(v) + " at n = " +
+                                     num(n) + " r/min, f_z = " + num(fz) +
+                                     " mm (a corner of the search box): a coefficient or exponent is outside any "
+                                     "physical range");
+            if (!(std::isfinite(e.cost) && e.cost >= 0))
+                throw inputError("the coefficients give a cost per part of " + num(e.cost) + " at n = " + num(n) +
+                                 " r/min, f_z = " + num(fz) + " mm (a corner of the search box)");
+        }
+    for (const Posynomial& f : {timePerPart(p), costPerPart(p)})
+        for (const auto& t : f.terms)
+            if (!std::isfinite(t.coefficient) || !std::isfinite(t.nExp) || !std::isfinite(t.fzExp))
+                throw inputError("the tool-life coefficients overflow the objective over the search box: a coefficient "
+                                 "or exponent is outside any physical range");
 }
 
 }  // namespace
@@ -93,6 +127,7 @@ void validate(const Problem& p) {
         throw inputError("cost objective has weight w2 > 0 but c_0 and c_t are both zero");
 
     positive(p.quality.raMax, "roughness limit R_a,max");
+    checkModelRange(p);
     positive(p.quality.raCoefficient, "roughness coefficient");
     positive(p.feedPerTooth.min, "f_z search minimum");
     positive(p.feedPerTooth.max, "f_z search maximum");

@@ -1,6 +1,7 @@
 #include <aeronc/optimise/ProblemJson.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/core/JsonNesting.h>
 
 #include <cmath>
 #include <set>
@@ -10,6 +11,16 @@ namespace aeronc::optimise {
 namespace {
 
 using nlohmann::json;
+
+std::string kindOf(const json& v) {
+    if (v.is_string()) {
+        const auto& t = v.get_ref<const std::string&>();
+        return t.size() <= 40 ? json(t).dump(-1, ' ', true) : "a string";
+    }
+    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_null()) return "null";
+    return std::string(v.is_array() ? "an array" : "an object");
+}
 
 // One JSON object with its path for messages ("force.C_F").
 class Section {
@@ -61,7 +72,8 @@ public:
 private:
     double numberAt(const std::string& key) const {
         const json& v = j_->at(key);
-        if (!v.is_number()) throw inputError(path_ + "." + key + " must be a number, got " + v.dump());
+        // The value's kind, not the value: it may be any size or depth.
+        if (!v.is_number()) throw inputError(path_ + "." + key + " must be a number, got " + kindOf(v));
         return v.get<double>();
     }
     const json* j_;
@@ -69,6 +81,15 @@ private:
 };
 
 }  // namespace
+
+json parameterJson(const std::string& text) {
+    checkJsonNesting(text, "the parameter file");
+    try {
+        return json::parse(text);
+    } catch (const json::exception& e) {
+        throw inputError(std::string("the parameter file is not valid JSON (") + e.what() + ")");
+    }
+}
 
 Parameters parseParameters(const json& j) {
     if (!j.is_object()) throw inputError("the parameter file must hold a JSON object");

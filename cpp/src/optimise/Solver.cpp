@@ -32,7 +32,7 @@ Optimum describePoint(const Problem& p, const Region& region, double n, double f
     o.n = n;
     o.fz = fz;
     o.objective = objective;
-    o.feasible = region.contains(n, fz);
+    o.feasible = region.contains(n, fz) && std::isfinite(objective);
     o.at = evaluate(p, n, fz);
     o.constraints = constraintStates(p, n, fz);
     return o;

@@ -1,4 +1,5 @@
 #include <aeronc/core/Error.h>
+#include <aeronc/core/JsonNesting.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 
 #include <nlohmann/json.hpp>
@@ -355,10 +356,11 @@ void checkLinks(const DomainTree& t, const Field& root) {
 }  // namespace
 
 DomainTree fromJson(const std::string& text) {
+    checkJsonNesting(text, "domain tree");  // Field::shown() writes values back
     json j;
     try {
         j = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // a number overflow is out_of_range, not parse_error
         throw inputError(std::string("domain tree: not valid JSON: ") + e.what());
     }
     const Field root(j, "");

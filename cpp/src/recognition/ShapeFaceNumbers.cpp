@@ -1,5 +1,5 @@
 // The solid of a shape recognised, its faces numbered as the whole shape numbers them.
-#include <aeronc/core/PartIO.h>
+#include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 
 #include <TopExp.hxx>

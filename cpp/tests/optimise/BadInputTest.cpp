@@ -1,6 +1,6 @@
 // Bad input: an infeasible problem names its conflicting limits and the nearest relaxation
 // (which must then work); missing coefficients and non-physical values are named.
-#include "../ErrorOf.h"
+#include "ErrorOf.h"
 
 #include "Fixtures.h"
 

@@ -45,6 +45,9 @@ struct MachineModel {
     std::optional<LinearTravel> travel;
     double retractDistance = 50.0;  // mm along the tool axis for a branch change
     double maxRotaryFeed = 3600.0;  // deg/min, the time of a pure reorientation
+    // The programmed feed (mm/min) and spindle speed (r/min) the machine takes; the posts refuse
+    // more. Absent in the file: only the NC words' own range is checked.
+    std::optional<double> maxFeed, maxSpindleSpeed;
     // Sinumerik CYCLE800: swivel data record name and which rotary axis gives the preferred
     // direction (_DIR).
     std::string swivelDataRecord = "TC1";

@@ -1,6 +1,8 @@
 #pragma once
 // Basic types of the 5-axis kinematics core. Lengths in mm, machine angles in degrees,
 // vectors in the workpiece frame unless a name says otherwise.
+// Every failure of the kinematics and the posts is an aeronc::inputError whose message is
+// complete and says what to change.
 #include <aeronc/core/Error.h>
 
 #include <Eigen/Core>
@@ -32,8 +34,5 @@ struct Joints {
     Vec3 linear = Vec3::Zero();
     std::array<double, 2> rotary{0.0, 0.0};
 };
-
-// Every failure of the kinematics and the posts. The message is complete and says what to change.
-inline Error kinematicsError(const std::string& m) { return inputError(m); }
 
 }  // namespace aeronc::kinematics

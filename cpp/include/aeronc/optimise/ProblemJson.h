@@ -47,4 +47,8 @@ struct Parameters {
 
 Parameters parseParameters(const nlohmann::json& j);
 
+// The parameter file's text as JSON; inputError "not valid JSON (...)" or "nested deeper than
+// 64 levels" (aeronc/core/JsonNesting.h) otherwise.
+nlohmann::json parameterJson(const std::string& text);
+
 }  // namespace aeronc::optimise

@@ -14,10 +14,6 @@
 #include <string>
 #include <vector>
 
-namespace aeronc::kb {
-class KnowledgeBase;
-}
-
 namespace aeronc::toolselect {
 
 // The element's drive loops projected onto its setup plane (frame built from the setup
@@ -60,8 +56,8 @@ struct PlanSettings {
     std::function<bool(const Tool&)> mayFinish, mayRough, mayDrill;
 };
 
-// Spindle speed and feeds of one tool in one operation, from the knowledge base; what a
-// FreeCAD ToolController carries.
+// Spindle speed and feeds of one tool in one operation; what a FreeCAD ToolController
+// carries. The knowledge-base planner (kb/ToolPlanning.h) fills them.
 struct ToolSetting {
     int tool = -1;          // index into the tool list
     std::string operation;  // "roughing", "finishing", "drilling"
@@ -73,7 +69,7 @@ struct ToolSetting {
 
 struct ToolPlan {
     std::vector<Tool> tools;  // the list the indices refer to
-    std::vector<ToolSetting> settings;  // per (tool, operation) used; filled by the knowledge-base planner
+    std::vector<ToolSetting> settings;  // per (tool, operation) used; filled by kb::planTools
     std::vector<ElementChoice> elements;
     std::vector<HoleChoice> holes;
     std::vector<GroupElements> groupsBefore, groupsAfter;  // roughing groups, before/after merging
@@ -84,17 +80,6 @@ struct ToolPlan {
 // in the grouping. Throws only for bad settings (an empty roughingData with groups to time).
 ToolPlan planTools(const recognition::DomainTree& tree, const std::vector<Tool>& tools,
                    const PlanSettings& settings);
-
-// The same with everything from the knowledge base: its tools, the thresholds eta_min and
-// mu_merge, layer_delta_mm as delta (0.2 mm when absent), and the roughing cutting data
-// of (material, tool material): a_e = ae_ratio·D, feed = f_z·Z·n, n = 1000·v_c/(π·D), a_p.
-// A tool suits the workpiece when the knowledge base has cutting data for its material and
-// the operation (finishing, roughing or drilling). Throws aeronc::inputError for an unknown
-// workpiece material. The spindle speed is capped at the machine's maximum (the named
-// machine, or the knowledge base's first one when `machine` is empty): without the cap a
-// layer takes the same time with any diameter and every pair of groups would merge.
-ToolPlan planTools(const recognition::DomainTree& tree, const kb::KnowledgeBase& kb, const std::string& material,
-                   const std::string& machine = "");
 
 // Roughing cutting data of one tool from a knowledge-base cutting condition; n is capped at
 // maxSpindleRpm when that is positive.

@@ -1,0 +1,113 @@
+#include <aeronc/kb/ToolPlanning.h>
+
+#include <aeronc/core/Error.h>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+
+namespace aeronc::kb {
+
+using toolselect::ElementChoice;
+using toolselect::GroupElements;
+using toolselect::HoleChoice;
+using toolselect::PlanSettings;
+using toolselect::Tool;
+using toolselect::ToolPlan;
+using toolselect::ToolSetting;
+
+namespace {
+constexpr double kDefaultDelta = 0.2;
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb, const std::string& material,
+                   const std::string& machine) {
+    const auto known = kb.workpieceMaterials();
+    if (std::find(known.begin(), known.end(), material) == known.end()) {
+        std::string list;
+        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
+        throw inputError("unknown workpiece material '" + material + "' (known: " + list + ")");
+    }
+    double maxRpm = 0;
+    if (!machine.empty()) {
+        maxRpm = kb.machine(machine).maxSpindleRpm;
+    } else {
+        const auto names = kb.machineNames();
+        if (!names.empty()) maxRpm = kb.machine(names.front()).maxSpindleRpm;
+    }
+    PlanSettings s;
+    s.etaMin = kb.threshold("eta_min");
+    s.muMerge = kb.threshold("mu_merge");
+    double delta = kDefaultDelta;
+    try {
+        delta = kb.threshold("layer_delta_mm");
+    } catch (const Error&) {
+    }
+
+    // Cutting data per (tool material, operation, diameter); absent: the tool does not suit the part.
+    std::map<std::tuple<std::string, std::string, double>, std::optional<CuttingCondition>> cache;
+    auto condition = [&kb, &cache, material](const Tool& tool,
+                                             const std::string& op) -> const std::optional<CuttingCondition>& {
+        auto key = std::make_tuple(tool.material, op, tool.diameter);
+        auto it = cache.find(key);
+        if (it == cache.end()) {
+            std::optional<CuttingCondition> c;
+            try {
+                c = kb.cuttingCondition(material, tool.material, op, tool.diameter);
+            } catch (const Error&) {
+            }
+            it = cache.emplace(key, c).first;
+        }
+        return it->second;
+    };
+    const std::vector<Tool> tools = kb.tools();
+    s.mayFinish = [&](const Tool& t) { return t.isEndMill() && condition(t, "finishing").has_value(); };
+    s.mayRough = [&](const Tool& t) { return t.isEndMill() && condition(t, "roughing").has_value(); };
+    s.mayDrill = [&](const Tool& t) { return t.type == "drill" && condition(t, "drilling").has_value(); };
+    s.roughingData = [&](std::size_t i) {
+        const Tool& t = tools.at(i);
+        const auto& c = condition(t, "roughing");
+        if (!c)
+            throw inputError("tool " + t.id + ": no roughing cutting data for '" + material + "' with '" +
+                             t.material + "'");
+        return toolselect::roughingCuttingData(t, c->vc, c->fz, c->ap, c->aeRatio, delta, maxRpm);
+    };
+    ToolPlan plan = toolselect::planTools(tree, tools, s);
+
+    double plungeRatio = 0.3;
+    try {
+        plungeRatio = kb.threshold("plunge_feed_ratio");
+    } catch (const Error&) {
+    }
+    std::set<std::pair<int, std::string>> used;
+    for (const ElementChoice& c : plan.elements) {
+        if (c.finishingTool >= 0) used.insert({c.finishingTool, "finishing"});
+        if (c.roughingTool >= 0) used.insert({c.roughingTool, "roughing"});
+    }
+    for (const GroupElements& g : plan.groupsAfter) used.insert({g.tool, "roughing"});
+    for (const HoleChoice& h : plan.holes)
+        if (h.drill >= 0) used.insert({h.drill, "drilling"});
+    for (const auto& [index, op] : used) {
+        const Tool& t = tools.at(static_cast<std::size_t>(index));
+        const auto& c = condition(t, op);
+        if (!c) continue;  // the filters above only let tools with data through
+        ToolSetting ts;
+        ts.tool = index;
+        ts.operation = op;
+        ts.spindleRpm = 1000.0 * c->vc / (kPi * t.diameter);
+        if (maxRpm > 0) ts.spindleRpm = std::min(ts.spindleRpm, maxRpm);
+        ts.feedMmMin = c->fz * t.flutes * ts.spindleRpm;
+        ts.plungeFeedMmMin = op == "drilling" ? ts.feedMmMin : ts.feedMmMin * plungeRatio;
+        ts.vc = c->vc;
+        ts.fz = c->fz;
+        ts.ap = c->ap;
+        ts.ae = c->aeRatio * t.diameter;
+        plan.settings.push_back(ts);
+    }
+    return plan;
+}
+
+}  // namespace aeronc::kb

@@ -1,0 +1,6 @@
+G0 X0 Y0 Z50
+Gnan X1 Y0 Z-5 R2 F1
+Minf
+M6 T1e10
+M3 S-8000
+G0 X0 Y0 Z5 é
