@@ -1,7 +1,9 @@
 // Recognition time against face count for generated panels of 10 to 1,000 pockets,
-// beside the STEP import time of the same file and the peak memory.
+// beside the STEP import time of the same file and the peak memory; or, with --parts, the
+// same for given STEP files (automatic setup directions).
 // Usage: aeronc_bench [--sizes 10,100,1000] [--dir FOLDER]
-// Each size runs in a child process so its peak memory is its own.
+//        aeronc_bench --parts A.stp B.stp ...
+// Each size or part runs in a child process so its peak memory is its own.
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
@@ -17,12 +19,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -35,6 +39,39 @@ std::pair<int, int> grid(int pockets) {
     int ny = std::max(1, (pockets + nx - 1) / nx);
     while (nx * ny > pockets && nx > 1 && (nx - 1) * ny >= pockets) --nx;
     return {nx, ny};
+}
+
+double importSeconds(const std::string& path, TopoDS_Shape& shape) {
+    const auto t0 = Clock::now();
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw std::runtime_error("cannot read " + path);
+    reader.TransferRoots();
+    shape = reader.OneShape();
+    return secs(t0);
+}
+
+// One STEP part: import, then recognition with automatic setups (best of `runs`).
+void measurePart(const std::string& path, int runs) {
+    TopoDS_Shape shape;
+    double tImport = importSeconds(path, shape);
+    for (int r = 1; r < runs; ++r) tImport = std::min(tImport, importSeconds(path, shape));
+    const TopoDS_Shape solid = aeronc::validatedSolid(shape, path);
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    double tRec = 1e300;
+    std::size_t elements = 0, setups = 0;
+    for (int r = 0; r < runs; ++r) {
+        const auto t1 = Clock::now();
+        const auto tree = aeronc::recognition::recognise(solid);
+        tRec = std::min(tRec, secs(t1));
+        elements = tree.elements.size(), setups = tree.setups.size();
+    }
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+    std::printf("%-30s %6d %9.3f %11.3f %7.2f %6zu %8zu %9.1f\n",
+                std::filesystem::path(path).filename().string().c_str(), faces.Extent(), tImport, tRec, tRec / tImport,
+                setups, elements, ru.ru_maxrss / 1024.0);
+    std::fflush(stdout);
 }
 
 void measure(int pockets, const std::string& dir) {
@@ -81,6 +118,27 @@ int main(int argc, char** argv) {
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));  // keep the table clean
     std::vector<int> sizes{10, 50, 100, 250, 500, 1000};
     std::string dir = (std::filesystem::temp_directory_path() / "aeronc-bench").string();
+    if (argc > 1 && !std::strcmp(argv[1], "--parts")) {
+        std::printf("# recognition (automatic setups) vs STEP import, best of 3 runs each\n");
+        std::printf("%-30s %6s %9s %11s %7s %6s %8s %9s\n", "# part", "faces", "import_s", "recognise_s", "ratio",
+                    "setups", "elements", "peak_MiB");
+        std::fflush(stdout);
+        for (int i = 2; i < argc; ++i) {
+            const pid_t pid = fork();
+            if (pid == 0) {
+                try {
+                    measurePart(argv[i], 3);
+                } catch (const std::exception& e) {
+                    std::printf("%-30s error: %s\n", argv[i], e.what());
+                }
+                std::fflush(stdout);
+                _exit(0);
+            }
+            int st = 0;
+            waitpid(pid, &st, 0);
+        }
+        return 0;
+    }
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--sizes")) {
             sizes.clear();

@@ -1,6 +1,6 @@
 // aeronc: command-line entry to the AeroNC core.
 //   aeronc recognise PART.(step|brep) [--json OUT] [--directions auto|+Z,-Z|x:y:z,...]
-//                    [--allowance MM] [--tolerance MM]
+//                    [--allowance MM] [--tolerance MM] [--threads N]
 //   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
 //   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
 //                       [--machine NAME] [--resources DIR]
@@ -51,8 +51,8 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM] [--face-names]\n"
-    "                  [--time-limit S]\n"
+    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
+    "                   [--threads N] [--face-names] [--time-limit S]\n"
     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
     "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
     "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
@@ -128,6 +128,7 @@ int recogniseCmd(int argc, char** argv) {
         else if (a == "--directions") opt.directions = parseDirections(next());
         else if (a == "--allowance") opt.blankAllowance = std::stod(next());
         else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
+        else if (a == "--threads") opt.threads = std::stoi(next());
         else if (a == "--face-names") faceNames = true;
         else return false;
         return true;

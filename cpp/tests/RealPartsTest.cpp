@@ -1,6 +1,8 @@
-// Recognition on parts nobody here made: the NIST CTC/FTC test parts (shared/data/nist).
+// Recognition on parts nobody here made: the NIST CTC/FTC test parts (shared/data/nist) and
+// the milled parts of shared/data/real.
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/HoleTruth.h>
 
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
@@ -17,14 +19,33 @@ using namespace aeronc::recognition;
 
 namespace {
 
-std::vector<std::string> nistParts() {
+std::vector<std::string> partsIn(const char* folder) {
     std::vector<std::string> out;
-    const std::filesystem::path dir = std::filesystem::path(AERONC_SHARED_DATA) / "nist";
+    const std::filesystem::path dir = std::filesystem::path(AERONC_SHARED_DATA) / folder;
     if (!std::filesystem::exists(dir)) return out;
     for (const auto& e : std::filesystem::directory_iterator(dir))
         if (e.path().extension() == ".stp") out.push_back(e.path().string());
     std::sort(out.begin(), out.end());
     return out;
+}
+std::vector<std::string> nistParts() { return partsIn("nist"); }
+std::vector<std::string> realParts() { return partsIn("real"); }
+
+// Every hole wall by geometry (a concave cylinder whose coaxial faces cover more than half the
+// circle) has the role hole_wall, and 95 % of the hole walls found are such: recall and
+// precision of hole recognition on one part.
+void expectHolesFound(const TopoDS_Shape& part, const DomainTree& t) {
+    const std::vector<bool> truth = testparts::holeWallsByGeometry(part);
+    ASSERT_EQ(truth.size(), t.faceRoles.size());
+    int holes = 0, found = 0, right = 0;
+    std::string missed;
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        const bool wall = t.faceRoles[i] == FaceRole::HoleWall;
+        holes += truth[i], found += wall, right += truth[i] && wall;
+        if (truth[i] && !wall) missed += " Face" + std::to_string(i + 1) + " (" + toString(t.faceRoles[i]) + ")";
+    }
+    EXPECT_GE(right, 0.95 * holes) << right << " of " << holes << " hole walls found; missed:" << missed;
+    EXPECT_GE(right, 0.95 * found) << right << " of " << found << " faces called hole walls are";
 }
 
 std::map<std::string, int> countTypes(const DomainTree& t) {
@@ -72,6 +93,7 @@ TEST_P(NistPart, RecognisedWithoutErrorAndNoFaceClaimedTwice) {
     // Every face of every hole found is a cylinder wall of that hole's diameter.
     for (const DomainElement& e : t.elements)
         if (e.hole) EXPECT_GT(e.hole->diameter, 0);
+    expectHolesFound(part, t);
 }
 
 TEST_P(NistPart, StableUnderRotation) {
@@ -89,6 +111,18 @@ TEST_P(NistPart, StableUnderRotation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Nist, NistPart, ::testing::ValuesIn(nistParts()),
+                         [](const ::testing::TestParamInfo<std::string>& i) {
+                             return std::filesystem::path(i.param).stem().string();
+                         });
+
+class MilledPart : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MilledPart, EveryHoleFound) {
+    const TopoDS_Shape part = loadPart(GetParam());
+    expectHolesFound(part, recognise(part));
+}
+
+INSTANTIATE_TEST_SUITE_P(Real, MilledPart, ::testing::ValuesIn(realParts()),
                          [](const ::testing::TestParamInfo<std::string>& i) {
                              return std::filesystem::path(i.param).stem().string();
                          });

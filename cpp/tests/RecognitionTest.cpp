@@ -262,6 +262,35 @@ TEST(Recognition, FreeShapesBesideTheSolidKeepTheShapesFaceNumbers) {
     EXPECT_EQ(toJson(recogniseShape(solid, "solid", along({{0, 0, 1}}))), toJson(alone));
 }
 
+// A chamfer along an edge of the block is a chamfer, not the floor of an open pocket seen
+// along its own normal: no setup is tilted to it, and the pocket beside it is found from +Z.
+TEST(Recognition, EdgeChamferOfTheBlockIsAChamfer) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 30).Shape(), roundedBox(20, 20, 15, 40, 30, 20, 4));
+    // A 45 degree chamfer, 12 mm, along the edge y = 80, z = 30 (the whole length in x).
+    BRepBuilderAPI_MakePolygon tri(gp_Pnt(-1, 80 - 12, 30), gp_Pnt(-1, 81, 30), gp_Pnt(-1, 81, 30 - 13), gp_Pnt(-1, 80, 30 - 12),
+                                   true);
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(tri.Wire()).Face();
+    part = cut(part, BRepPrimAPI_MakePrism(face, gp_Vec(102, 0, 0)).Shape());
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    int chamfer = -1;
+    for (int i = 1; i <= faces.Extent(); ++i) {
+        BRepAdaptor_Surface s(TopoDS::Face(faces(i)));
+        if (s.GetType() == GeomAbs_Plane && std::fabs(std::fabs(s.Plane().Axis().Direction().Z()) - M_SQRT1_2) < 1e-6)
+            chamfer = i;
+    }
+    ASSERT_GT(chamfer, 0);
+    const DomainTree t = recognise(solid);
+    for (const SetupDirection& s : t.setups)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::fabs(s.direction[k]), std::round(std::fabs(s.direction[k])), 1e-9) << s.name;
+    EXPECT_EQ(t.faceRoles[static_cast<std::size_t>(chamfer - 1)], FaceRole::Chamfer);
+    int pockets = 0;
+    for (const DomainElement& e : t.elements) pockets += e.type == ElementType::ClosedPocket;
+    EXPECT_EQ(pockets, 1);
+    EXPECT_TRUE(std::find(t.unclaimedFaces.begin(), t.unclaimedFaces.end(), chamfer) == t.unclaimedFaces.end());
+}
+
 TEST(BadInput, NotAPartFile) {
     EXPECT_THROW(loadPart(tmpFile("aeronc_not_step.txt", "hello world\n")), Error);
     EXPECT_THROW(loadPart(tmpFile("aeronc_empty.step", "")), Error);

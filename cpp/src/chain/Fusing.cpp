@@ -193,6 +193,7 @@ private:
     int finishingTool(const DomainElement& e, std::string& why) const;
     int finisher(const DomainElement& e, std::string& why);
     int floorTool(const DomainElement& e, const TemplateStep& step, std::string& why);
+    int widestFloorTool(const DomainElement& e, const TemplateStep& step) const;
     int helixTool(const DomainElement& e, std::string& why) const;
     // The planner's reason for a missing tool; for a pocket, the lines about roughing tools
     // (`roughing`) or the others.
@@ -320,9 +321,17 @@ int Fuser::finisher(const DomainElement& e, std::string& why) {
             best = -1;
         }
     }
+    // No wider than the roughing tool nor than the floor's tool: the web step comes before the
+    // wall and corner steps, so a wider finisher would take the diameters back up (validity).
+    const int r = roughingTool(e);
+    double maxD = r >= 0 ? tool(r).diameter : kInf;
+    for (const TemplateStep& s : tmpl_.steps) {
+        if (s.code != StepCode::Web || s.existence == Existence::MustNot || !s.machines(ft)) continue;
+        const int w = widestFloorTool(e, s);
+        if (w >= 0) maxD = std::min(maxD, tool(w).diameter);
+    }
+    if (best >= 0 && tool(best).diameter > maxD + 1e-9) best = -1;
     if (best < 0) {
-        const int r = roughingTool(e);
-        const double maxD = r >= 0 ? tool(r).diameter : kInf;
         const double fillet = std::max(0.0, e.floorFilletRadius);
         bool bestMatches = false;
         for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
@@ -343,11 +352,22 @@ int Fuser::finisher(const DomainElement& e, std::string& why) {
 }
 
 int Fuser::floorTool(const DomainElement& e, const TemplateStep& step, std::string& why) {
+    // Only when no end mill fits the floor (widestFloorTool) does the element's finishing tool do it.
+    const int best = widestFloorTool(e, step);
+    if (best >= 0) return best;
+    std::string finishWhy;
+    const int f = finisher(e, finishWhy);
+    if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
+    why = "no end mill with a corner radius of at most " + fmt(std::max(0.0, e.floorFilletRadius)) +
+          " mm reaches the " + fmt(e.depth) + " mm deep floor of " + elementName(e);
+    return -1;
+}
+
+int Fuser::widestFloorTool(const DomainElement& e, const TemplateStep& step) const {
     // A floor needs no tool as thin as the corners: the largest flat or bull end mill whose corner
     // fits the floor fillet (at one diameter, the one whose corner equals the fillet), no wider
     // than the roughing tool. A ball's scallops would need a step-over a fraction of a millimetre
-    // wide; the corner and wall steps take what the wide tool cannot reach. Only when no such
-    // end mill fits does the element's finishing tool do the floor.
+    // wide; the corner and wall steps take what the wide tool cannot reach.
     const int r = roughingTool(e);
     const double maxD = r >= 0 ? tool(r).diameter : kInf;
     const double fillet = std::max(0.0, e.floorFilletRadius);
@@ -365,13 +385,7 @@ int Fuser::floorTool(const DomainElement& e, const TemplateStep& step, std::stri
             bestMatches = matches;
         }
     }
-    if (best >= 0) return best;
-    std::string finishWhy;
-    const int f = finisher(e, finishWhy);
-    if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
-    why = "no end mill with a corner radius of at most " + fmt(fillet) + " mm reaches the " + fmt(e.depth) +
-          " mm deep floor of " + elementName(e);
-    return -1;
+    return best;
 }
 
 int Fuser::helixTool(const DomainElement& e, std::string& why) const {

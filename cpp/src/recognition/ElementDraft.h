@@ -12,6 +12,8 @@ struct ElementDraft {
     DomainElement el;  // id, parent and children index the setup's drafts
     Region region;
     P2 sample;
+    bool fromChain = false;  // a hole of the face-adjacency pass (HoleChains)
+    bool dropped = false;    // replaced by such a hole: kept out of the tree
 };
 
 }  // namespace aeronc::recognition

@@ -1,6 +1,10 @@
 #include "ElementMeasures.h"
 
+#include "FaceClaims.h"
+
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -21,11 +25,48 @@ double RegionWidths::minWidth(const Region& r) {
     };
     add(r.outer);
     for (const Path& h : r.holes) add(h);
-    auto it = widths_.find(key);
-    if (it != widths_.end()) return it->second;
-    const double w = r.minWidth();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = widths_.find(key);
+        if (it != widths_.end()) return it->second;
+    }
+    // Measured on the shape moved to the origin, so that every copy of it gives the same
+    // figure whichever thread measures it first. Outside the lock: two threads may both
+    // measure one shape.
+    Region at0 = r;
+    const IntPoint o = r.outer[0];
+    auto shift = [&](Path& p) {
+        for (IntPoint& q : p) q.X -= o.X, q.Y -= o.Y;
+    };
+    shift(at0.outer);
+    for (Path& h : at0.holes) shift(h);
+    at0.updateBox();
+    const double w = at0.minWidth();
+    std::lock_guard<std::mutex> lock(mutex_);
     widths_.emplace(std::move(key), w);
     return w;
+}
+
+void measureWidths(std::vector<ElementDraft>& made, const std::vector<bool>& claimed, RegionWidths& widths,
+                   int threads) {
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < made.size(); ++k) {
+        const ElementDraft& d = made[k];
+        if (d.el.minWidth >= 0 || d.dropped) continue;
+        if (takenEarlier(d.el, claimed)) {
+            made[k].el.minWidth = 0;  // claimFaces drops it: never shown
+            continue;
+        }
+        todo.push_back(k);
+    }
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i; (i = next++) < todo.size();) made[todo[i]].el.minWidth = widths.minWidth(made[todo[i]].region);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::min<int>(threads, static_cast<int>(todo.size())); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
 }
 
 void measureCorners(const VoidRegion& c, const FaceCatalogue& faces, const std::vector<FaceInSetup>& fs,

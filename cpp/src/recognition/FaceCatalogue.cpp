@@ -1,5 +1,7 @@
 #include "FaceCatalogue.h"
+#include "Workers.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
@@ -34,6 +36,8 @@ Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
     TopExp::MapShapes(solid, TopAbs_FACE, map_);
     interior_.assign(static_cast<std::size_t>(map_.Extent()), {false, Vec3{0, 0, 0}});
+    boundaries_.resize(static_cast<std::size_t>(map_.Extent()));
+    wireIndex_.resize(static_cast<std::size_t>(map_.Extent()));
     faces_.resize(static_cast<std::size_t>(map_.Extent()));
     for (int i = 0; i < map_.Extent(); ++i) {
         FaceInfo& f = faces_[static_cast<std::size_t>(i)];
@@ -103,6 +107,23 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
             if (e > 0 && std::find(faceEdges_[i].begin(), faceEdges_[i].end(), e) == faceEdges_[i].end())
                 faceEdges_[i].push_back(e);
         }
+    // Points along each edge: its ends, and 16 more along a curved one.
+    std::vector<std::vector<Vec3>> alongEdge(static_cast<std::size_t>(edges_.Extent()) + 1);
+    for (int e = 1; e <= edges_.Extent(); ++e) {
+        const TopoDS_Edge& edge = TopoDS::Edge(edges_(e));
+        if (BRep_Tool::Degenerated(edge)) continue;
+        BRepAdaptor_Curve c(edge);
+        const int n = c.GetType() == GeomAbs_Line ? 1 : 16;
+        for (int k = 0; k <= n; ++k) {
+            const gp_Pnt p = c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / n);
+            alongEdge[static_cast<std::size_t>(e)].push_back({p.X(), p.Y(), p.Z()});
+        }
+    }
+    edgePoints_.resize(faces_.size());
+    for (std::size_t i = 0; i < faces_.size(); ++i)
+        for (int e : faceEdges_[i])
+            edgePoints_[i].insert(edgePoints_[i].end(), alongEdge[static_cast<std::size_t>(e)].begin(),
+                                  alongEdge[static_cast<std::size_t>(e)].end());
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
     TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
     for (int e = 1; e <= edgeFaces.Extent(); ++e) {
@@ -119,7 +140,18 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
     }
 }
 
+double FaceCatalogue::boundaryTop(int i, const Vec3& d) const {
+    double top = -std::numeric_limits<double>::max();
+    for (const Vec3& p : edgePoints_[static_cast<std::size_t>(i)]) top = std::max(top, dot(p, d));
+    if (edgePoints_[static_cast<std::size_t>(i)].empty()) {  // no edge: the box
+        double lo;
+        heightRange(i, d, lo, top);
+    }
+    return top;
+}
+
 double FaceCatalogue::area(int i) const {
+    std::lock_guard<std::recursive_mutex> lock(cache_);
     const FaceInfo& f = faces_[static_cast<std::size_t>(i)];
     if (f.area < 0) {
         GProp_GProps props;
@@ -181,6 +213,7 @@ std::vector<FaceCatalogue::HeightRange> FaceCatalogue::heightRanges(const Vec3& 
 }
 
 Vec3 FaceCatalogue::interiorPoint(int i) const {
+    std::lock_guard<std::recursive_mutex> lock(cache_);
     auto& cached = interior_[static_cast<std::size_t>(i)];
     if (cached.first) return cached.second;
     cached.first = true;
@@ -189,8 +222,12 @@ Vec3 FaceCatalogue::interiorPoint(int i) const {
 }
 
 BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
-    if (classifiers_.empty()) classifiers_.resize(faces_.size());
-    auto& c = classifiers_[static_cast<std::size_t>(i)];
+    std::lock_guard<std::recursive_mutex> lock(cache_);
+    const std::size_t w = static_cast<std::size_t>(workerSlot());
+    if (classifiers_.size() <= w) classifiers_.resize(w + 1);
+    auto& mine = classifiers_[w];
+    if (mine.empty()) mine.resize(faces_.size());
+    auto& c = mine[static_cast<std::size_t>(i)];
     if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[static_cast<std::size_t>(i)].face, 1e-9);
     return *c;
 }
@@ -210,7 +247,7 @@ bool FaceCatalogue::WirePolygon::contains(double u, double v) const {
 TopAbs_State FaceCatalogue::classifyUV(int i, double u, double v) const {
     const TopoDS_Face& face = faces_[static_cast<std::size_t>(i)].face;
     if (faceEdges_[static_cast<std::size_t>(i)].size() <= 64) return classifier(i).Perform(gp_Pnt2d(u, v));
-    if (wireIndex_.empty()) wireIndex_.resize(faces_.size());
+    std::unique_lock<std::recursive_mutex> lock(cache_);
     auto& idx = wireIndex_[static_cast<std::size_t>(i)];
     if (!idx) {
         idx = std::make_unique<std::vector<WirePolygon>>();
@@ -241,6 +278,7 @@ TopAbs_State FaceCatalogue::classifyUV(int i, double u, double v) const {
             idx->push_back(std::move(poly));
         }
     }
+    lock.unlock();  // built once, then only read
     if (idx->empty() || !(*idx)[0].contains(u, v)) return TopAbs_OUT;
     for (std::size_t k = 1; k < idx->size(); ++k)
         if ((*idx)[k].contains(u, v)) return TopAbs_OUT;
@@ -248,7 +286,7 @@ TopAbs_State FaceCatalogue::classifyUV(int i, double u, double v) const {
 }
 
 const std::vector<Handle(Geom2d_TrimmedCurve)>& FaceCatalogue::boundaryUV(int i) const {
-    if (boundaries_.empty()) boundaries_.resize(faces_.size());
+    std::lock_guard<std::recursive_mutex> lock(cache_);
     auto& b = boundaries_[static_cast<std::size_t>(i)];
     if (!b) {
         b = std::make_unique<std::vector<Handle(Geom2d_TrimmedCurve)>>();

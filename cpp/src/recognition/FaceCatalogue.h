@@ -10,6 +10,7 @@
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace aeronc::recognition {
@@ -32,6 +33,8 @@ struct FaceInfo {
     mutable double area = -1;     // computed on demand
 };
 
+// The lazily built per-face caches are guarded, so the setups' levels may be sliced from
+// several threads.
 class FaceCatalogue {
 public:
     explicit FaceCatalogue(const TopoDS_Shape& solid);
@@ -53,9 +56,13 @@ public:
         double lo, hi, base;
     };
     std::vector<HeightRange> heightRanges(const Vec3& u, const Vec3& v, const Vec3& w) const;
+    // The highest point of face i's boundary along unit d, from points on its edges (their
+    // ends, and along curved edges): quick, for sorting through many directions.
+    double boundaryTop(int i, const Vec3& d) const;
     // A point strictly inside face i (world coordinates), cached.
     Vec3 interiorPoint(int i) const;
-    // Classifier of points in face i's parameter space, built once per face.
+    // Classifier of points in face i's parameter space, built once per face and worker (a
+    // classifier keeps a cursor into its sequences, so threads cannot share one).
     BRepTopAdaptor_FClass2d& classifier(int i) const;
     // Where a point of face i's parameter space lies: IN, OUT or ON. Faces with many
     // edges (a panel's top face with its pockets) use an index of their wires as polygons,
@@ -71,8 +78,9 @@ private:
     TopTools_IndexedMapOfShape map_;
     TopTools_IndexedMapOfShape edges_;
     std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
+    std::vector<std::vector<Vec3>> edgePoints_;  // per face: points along its boundary
     mutable std::vector<std::pair<bool, Vec3>> interior_;
-    mutable std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+    mutable std::vector<std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>> classifiers_;  // by worker
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
     struct WirePolygon {
         std::vector<std::pair<double, double>> pts;
@@ -80,6 +88,7 @@ private:
         bool contains(double u, double v) const;
     };
     mutable std::vector<std::unique_ptr<std::vector<WirePolygon>>> wireIndex_;  // [0] is the outer wire
+    mutable std::recursive_mutex cache_;  // guards the caches above and FaceInfo::area
 };
 
 }  // namespace aeronc::recognition

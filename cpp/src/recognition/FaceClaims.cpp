@@ -4,18 +4,23 @@
 
 namespace aeronc::recognition {
 
+bool takenEarlier(const DomainElement& e, const std::vector<bool>& claimed) {
+    bool taken = false;
+    if (!e.floorFaces.empty()) {
+        for (int f : e.floorFaces) taken |= claimed[static_cast<std::size_t>(f - 1)];
+    } else {
+        taken = !e.contourFaces.empty();
+        for (int f : e.contourFaces) taken &= claimed[static_cast<std::size_t>(f - 1)];
+    }
+    return taken;
+}
+
 void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vector<bool>& claimed, DomainTree& tree) {
     std::vector<int> remap(made.size(), -1);
     std::vector<ElementDraft> kept;
     for (std::size_t k = 0; k < made.size(); ++k) {
         const DomainElement& e = made[k].el;
-        bool taken = false;
-        if (!e.floorFaces.empty()) {
-            for (int f : e.floorFaces) taken |= claimed[static_cast<std::size_t>(f - 1)];
-        } else {
-            taken = !e.contourFaces.empty();
-            for (int f : e.contourFaces) taken &= claimed[static_cast<std::size_t>(f - 1)];
-        }
+        const bool taken = takenEarlier(e, claimed) || made[k].dropped;  // dropped: a hole of the adjacency pass replaced it
         if (!taken) {
             remap[k] = static_cast<int>(tree.elements.size() + kept.size());
             kept.push_back(made[k]);

@@ -15,4 +15,8 @@ namespace aeronc::recognition {
 // claimed: per face (0-based), whether some setup machines it.
 void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vector<bool>& claimed, DomainTree& tree);
 
+// Whether an earlier setup owns the element already: one of its floors, or without a floor
+// all its walls, are claimed.
+bool takenEarlier(const DomainElement& e, const std::vector<bool>& claimed);
+
 }  // namespace aeronc::recognition

@@ -77,18 +77,23 @@ void recogniseHole(ElementDraft& in, const SetupView& view) {
         }
     e.type = ElementType::Hole;
     e.hole = hi;
+    e.minWidth = hi.diameter;  // a round region: no erosion needed
 }
 
 }  // namespace
 
 void recogniseHoles(std::vector<ElementDraft>& made, const SetupView& view) {
-    for (ElementDraft& in : made) recogniseHole(in, view);
+    for (ElementDraft& in : made)
+        if (!in.el.hole) recogniseHole(in, view);
+}
+
+void recogniseCounterbores(std::vector<ElementDraft>& made, const SetupView& view) {
     // Counterbore: the wider hole above a hole, on the same axis.
     const double tol = 10 * view.tol.linear;
     const SetupFrame& frame = view.frame;
     for (ElementDraft& in : made) {
         DomainElement& e = in.el;
-        if (!e.hole || e.parent < 0) continue;
+        if (!e.hole || e.parent < 0 || in.dropped) continue;
         DomainElement& p = made[static_cast<std::size_t>(e.parent)].el;
         if (!p.hole || p.hole->diameter <= e.hole->diameter) continue;
         const Vec3 dl{p.hole->location[0] - e.hole->location[0], p.hole->location[1] - e.hole->location[1],

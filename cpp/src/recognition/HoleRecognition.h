@@ -17,7 +17,10 @@ double coneRadiusAt(const FaceInfo& cone, const Vec3& axis, double height);
 bool onDrillPoint(const SetupView& view, int f, double h);
 
 // Makes holes of the drafts that are holes (type, HoleInfo, countersink, drill point as
-// floor), then gives each hole standing in a wider hole on its axis that counterbore.
+// floor).
 void recogniseHoles(std::vector<ElementDraft>& made, const SetupView& view);
+
+// Gives each hole standing in a wider hole on its axis (its parent) that counterbore.
+void recogniseCounterbores(std::vector<ElementDraft>& made, const SetupView& view);
 
 }  // namespace aeronc::recognition

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cmath>
+#include <mutex>
 #include <unordered_map>
 
 namespace aeronc::recognition {
@@ -64,7 +65,7 @@ bool pointInLoop(const SectionLoop& loop, const P2& p) {
 
 std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vector<int>& candidates,
                                     const SetupFrame& frame, double h, double chordTol, double linTol,
-                                    std::vector<std::string>& warnings) {
+                                    std::vector<std::string>& warnings, MeshSection* meshes) {
     std::vector<SectionLoop> loops;
     if (candidates.empty()) return loops;
     // Faces along the axis are cut in their own parameter space; the rest by OCCT.
@@ -73,9 +74,12 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
     BRep_Builder bb;
     bb.MakeCompound(comp);
     int general = 0;
+    const bool onlyOcct = std::getenv("AERONC_GENERAL_SECTION") != nullptr;  // to compare with OCCT's section
     for (int i : candidates) {
         std::vector<std::vector<P2>> polys;
-        if (!std::getenv("AERONC_GENERAL_SECTION") && sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h, chordTol, polys)) {
+        if (!onlyOcct && (sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h,
+                                              chordTol, polys) ||
+                          (meshes && meshes->section(i, frame, h, polys)))) {
             for (auto& pl : polys) {
                 Piece piece;
                 piece.face = i;
@@ -88,12 +92,16 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
         }
     }
     if (general > 0) {
+        // OCCT's Boolean section one at a time: levels may be sliced on several threads.
+        static std::mutex occtSection;
+        std::lock_guard<std::mutex> lock(occtSection);
         const Vec3 o = frame.world({0, 0}, h);
         const gp_Pln plane(gp_Pnt(o[0], o[1], o[2]), gp_Dir(frame.w[0], frame.w[1], frame.w[2]));
         BRepAlgoAPI_Section sec(comp, plane, false);
         sec.ComputePCurveOn1(false);
         sec.Approximation(false);
         sec.SetRunParallel(false);
+        sec.SetNonDestructive(true);  // the part's faces are shared: leave their tolerances alone
         sec.Build();
         if (!sec.IsDone()) {
             warnings.push_back("section at height " + std::to_string(h) + " failed");

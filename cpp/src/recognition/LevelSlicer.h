@@ -4,6 +4,7 @@
 #include <aeronc/recognition/SetupFrame.h>
 
 #include "FaceCatalogue.h"
+#include "MeshSection.h"
 
 #include <string>
 #include <vector>
@@ -19,9 +20,10 @@ struct SectionLoop {
     int parent = -1;
 };
 
+// meshes: the section of faces the fast one does not handle (null: OCCT's general section).
 std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vector<int>& candidates,
                                     const SetupFrame& frame, double h, double chordTol, double linTol,
-                                    std::vector<std::string>& warnings);
+                                    std::vector<std::string>& warnings, MeshSection* meshes = nullptr);
 
 bool pointInLoop(const SectionLoop& loop, const P2& p);
 

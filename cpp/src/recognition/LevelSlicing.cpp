@@ -3,9 +3,15 @@
 #include "FaceLists.h"
 #include "HoleRecognition.h"
 #include "LevelSlicer.h"
+#include "Workers.h"
+
+#include <aeronc/core/Error.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,16 +46,13 @@ LevelSlicing::LevelSlicing(const SetupView& view, RegionWidths& widths, std::vec
     std::sort(critical_.begin(), critical_.end());
 }
 
-void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made) {
+double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
-    const SetupFrame& frame = view_.frame;
     const double h = levels_[k];
     const double hn = k + 1 < levels_.size() ? levels_[k + 1] : view_.h1;
     const double h1 = view_.h1;
-    const bool bottom = k == 0;
     const double tol = 10 * view_.tol.linear;
     // Slice above floor fillets and bottom chamfers so the loops run on the walls.
-    std::vector<int> ups;
     double excess = 0;
     for (int i = 0; i < faces_.size(); ++i) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
@@ -63,7 +66,9 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
     }
     // Mid-way to the next height where any face starts or ends: a plane through an
     // edge would give degenerate sections.
-    const double base = h + excess;
+    // Blends that rise to the level above (a shallow engraving rounded to its top) leave no
+    // wall to cut: then the blends are cut.
+    const double base = h + excess < std::min(hn, h1) - tol ? h + excess : h;
     double next = h1;
     for (double c : critical_) {
         if (c > base + tol) {
@@ -71,17 +76,47 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             break;
         }
     }
-    const double z = 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+    return 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+}
 
+std::vector<int> LevelSlicing::cutFaces(double z) const {
     std::vector<int> cands;
     const double margin = 0.5;  // boxes of spline faces can be tight; extra faces cost little
     for (int i = 0; i < faces_.size(); ++i) {
-        const FaceInSetup& f = fs[static_cast<std::size_t>(i)];
+        const FaceInSetup& f = view_.fs[static_cast<std::size_t>(i)];
         const double m = (f.att == Attitude::Up || f.att == Attitude::Down) ? 0.0 : margin;
         if (f.lo - m < z && f.hi + m > z) cands.push_back(i);
     }
+    return cands;
+}
+
+bool LevelSlicing::useful(std::size_t k, const std::vector<bool>& claimed) const {
+    // An element whose floor an earlier setup machines is dropped, and so is one without a
+    // floor whose walls it all machines: a level where that holds of every floor and every
+    // face cut makes nothing.
+    std::vector<int> ups;
+    const double z = sliceHeight(k, ups);
+    for (int i : ups)
+        if (!claimed[static_cast<std::size_t>(i)]) return true;
+    for (int i : cutFaces(z))
+        if (!claimed[static_cast<std::size_t>(i)]) return true;
+    return false;
+}
+
+void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& made,
+                         std::vector<std::string>& warnings) {
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    const SetupFrame& frame = view_.frame;
+    const double h = levels_[k];
+    const double h1 = view_.h1;
+    const bool bottom = k == 0;
+    const double tol = 10 * view_.tol.linear;
+    std::vector<int> ups;
+    const double z = sliceHeight(k, ups);
+    const std::vector<int> cands = cutFaces(z);
     const auto ts = std::chrono::steady_clock::now();
-    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings_);
+    std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings,
+                                                view_.meshes);
     if (std::getenv("AERONC_TRACE"))
         std::fprintf(stderr, "  level %.3f: %zu faces cut, %zu loops, %.3f s\n", h, cands.size(), loops.size(),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
@@ -118,21 +153,24 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
 
     for (std::size_t r = 0; r < regions.size(); ++r) {
         VoidRegion& c = regions[r];
+        // A drilled hole ends here on a drill point (cone or sphere under its walls): a ray
+        // down its axis runs on to the point's apex, so this comes before the exit test.
+        bool drillPoint = !c.floors.empty() || c.exterior ? false : !c.contourFaces.empty() && c.islandFaces.empty();
+        if (drillPoint)
+            for (int f : c.contourFaces)
+                drillPoint = drillPoint && faces_[f].kind == SurfaceKind::Cylinder && faces_[f].concave &&
+                             std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol && onDrillPoint(view_, f, h);
         ElementType type;
         if (!c.floors.empty()) {
             type = c.exterior ? ElementType::OpenPocket : ElementType::ClosedPocket;
         } else if (c.exterior) {
             continue;
+        } else if (drillPoint) {
+            type = ElementType::ClosedPocket;
         } else if (bottom || leavesPart(c, h, z)) {
             type = ElementType::Opening;
         } else {
-            // A drilled hole ends here on a drill point (cone or sphere under its walls).
-            bool ends = !c.contourFaces.empty() && c.islandFaces.empty();
-            for (int f : c.contourFaces)
-                ends = ends && faces_[f].kind == SurfaceKind::Cylinder && faces_[f].concave &&
-                       std::fabs(fs[static_cast<std::size_t>(f)].lo - h) <= tol && onDrillPoint(view_, f, h);
-            if (!ends) continue;
-            type = ElementType::ClosedPocket;
+            continue;
         }
         if (!c.hasSample) c.sample = c.region.interiorPoint();
         if (type == ElementType::Opening) {
@@ -151,7 +189,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         e.type = type;
         e.level = h;
         e.area = c.region.area();
-        e.minWidth = widths_.minWidth(c.region);
+        e.minWidth = -1;  // measured once it is known to stay (measureWidths)
         for (int f : c.contourFaces) e.contourFaces.push_back(f + 1);
         for (auto& isl : c.islandFaces) {
             std::vector<int> v;
@@ -187,11 +225,66 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
     }
 }
 
+void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int threads,
+                            const std::function<bool(double)>& progress, const std::vector<bool>& claimed) {
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < levels_.size(); ++k)
+        if (useful(k, claimed)) todo.push_back(k);
+    const std::size_t n = todo.size();
+    std::vector<std::vector<ElementDraft>> perLevel(n);
+    std::vector<std::vector<std::string>> warned(n);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> stop{false};
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    auto work = [&](int slot) {
+        setWorkerSlot(slot);
+        for (std::size_t k; !stop && (k = next++) < n;) {
+            try {
+                slice(todo[k], setupId, perLevel[k], warned[k]);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(failureMutex);
+                if (!failure) failure = std::current_exception();
+                stop = true;
+            }
+            ++done;
+        }
+    };
+    const int helpers = std::max(0, std::min(threads, static_cast<int>(n)) - 1);
+    std::vector<std::thread> pool;
+    for (int t = 0; t < helpers; ++t) pool.emplace_back(work, t + 1);
+    // This thread slices too, and reports between its levels.
+    for (std::size_t k; !stop && (k = next++) < n;) {
+        if (progress && !progress(double(done) / n)) {
+            stop = true;
+            break;
+        }
+        try {
+            slice(todo[k], setupId, perLevel[k], warned[k]);
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+            stop = true;
+        }
+        ++done;
+    }
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    if (stop) throw inputError("recognition cancelled");
+    for (std::size_t k = 0; k < n; ++k) {
+        for (ElementDraft& d : perLevel[k]) {
+            d.el.id = static_cast<int>(made.size());
+            made.push_back(std::move(d));
+        }
+        warnings_.insert(warnings_.end(), warned[k].begin(), warned[k].end());
+    }
+}
+
 bool LevelSlicing::capped(const VoidRegion& c, double z) const {
-    if (!std::isinf(view_.rays().firstHit(view_.frame.world(c.sample, z), true))) return true;
+    if (view_.rays().anyHit(view_.frame.world(c.sample, z), true)) return true;
     const double inset = std::max(0.05, 100 * view_.tol.linear);
-    for (const P2& p : c.region.boundaryProbes(inset, 24))
-        if (!std::isinf(view_.rays().firstHit(view_.frame.world(p, z), true))) return true;
+    for (const P2& p : c.region.boundaryProbes(inset, 16))
+        if (view_.rays().anyHit(view_.frame.world(p, z), true)) return true;
     return false;
 }
 

@@ -7,6 +7,7 @@
 #include "SetupView.h"
 #include "VoidRegions.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,22 @@ public:
     const std::vector<double>& levels() const { return levels_; }
 
     // Appends the elements whose floor (or exit) is levels()[k] to made; their ids are their
-    // indices in made, their faces FaceN.
-    void slice(std::size_t k, int setupId, std::vector<ElementDraft>& made);
+    // indices in made, their faces FaceN. Section warnings go to `warnings`.
+    void slice(std::size_t k, int setupId, std::vector<ElementDraft>& made, std::vector<std::string>& warnings);
+
+    // Slices every level that can make an element no earlier setup took (claimed: per face,
+    // an earlier setup machines it), on up to `threads` threads (the levels are independent),
+    // and appends the elements in level order as slice() would. progress(fraction) is called
+    // from this thread; returning false stops the work and throws the cancel.
+    void sliceAll(int setupId, std::vector<ElementDraft>& made, int threads,
+                  const std::function<bool(double)>& progress, const std::vector<bool>& claimed);
 
 private:
+    // The height the level is cut at (above its floor fillets), with the floors there.
+    double sliceHeight(std::size_t k, std::vector<int>& ups) const;
+    // The faces a plane at height z may cut.
+    std::vector<int> cutFaces(double z) const;
+    bool useful(std::size_t k, const std::vector<bool>& claimed) const;
     bool leavesPart(VoidRegion& c, double h, double z) const;
     // Whether material lies above the region anywhere, seen from the slice at z.
     bool capped(const VoidRegion& c, double z) const;

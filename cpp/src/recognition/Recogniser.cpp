@@ -4,12 +4,16 @@
 #include <aeronc/recognition/Recogniser.h>
 
 #include "AttachedFeatures.h"
+#include "ChainHoles.h"
+#include "HoleChains.h"
+#include "EdgeChamfers.h"
 #include "ElementMeasures.h"
 #include "FaceCatalogue.h"
 #include "FaceClaims.h"
 #include "FaceRoles.h"
 #include "HoleRecognition.h"
 #include "LevelSlicing.h"
+#include "MeshSection.h"
 #include "PocketTree.h"
 #include "SetupDirections.h"
 #include "SetupView.h"
@@ -23,13 +27,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <thread>
 
 namespace aeronc::recognition {
 namespace {
 
 class Recogniser {
 public:
-    Recogniser(const TopoDS_Shape& solid, const RecogniseOptions& o) : opt_(o), tol_(o), faces_(solid) {
+    Recogniser(const TopoDS_Shape& solid, const RecogniseOptions& o)
+        : opt_(o), tol_(o), faces_(solid), meshes_(faces_, o.chordTolerance) {
         tree_.faceCount = faces_.size();
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
@@ -37,19 +43,35 @@ public:
     }
 
     DomainTree run() {
+        axes_ = principalAxes(faces_, tol_);
+        edgeChamfers_ = findEdgeChamfers(faces_, tol_, axes_);
+        chains_ = findHoleChains(faces_, tol_);
+        for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
         if (opt_.directions.empty()) {
+            reserveChainFaces({});
             runAuto();
         } else {
-            const std::size_t n = opt_.directions.size();
+            std::vector<Vec3> dirs;
+            for (std::size_t k = 0; k < opt_.directions.size(); ++k)
+                dirs.push_back(checkedDirection(faces_, tol_, opt_.directions[k], k));
+            reserveChainFaces(dirs);
+            const std::size_t n = dirs.size();
             for (std::size_t k = 0; k < n; ++k) {
-                const Vec3 d = checkedDirection(faces_, tol_, opt_.directions[k], k);
                 progressBase_ = double(k) / n;
                 progressSpan_ = 1.0 / n;
-                runSetup(d);
+                runSetup(dirs[k]);
             }
         }
         assignFaceRoles(tree_, faces_, tol_);
-        reportUnclaimedFaces(tree_, onBlank_);
+        // The blank's edge chamfers no element took are chamfers of the part itself.
+        std::vector<bool> accounted = onBlank_;
+        accounted.resize(static_cast<std::size_t>(faces_.size()), false);
+        for (std::size_t i = 0; i < edgeChamfers_.size(); ++i)
+            if (edgeChamfers_[i] && tree_.faceElement[i] < 0) {
+                tree_.faceRoles[i] = FaceRole::Chamfer;
+                accounted[i] = true;
+            }
+        reportUnclaimedFaces(tree_, accounted);
         return std::move(tree_);
     }
 
@@ -57,12 +79,54 @@ private:
     RecogniseOptions opt_;
     Tolerances tol_;
     FaceCatalogue faces_;
+    MeshSection meshes_;
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
-    std::vector<Vec3> axes_;     // principal axes, on first use
+    std::vector<Vec3> axes_;     // principal axes
+    std::vector<bool> edgeChamfers_;  // per face: a chamfer on an edge of the blank
     RegionWidths widths_;
+    std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
+    std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
+    std::vector<std::vector<bool>> reservedSegment_;  // per chain and segment: a setup will take it
     double progressBase_ = 0, progressSpan_ = 1;
+    int threads_ = opt_.threads > 0 ? opt_.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+
+    // The chain segments some setup will take: all with an entry when the setups are found
+    // (their axes propose setups), else those entered along a given direction.
+    void reserveChainFaces(const std::vector<Vec3>& given) {
+        for (const HoleChain& c : chains_) {
+            std::vector<bool> r;
+            for (const HoleSegment& s : c.segments) {
+                bool some = false;
+                for (int e : s.entries) {
+                    if (given.empty()) some = true;
+                    for (const Vec3& d : given) some |= e * dot(c.axis, d) >= tol_.parallelCos;
+                }
+                r.push_back(some);
+            }
+            reservedSegment_.push_back(r);
+        }
+    }
+
+    // Per face: a wall of a reserved segment no setup has taken yet, or a step or cone of its
+    // chain (a counterbore's floor is no other pocket's wall).
+    std::vector<bool> pendingChainFaces() const {
+        std::vector<bool> out(static_cast<std::size_t>(faces_.size()), false);
+        for (std::size_t c = 0; c < chains_.size(); ++c) {
+            bool any = false;
+            for (std::size_t k = 0; k < chains_[c].segments.size(); ++k)
+                if (reservedSegment_[c][k] && !chainTaken_[c][k]) {
+                    for (int f : chains_[c].segments[k].faces) out[static_cast<std::size_t>(f)] = true;
+                    any = true;
+                }
+            if (any) {
+                for (int f : chains_[c].steps) out[static_cast<std::size_t>(f)] = true;
+                for (int f : chains_[c].cones) out[static_cast<std::size_t>(f)] = true;
+            }
+        }
+        return out;
+    }
 
     void progress(double f, const std::string& stage) {
         if (opt_.progress && !opt_.progress(progressBase_ + progressSpan_ * f, stage))
@@ -72,6 +136,7 @@ private:
     // Directions by what is still to machine, then the principal axes.
     void runAuto() {
         SetupDirectionSearch search(faces_, tol_);
+        search.setAside(edgeChamfers_);
         for (int round = 0; round < 12; ++round) {
             const std::optional<Vec3> d = search.next(claimed_);
             if (!d) break;
@@ -79,14 +144,26 @@ private:
             progressSpan_ = round == 0 ? 0.45 : 0.1;
             runSetup(*d);
         }
+        // Holes along axes no setup took: each axis a setup of its own, for its holes.
+        for (std::size_t c = 0; c < chains_.size(); ++c)
+            for (std::size_t k = 0; k < chains_[c].segments.size(); ++k) {
+                const HoleSegment& s = chains_[c].segments[k];
+                if (chainTaken_[c][k] || s.entries.empty()) continue;
+                const Vec3& d = chains_[c].axis;
+                const int e = s.entries.front();
+                const Vec3 tool{e * d[0], e * d[1], e * d[2]};
+                if (search.markTried(tool)) runSetup(tool, true);
+            }
         for (const Vec3& d : search.untriedPrincipalAxes()) runSetup(d);
         dropEmptySetups(tree_);
         if (tree_.setups.empty()) throw inputError("no machining feature found in any setup direction");
     }
 
-    void runSetup(const Vec3& d) {
+    // holesOnly: a setup a hole's axis proposed, for the hole chains along it alone.
+    void runSetup(const Vec3& d, bool holesOnly = false) {
         if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
-        const SetupView view(faces_, tol_, d, axes_, opt_);
+        SetupView view(faces_, tol_, d, axes_, opt_);
+        view.meshes = &meshes_;
         markBlankBoundaryFaces(view, onBlank_);
 
         SetupDirection setup;
@@ -94,22 +171,35 @@ private:
         setup.direction = view.frame.w;
         setup.name = directionName(view.frame.w);
 
-        LevelSlicing slicing(view, widths_, tree_.warnings);
-        const std::vector<double>& levels = slicing.levels();
         std::vector<ElementDraft> made;
-        const auto t0 = std::chrono::steady_clock::now();
-        for (std::size_t k = 0; k < levels.size(); ++k) {
-            progress(double(k) / levels.size(), "slicing " + setup.name);
-            slicing.slice(k, setup.id, made);
+        if (!holesOnly) {
+            LevelSlicing slicing(view, widths_, tree_.warnings);
+            const std::vector<double>& levels = slicing.levels();
+            const auto t0 = std::chrono::steady_clock::now();
+            slicing.sliceAll(
+                setup.id, made, threads_,
+                [&](double f) {
+                    return !opt_.progress ||
+                           opt_.progress(progressBase_ + progressSpan_ * f, "slicing " + setup.name);
+                },
+                claimed_);
+            if (std::getenv("AERONC_TRACE"))
+                std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(),
+                             levels.size(), made.size(),
+                             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
-        if (std::getenv("AERONC_TRACE"))
-            std::fprintf(stderr, "setup %s: %zu levels, %zu elements, %.3f s\n", setup.name.c_str(), levels.size(),
-                         made.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         progress(1.0, "linking " + setup.name);
         linkPocketTree(made, tol_.linear);
         attachElementFeatures(made, view);
         recogniseHoles(made, view);
+        addChainHoles(made, view, chains_, chainTaken_, claimed_);
+        recogniseCounterbores(made, view);
+        measureWidths(made, claimed_, widths_, threads_);
         attachTreeFeatures(made);
+        for (ElementDraft& in : made) in.el.setup = setup.id;
+        std::vector<bool> reserved = pendingChainFaces();
+        for (std::size_t i = 0; i < reserved.size(); ++i) reserved[i] = reserved[i] || edgeChamfers_[i];
+        releaseReservedFaces(made, reserved);
 
         claimFaces(made, setup, claimed_, tree_);
         tree_.setups.push_back(std::move(setup));

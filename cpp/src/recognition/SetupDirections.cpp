@@ -58,6 +58,10 @@ Vec3 checkedDirection(const FaceCatalogue& faces, const Tolerances& tol, const V
 SetupDirectionSearch::SetupDirectionSearch(const FaceCatalogue& faces, const Tolerances& tol)
     : faces_(faces), tol_(tol), consumed_(static_cast<std::size_t>(faces.size()), false) {}
 
+namespace {
+constexpr double kPrincipalShare = 0.2;  // of the best direction's score
+}  // namespace
+
 std::optional<Vec3> SetupDirectionSearch::next(const std::vector<bool>& claimed) {
     std::vector<Vec3> cands;
     for (int i = 0; i < faces_.size(); ++i) {
@@ -77,14 +81,26 @@ std::optional<Vec3> SetupDirectionSearch::next(const std::vector<bool>& claimed)
         for (const Vec3& d : tried_) seen |= dot(d, c) >= tol_.parallelCos;
         if (!seen) dirs.push_back(c);
     }
-    double bestScore = 0;
-    Vec3 best{0, 0, 0};
+    // The part's principal axes first, as a machinist clamps it: a slanted face (an edge
+    // chamfer, a step a few degrees off) calls for a tilted setup only when it holds far more
+    // to machine than any principal axis.
+    if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
+    auto principal = [&](const Vec3& d) {
+        for (const Vec3& a : axes_)
+            if (dot(a, d) >= tol_.parallelCos) return true;
+        return false;
+    };
+    double bestScore = 0, bestPrincipalScore = 0;
+    Vec3 best{0, 0, 0}, bestPrincipal{0, 0, 0};
     const auto ts = std::chrono::steady_clock::now();
     for (const Vec3& d : dirs) {
         const double s = score(d, claimed, false);
         // Ties resolve by the score only up to rounding, then by the first found.
         if (s > bestScore * (1 + 1e-9) + 1e-9) bestScore = s, best = d;
+        if (principal(d) && s > bestPrincipalScore * (1 + 1e-9) + 1e-9) bestPrincipalScore = s, bestPrincipal = d;
     }
+    if (bestPrincipalScore >= kPrincipalShare * bestScore && bestPrincipalScore > 0)
+        bestScore = bestPrincipalScore, best = bestPrincipal;
     if (std::getenv("AERONC_TRACE"))
         std::fprintf(stderr, "scored %zu directions: %.3f s\n", dirs.size(),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
@@ -106,23 +122,35 @@ std::vector<Vec3> SetupDirectionSearch::untriedPrincipalAxes() {
     return out;
 }
 
+void SetupDirectionSearch::setAside(const std::vector<bool>& faces) {
+    for (std::size_t i = 0; i < faces.size() && i < consumed_.size(); ++i)
+        if (faces[i]) consumed_[i] = true;
+}
+
+bool SetupDirectionSearch::markTried(const Vec3& d) {
+    for (const Vec3& t : tried_)
+        if (dot(d, t) >= tol_.parallelCos) return false;
+    tried_.push_back(d);
+    return true;
+}
+
 // Unclaimed floor area seen from d plus half the unclaimed concave cylinder area along d.
 double SetupDirectionSearch::score(const Vec3& d, const std::vector<bool>& claimed, bool consume) {
     const SetupFrame frame(d);
-    const std::vector<FaceInSetup> fs = classifyFaces(faces_, frame, tol_);
     std::unique_ptr<AxisRays> rays;  // built on the first floor that needs it
     double s = 0;
     for (int i = 0; i < faces_.size(); ++i) {
         if (claimed[static_cast<std::size_t>(i)] || consumed_[static_cast<std::size_t>(i)]) continue;
         const double before = s;
         const FaceInfo& f = faces_[i];
-        const FaceInSetup& fi = fs[static_cast<std::size_t>(i)];
-        if (fi.att == Attitude::Up) {
+        if (f.kind == SurfaceKind::Plane && dot(f.normal, frame.w) >= tol_.parallelCos) {
+            // A floor: a neighbour rises above it, and the tool reaches it.
+            const double h = dot(f.planePoint, frame.w);
             bool rising = false;
-            for (int n : f.neighbours) rising |= fs[static_cast<std::size_t>(n)].hi > fi.h + 10 * tol_.linear;
+            for (int n : f.neighbours) rising = rising || faces_.boundaryTop(n, frame.w) > h + 10 * tol_.linear;
             if (rising && !rays) rays = std::make_unique<AxisRays>(faces_, frame);
             if (rising && rays->reachable(i)) s += faces_.area(i);
-        } else if (f.kind == SurfaceKind::Cylinder && f.concave && fi.att == Attitude::Vertical) {
+        } else if (f.kind == SurfaceKind::Cylinder && f.concave && std::fabs(dot(f.axisDir, frame.w)) >= tol_.parallelCos) {
             s += 0.5 * faces_.area(i);
         }
         if (consume && s > before) consumed_[static_cast<std::size_t>(i)] = true;

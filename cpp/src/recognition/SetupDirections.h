@@ -28,11 +28,15 @@ class SetupDirectionSearch {
 public:
     SetupDirectionSearch(const FaceCatalogue& faces, const Tolerances& tol);
     // The untried direction with the most unclaimed floor-like area (reachable floors,
-    // concave cylinders along it); none when nothing is left to machine. The faces that
-    // called for it call for no other direction.
+    // concave cylinders along it), a principal axis first if one has any; none when nothing
+    // is left to machine. The faces that called for it call for no other direction.
     std::optional<Vec3> next(const std::vector<bool>& claimed);
     // The principal axes not tried yet: through openings have no floor to call for them.
     std::vector<Vec3> untriedPrincipalAxes();
+    // Records a direction tried for another reason (a hole's axis); false if it was tried.
+    bool markTried(const Vec3& d);
+    // Faces that call for no direction (per face): the blank's edge chamfers.
+    void setAside(const std::vector<bool>& faces);
 
 private:
     double score(const Vec3& d, const std::vector<bool>& claimed, bool consume);
@@ -40,6 +44,7 @@ private:
     Tolerances tol_;
     std::vector<bool> consumed_;  // faces whose direction was already tried
     std::vector<Vec3> tried_;
+    std::vector<Vec3> axes_;  // principal axes, on first use
 };
 
 // Setups that found nothing are noise in the tree: drops them and renumbers the rest.

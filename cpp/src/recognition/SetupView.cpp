@@ -1,5 +1,7 @@
 #include "SetupView.h"
 
+#include "Workers.h"
+
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <TopLoc_Location.hxx>
@@ -28,7 +30,6 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
                      const std::vector<Vec3>& principalAxes, const RecogniseOptions& options)
     : faces(faces), tol(tol), axis(d), frame(alignedFrame(d, principalAxes, tol)) {
     reach_.assign(static_cast<std::size_t>(faces.size()), -1);
-    rays_ = std::make_unique<AxisRays>(faces, frame);
     fs = classifyFaces(faces, frame, tol);
 
     // Part extent in the setup frame.
@@ -64,9 +65,18 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
     }
 }
 
+AxisRays& SetupView::rays() const {
+    std::lock_guard<std::mutex> lock(raysMutex_);
+    const std::size_t w = static_cast<std::size_t>(workerSlot());
+    if (rays_.size() <= w) rays_.resize(w + 1);
+    auto& r = rays_[w];
+    if (!r) r = std::make_unique<AxisRays>(faces, frame);
+    return *r;
+}
+
 bool SetupView::reachable(int i) const {
     signed char& r = reach_[static_cast<std::size_t>(i)];
-    if (r < 0) r = rays_->reachable(i) ? 1 : 0;
+    if (r < 0) r = rays().reachable(i) ? 1 : 0;
     return r == 1;
 }
 

@@ -8,9 +8,11 @@
 #include "AxisRays.h"
 #include "FaceCatalogue.h"
 #include "FaceInSetup.h"
+#include "MeshSection.h"
 #include "Tolerances.h"
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace aeronc::recognition {
@@ -29,15 +31,18 @@ public:
     std::vector<FaceInSetup> fs;  // index: face (0-based)
     double h0 = 0, h1 = 0;        // the part's height range
     P2 blankLo, blankHi;          // the blank's rectangle in the slicing plane
+    MeshSection* meshes = nullptr;  // the part's section of blends and splines, shared by the setups
     double blankH0 = 0, blankH1 = 0;  // and its height range: the part's, or the given blank's
 
-    AxisRays& rays() const { return *rays_; }
+    // Rays along the axis, one caster per worker (a caster keeps per-face state).
+    AxisRays& rays() const;
     // Whether the tool reaches face i from this side, computed once per face.
     bool reachable(int i) const;
 
 private:
-    std::unique_ptr<AxisRays> rays_;
-    mutable std::vector<signed char> reach_;  // -1 unknown, 0/1
+    mutable std::vector<std::unique_ptr<AxisRays>> rays_;  // by worker
+    mutable std::mutex raysMutex_;
+    mutable std::vector<signed char> reach_;  // -1 unknown, 0/1; reachable() before any thread
 };
 
 }  // namespace aeronc::recognition

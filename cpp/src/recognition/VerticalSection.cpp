@@ -4,6 +4,9 @@
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dAPI_InterCurveCurve.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <gp_Circ2d.hxx>
+#include <gp_Lin2d.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <TopExp_Explorer.hxx>
@@ -62,8 +65,49 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
     Handle(Geom2d_Line) line = new Geom2d_Line(p0, dir);
 
     std::vector<double> ts;
+    const double lx = -b / n, ly = a / n;  // the line's direction
     for (const Handle(Geom2d_TrimmedCurve)& tc : boundaryUV) {
         if (tc.IsNull()) return false;
+        // Lines and circles in closed form: most boundaries are, and the general
+        // intersection costs tens of microseconds each.
+        const Geom2dAdaptor_Curve ac(tc);
+        if (ac.GetType() == GeomAbs_Line) {
+            const gp_Lin2d l = ac.Line();
+            const double dx = l.Direction().X(), dy = l.Direction().Y();
+            const double den = lx * dy - ly * dx;
+            if (std::fabs(den) < 1e-12) {
+                const double off = (l.Location().X() - p0.X()) * ly - (l.Location().Y() - p0.Y()) * lx;
+                if (std::fabs(off) < 1e-9) return false;  // along the section: let OCCT decide
+                continue;
+            }
+            const double qx = l.Location().X() - p0.X(), qy = l.Location().Y() - p0.Y();
+            const double t = (qx * dy - qy * dx) / den;  // along the section line
+            const double s = (qx * ly - qy * lx) / den;  // along the boundary line
+            const double f = ac.FirstParameter(), g = ac.LastParameter();
+            if (s >= f - 1e-9 && s <= g + 1e-9) ts.push_back(t);
+            continue;
+        }
+        if (ac.GetType() == GeomAbs_Circle) {
+            const gp_Circ2d c = ac.Circle();
+            const double cx = c.Location().X() - p0.X(), cy = c.Location().Y() - p0.Y(), r = c.Radius();
+            const double mid = cx * lx + cy * ly;                 // foot of the centre on the line
+            const double off2 = cx * cx + cy * cy - mid * mid;     // squared distance centre-line
+            if (off2 > r * r + 1e-18) continue;
+            const double half = std::sqrt(std::max(0.0, r * r - off2));
+            const gp_Ax22d& ax = c.Position();
+            for (double t : {mid - half, mid + half}) {
+                const double px = p0.X() + t * lx - c.Location().X(), py = p0.Y() + t * ly - c.Location().Y();
+                // The circle's parameter of the point, within the trimmed range (periodic).
+                double u = std::atan2(px * ax.YDirection().X() + py * ax.YDirection().Y(),
+                                      px * ax.XDirection().X() + py * ax.XDirection().Y());
+                const double f = ac.FirstParameter(), g = ac.LastParameter();
+                while (u < f - 1e-9) u += 2 * M_PI;
+                while (u > f + 2 * M_PI) u -= 2 * M_PI;
+                if (u <= g + 1e-9) ts.push_back(t);
+                if (half < 1e-12) break;  // tangent: one point
+            }
+            continue;
+        }
         Geom2dAPI_InterCurveCurve inter(tc, line, 1e-9);
         for (int k = 1; k <= inter.NbPoints(); ++k) {
             const gp_Pnt2d q = inter.Point(k);

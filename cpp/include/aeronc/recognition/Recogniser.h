@@ -25,8 +25,11 @@ struct RecogniseOptions {
     double linearTolerance = 1e-3;   // mm: heights equal, points coincide
     double angularTolerance = 1e-3;  // rad: normal parallel / perpendicular to the axis
     double chordTolerance = 0.01;    // mm: sagitta when curves become polylines
-    // Called with a fraction 0..1 and a stage; returning false cancels (throws).
+    // Called with a fraction 0..1 and a stage; returning false cancels (throws). Called from
+    // the thread that called recognise().
     std::function<bool(double, const std::string&)> progress;
+    // Threads the levels of a setup are sliced on; 0: one per core of the machine.
+    int threads = 0;
 };
 
 // Layered-slicing recognition of generalised pockets, openings and holes.

@@ -1,0 +1,57 @@
+#include "EdgeChamfers.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace aeronc::recognition {
+
+std::vector<bool> findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, const std::vector<Vec3>& axes) {
+    std::vector<bool> out(static_cast<std::size_t>(faces.size()), false);
+    // Three axes, one of each ± pair.
+    std::vector<Vec3> frame;
+    for (const Vec3& a : axes) {
+        bool seen = false;
+        for (const Vec3& b : frame) seen |= std::fabs(dot(a, b)) >= tol.parallelCos;
+        if (!seen) frame.push_back(a);
+    }
+    if (frame.size() != 3) return out;
+    // The part's box along them, from points on every face's boundary.
+    std::array<double, 3> lo, hi;
+    lo.fill(std::numeric_limits<double>::max()), hi.fill(-std::numeric_limits<double>::max());
+    for (int i = 0; i < faces.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            hi[static_cast<std::size_t>(k)] = std::max(hi[static_cast<std::size_t>(k)], faces.boundaryTop(i, frame[static_cast<std::size_t>(k)]));
+            const Vec3 neg{-frame[static_cast<std::size_t>(k)][0], -frame[static_cast<std::size_t>(k)][1], -frame[static_cast<std::size_t>(k)][2]};
+            lo[static_cast<std::size_t>(k)] = std::min(lo[static_cast<std::size_t>(k)], -faces.boundaryTop(i, neg));
+        }
+    const double lin = std::max(10 * tol.linear, 1e-6 * (hi[0] - lo[0] + hi[1] - lo[1] + hi[2] - lo[2]));
+    for (int i = 0; i < faces.size(); ++i) {
+        const FaceInfo& f = faces[i];
+        if (f.kind != SurfaceKind::Plane) continue;
+        // Square to one axis, slanted to the other two.
+        int along = -1, slanted = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double c = std::fabs(dot(f.normal, frame[static_cast<std::size_t>(k)]));
+            if (c <= tol.squareSin) along = k;
+            else if (c < tol.parallelCos) ++slanted;
+        }
+        if (along < 0 || slanted != 2) continue;
+        // It reaches both box sides its normal points to: it cuts that edge of the box off.
+        bool both = true;
+        for (int k = 0; k < 3; ++k) {
+            if (k == along) continue;
+            const Vec3& a = frame[static_cast<std::size_t>(k)];
+            const bool up = dot(f.normal, a) > 0;
+            const Vec3 d = up ? a : Vec3{-a[0], -a[1], -a[2]};
+            const double reach = faces.boundaryTop(i, d);
+            const double side = up ? hi[static_cast<std::size_t>(k)] : -lo[static_cast<std::size_t>(k)];
+            both = both && std::fabs(reach - side) <= lin;
+        }
+        out[static_cast<std::size_t>(i)] = both;
+    }
+    return out;
+}
+
+}  // namespace aeronc::recognition
