@@ -215,25 +215,37 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
                     cutter = op_base.cutter_of(tc)
                     if cutter:
                         tools[tc.ToolNumber] = cutter["diameter"]
-            sim_ops = []
+            sim_ops, setups = [], []
             for p in programs:
                 if not p["path"].endswith(".ngc"):
                     continue
                 read = verification.reread(p["path"], tools)
                 to_part = setup_job.frame_placement(p["frame"]).inverse()
-                for op in verification.to_part_frame(read, machine_json, to_part):
+                in_part = verification.to_part_frame(read, machine_json, to_part)
+                in_job = verification.to_part_frame(read, machine_json, FreeCAD.Placement())
+                for op, op_job in zip(in_part, in_job):
                     job, fc_op = ops_by_label.get(op["label"], (None, None))
                     if fc_op is None:
                         raise MainJobError("verify: {} holds an operation '{}' that the Jobs do not".format(
                             os.path.basename(p["path"]), op["label"]))
                     cutter = op_base.cutter_of(fc_op.ToolController)
-                    op.update(cutter={"diameter": cutter["diameter"], "cornerRadius": cutter["cornerRadius"]},
-                              radialAllowance=_length(fc_op, "RadialAllowance"),
-                              axialAllowance=_length(fc_op, "AxialAllowance"))
+                    for o in (op, op_job):
+                        o.update(cutter={"diameter": cutter["diameter"], "cornerRadius": cutter["cornerRadius"]},
+                                 radialAllowance=_length(fc_op, "RadialAllowance"),
+                                 axialAllowance=_length(fc_op, "AxialAllowance"))
                     sim_ops.append(op)
+                setups.append({"name": p["setup"], "id": int(getattr(p["job"], setup_job.SETUP_TAG)),
+                               "to_part": to_part, "ops": in_job})
             finished, elements = verification.finished_faces(chain, result)
             blank = setup_job.blank_box(group)
-            report = verification.simulate(part.Shape, sim_ops, blank, finished, elements, cell_size)
+            if all(verification.axis_is_vertical(op["axis"]) for op in sim_ops):
+                # One model for the whole part: what one setup removes, the next one finds gone.
+                report = verification.simulate(part.Shape, sim_ops, blank, finished, elements, cell_size)
+            else:
+                setup_of_element = {"E{}".format(e["id"]): e.get("setup") for e in result.get("elements", [])}
+                for s in setups:
+                    s["elements"] = {k: v for k, v in elements.items() if setup_of_element.get(k) == s["id"]}
+                report = verification.simulate_by_setup(part.Shape, setups, blank, cell_size)
         run_data["verification"], run_data["coverage"] = _checks_of(report, len(sim_ops))
         st.report("; ".join("{} {}".format(v["check"], "pass" if v["ok"] else "FAIL")
                             for v in run_data["verification"]))

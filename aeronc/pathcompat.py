@@ -310,6 +310,14 @@ def path_of(commands):
     return Path.Path([Path.Command(name, params) for name, params in commands])
 
 
+def path_from_gcode(text):
+    """A Path from G-code text, one command per line (parsed by FreeCAD, not in Python)."""
+    import Path
+    p = Path.Path()
+    p.setFromGCode(text)
+    return p
+
+
 def create_path_object(doc, name):
     """A new Path::FeaturePython object (an operation's container) in doc; in the GUI it gets
     Path's own view provider, which draws its Path."""

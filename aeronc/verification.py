@@ -191,3 +191,71 @@ def simulate(part_shape, ops, blank, finished, elements, cell_size=0.5, options=
     with from_core(VerificationError, "simulation"):
         text = _core.simulate(part_shape.exportBrepToString(), json.dumps(program), json.dumps(options or {}))
     return json.loads(text)
+
+
+def axis_is_vertical(axis):
+    return abs(abs(float(axis[2])) - 1.0) < 1e-9
+
+
+def simulate_by_setup(part_shape, setups, blank, cell_size=0.5, options=None):
+    """Each setup on its own, in its Job's frame, where its tool axis is +Z: for parts machined
+    along other axes than +-Z, which the dexel model cannot take in one frame.
+    setups: [{"name", "to_part": Placement Job -> part, "ops": ops in the Job's frame (see
+    simulate), "elements": {label: finished faces of the setup's elements}}]; blank: the part
+    frame's box. Each setup starts from the whole blank (what other setups removed is not known
+    to it); the reports are merged: gouges and collisions of all setups, coverage of each
+    setup's own faces, the leftover map of the setup with the most operations."""
+    import FreeCAD
+    reports = []
+    for s in setups:
+        if not s["ops"]:
+            continue
+        to_job = s["to_part"].inverse()
+        shape = part_shape.copy()
+        shape.transformShape(to_job.toMatrix())
+        corners = [to_job.multVec(FreeCAD.Vector(x, y, z)) for x in (blank[0], blank[3])
+                   for y in (blank[1], blank[4]) for z in (blank[2], blank[5])]
+        box = (min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners),
+               max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners))
+        own = s["elements"]
+        faces = sorted(set().union(*[set(v) for v in own.values()])) if own else []
+        r = simulate(shape, s["ops"], box, faces, own, cell_size, options)
+        for op in r.get("ops", []):
+            op["setup"] = s["name"]
+        reports.append((s, r))
+    if not reports:
+        raise VerificationError("no setup has an operation to simulate")
+    return _merged(reports)
+
+
+def _merged(reports):
+    first = reports[0][1]
+    out = {"perSetup": [s["name"] for s, _ in reports], "grid": first.get("grid"),
+           "ops": [op for _, r in reports for op in r.get("ops", [])]}
+    for key in ("gouges", "collisions"):
+        sections = [(s, r.get(key, {})) for s, r in reports]
+        listed = []
+        for s, sec in sections:
+            for x in sec.get("list", []):
+                listed.append(dict(x, setup=s["name"]))
+        worst = None
+        for s, sec in sections:
+            w = sec.get("worst")
+            if w and (worst is None or float(w.get("depth", 0)) > float(worst.get("depth", 0))):
+                worst = dict(w, setup=s["name"])
+        out[key] = {"count": sum(int(sec.get("count", 0)) for _, sec in sections),
+                    "cells": sum(int(sec.get("cells", 0)) for _, sec in sections),
+                    "tolerance": sections[0][1].get("tolerance"), "worst": worst, "list": listed}
+    coverage = dict(first.get("coverage", {}))
+    coverage["faces"] = [f for _, r in reports for f in r.get("coverage", {}).get("faces", [])]
+    coverage["elements"] = [e for _, r in reports for e in r.get("coverage", {}).get("elements", [])]
+    out["coverage"] = coverage
+    out["stock"] = {"blankVolume": max(float(r["stock"]["blankVolume"]) for _, r in reports),
+                    "finalVolume": min(float(r["stock"]["finalVolume"]) for _, r in reports)}
+    out["timings"] = {k: sum(float(r.get("timings", {}).get(k, 0.0)) for _, r in reports)
+                      for k in first.get("timings", {})}
+    s, biggest = max(reports, key=lambda sr: len(sr[1].get("ops", [])))
+    if biggest.get("leftover"):
+        out["leftover"] = biggest["leftover"]
+        out["leftoverSetup"] = s["name"]
+    return out

@@ -209,16 +209,14 @@ class MachiningOperation(BaseProxy):
             obj.Path = pathcompat.path_of([])
             raise RuntimeError("{}: no tool controller; choose one for the operation".format(obj.Label))
         from aeronc import _core
-        parts = [json.loads(t) for t in _core.toolpaths([json.dumps(i) for i in self.toolpath_inputs(obj)])]
-        result = {"moves": [m for p in parts for m in p["moves"]],
-                  "cutLength": sum(p.get("cutLength", 0.0) for p in parts),
-                  "rapidLength": sum(p.get("rapidLength", 0.0) for p in parts)}
-        hfeed, vfeed = tc.HorizFeed.Value, tc.VertFeed.Value  # mm/s
-        obj.Path = pathcompat.path_of(moves.commands_of(result["moves"], hfeed, vfeed, obj.Label))
-        obj.CutLength = float(result.get("cutLength", 0.0))
-        obj.RapidLength = float(result.get("rapidLength", 0.0))
-        seconds = moves.estimate_seconds(result["moves"], hfeed, vfeed, tc.HorizRapid.Value, tc.VertRapid.Value)
-        obj.CycleTime = moves.clock_text(seconds)
+        # The core writes the Path's G-code and the time estimate: no Python work per move.
+        program = _core.toolpath_program([json.dumps(i) for i in self.toolpath_inputs(obj)], obj.Label,
+                                         tc.HorizFeed.Value, tc.VertFeed.Value,  # mm/s
+                                         tc.HorizRapid.Value, tc.VertRapid.Value)
+        obj.Path = pathcompat.path_from_gcode(program["gcode"])
+        obj.CutLength = float(program["cutLength"])
+        obj.RapidLength = float(program["rapidLength"])
+        obj.CycleTime = moves.clock_text(program["seconds"])
 
 
 def _set(obj, prop, value):

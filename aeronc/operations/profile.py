@@ -55,7 +55,7 @@ def wall_runs(contour, open_edges):
 class Profile(MachiningOperation):
     Type = "AeroNC::Profile"
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE]
-    GEOMETRY_KEYS = ("top", "bottom", "lead", "leadRadius")
+    GEOMETRY_KEYS = ("top", "bottom", "lead", "leadRadius", "floorFilletRadius")
     ICON = "Profile"
 
     def toolpath_inputs(self, obj):

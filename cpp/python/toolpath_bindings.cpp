@@ -4,6 +4,7 @@
 #include "Guarded.h"
 
 #include <aeronc/core/Error.h>
+#include <aeronc/toolpath/PathText.h>
 #include <aeronc/toolpath/ToolpathJson.h>
 
 #include <pybind11/pybind11.h>
@@ -53,4 +54,44 @@ void bindToolpath(py::module_& m) {
         py::arg("unit_jsons"),
         "The toolpaths of a list of machining units, computed without the GIL; returns a list of JSON texts. "
         "The first unit that fails raises ToolpathError naming its index.");
+
+    m.def(
+        "toolpath_program",
+        [](const std::vector<std::string>& units, const std::string& label, double horizontalFeed,
+           double verticalFeed, double horizontalRapid, double verticalRapid) {
+            return aeronc::python::guardedAs(g_toolpathError, [&] {
+                using namespace aeronc::toolpath;
+                Toolpath all;
+                std::string text;
+                double seconds = 0;
+                {
+                    py::gil_scoped_release nogil;
+                    for (std::size_t i = 0; i < units.size(); ++i) {
+                        try {
+                            Toolpath t = toolpathOfJson(units[i]);
+                            all.moves.insert(all.moves.end(), t.moves.begin(), t.moves.end());
+                            all.cutLength += t.cutLength;
+                            all.rapidLength += t.rapidLength;
+                        } catch (const aeronc::Error& e) {
+                            throw aeronc::Error(e.kind(), "unit " + std::to_string(i) + ": " + e.what());
+                        }
+                    }
+                    const PathFeeds feeds{horizontalFeed, verticalFeed, horizontalRapid, verticalRapid};
+                    text = pathText(all, feeds, label);
+                    seconds = estimatedSeconds(all, feeds);
+                }
+                py::dict out;
+                out["gcode"] = text;
+                out["moves"] = all.moves.size();
+                out["cutLength"] = all.cutLength;
+                out["rapidLength"] = all.rapidLength;
+                out["seconds"] = seconds;
+                return out;
+            });
+        },
+        py::arg("unit_jsons"), py::arg("label"), py::arg("horizontal_feed"), py::arg("vertical_feed"),
+        py::arg("horizontal_rapid") = 0.0, py::arg("vertical_rapid") = 0.0,
+        "The toolpaths of a list of machining units one after the other, as the G-code text of a FreeCAD Path "
+        "(feeds in mm/s) with their lengths and estimated seconds (rapid rates 0: rapids take no time): "
+        "{\"gcode\", \"moves\", \"cutLength\", \"rapidLength\", \"seconds\"}.");
 }

@@ -438,8 +438,14 @@ class NistPartsTest(unittest.TestCase):
                     for job in chain.Jobs:
                         bb = job.Stock.Shape.BoundBox
                         for op in job_ops(job):
-                            d = op.ToolController.Tool.Diameter.Value + max(0.0, op.RadialAllowance.Value
-                                                                            if hasattr(op, "RadialAllowance") else 0.0) + 1e-6
+                            a = max(0.0, op.RadialAllowance.Value if hasattr(op, "RadialAllowance") else 0.0)
+                            # The tool's axis runs R + a off the wall, more near a floor fillet wider than
+                            # its corner; a quarter-arc lead of radius R reaches at most sqrt(2) R further.
+                            unit = json.loads(op.Unit)
+                            corner = float((unit.get("cutter") or {}).get("cornerRadius", 0.0))
+                            fillet = max(0.0, float(unit.get("floorFilletRadius") or 0.0) - corner - a)
+                            radius = op.ToolController.Tool.Diameter.Value / 2
+                            d = radius + a + fillet + 2 ** 0.5 * radius + 1e-6
                             for _, x, y, z in moves_of(op):
                                 self.assertTrue(bb.XMin - d <= x <= bb.XMax + d and bb.YMin - d <= y <= bb.YMax + d
                                                 and z <= op.ClearanceHeight.Value + 1e-6, (name, op.Label, x, y, z))

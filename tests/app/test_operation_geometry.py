@@ -29,26 +29,52 @@ class WallRunsTest(unittest.TestCase):
         self.assertEqual(wall_runs(SQUARE, edges), [])
 
 
-class MovesTest(unittest.TestCase):
-    def test_moves_as_path_commands(self):
-        mv = [[0, 1, 2, 30], [2, 1, 2, 5], [1, 4, 2, 5], [0, 4, 2, 30],
-              [3, 7, 8, -10, 3, 0, 0], [3, 9, 8, -10, 3, 2.5, 0], [3, 11, 8, -10, 3, 0, 0.5], [0, 11, 8, 30]]
-        cmds = moves.commands_of(mv, 20.0, 5.0, "Op")
-        self.assertEqual([c[0] for c in cmds], ["(Op)", "G0", "G1", "G1", "G0", "G99", "G81", "G83", "G82", "G80", "G0"])
-        self.assertEqual(cmds[2][1], {"X": 1, "Y": 2, "Z": 5, "F": 5.0})      # a plunge at the vertical feed
-        self.assertEqual(cmds[3][1], {"X": 4, "Y": 2, "Z": 5, "F": 20.0})     # a feed at the horizontal one
-        self.assertEqual(cmds[6][1], {"X": 7, "Y": 8, "Z": -10, "R": 3, "F": 5.0})
-        self.assertEqual(cmds[7][1]["Q"], 2.5)
-        self.assertEqual(cmds[8][1]["P"], 0.5)
-        with self.assertRaises(ValueError):
-            moves.commands_of([[7, 0, 0, 0]], 1, 1)
+class PathProgramTest(unittest.TestCase):
+    """The core's G-code of a unit as a FreeCAD Path reads it, and the cycle time."""
 
-    def test_time_estimate_by_hand(self):
-        # 3 mm plunge at 1 mm/s, 4 mm feed at 2 mm/s, a 10 mm drill cycle at 1 mm/s in, rapids off.
-        mv = [[0, 0, 0, 3], [2, 0, 0, 0], [1, 4, 0, 0], [3, 4, 0, -8, 2, 0, 0]]
-        self.assertAlmostEqual(moves.estimate_seconds(mv, 2.0, 1.0), 3 + 2 + 10)
-        # With rapids of 10 mm/s: back up 10 mm from the bottom, and the first 3 mm are not a move.
-        self.assertAlmostEqual(moves.estimate_seconds(mv, 2.0, 1.0, 10.0, 10.0), 3 + 2 + 10 + 1)
+    DRILL = {"operation": "drill", "cutter": {"diameter": 5.0}, "clearance": 3.0, "peck": 0.0,
+             "holes": [{"u": 7, "v": 8, "diameter": 5, "top": 0, "bottom": -10, "through": False}]}
+
+    def test_drill_cycles_as_path_commands(self):
+        import json
+        from aeronc import _core
+        from aeronc import pathcompat
+        units = [json.dumps(self.DRILL), json.dumps(dict(self.DRILL, peck=2.5)),
+                 json.dumps(dict(self.DRILL, dwell=0.5))]
+        program = _core.toolpath_program(units, "Op (1)", 20.0, 5.0)
+        path = pathcompat.path_from_gcode(program["gcode"])
+        names = [c.Name for c in path.Commands]
+        self.assertEqual(names[0], "(Op [1])")
+        self.assertEqual([n for n in names if n.startswith("G8")], ["G81", "G80", "G83", "G80", "G82", "G80"])
+        g81 = [c for c in path.Commands if c.Name == "G81"][0].Parameters
+        self.assertEqual(g81, {"X": 7.0, "Y": 8.0, "Z": -10.0, "R": 3.0, "F": 5.0})
+        self.assertEqual([c for c in path.Commands if c.Name == "G83"][0].Parameters["Q"], 2.5)
+        self.assertEqual([c for c in path.Commands if c.Name == "G82"][0].Parameters["P"], 0.5)
+        # Three 13 mm cycles at 5 mm/s in, rapids taking no time.
+        self.assertAlmostEqual(program["seconds"], 3 * 13 / 5.0)
+        self.assertEqual(program["moves"], len([n for n in names if n in ("G0", "G1", "G81", "G82", "G83")]))
+
+    def test_pocket_feeds_and_time(self):
+        import json
+        from aeronc import _core
+        from aeronc import pathcompat
+        unit = {"operation": "pocket", "cutter": {"diameter": 6.0}, "top": 0.0, "bottom": -2.0, "stepDown": 2.0,
+                "contour": [[0, 0], [30, 0], [30, 20], [0, 20]], "islands": []}
+        program = _core.toolpath_program([json.dumps(unit)], "P", 20.0, 5.0, 100.0, 50.0)
+        path = pathcompat.path_from_gcode(program["gcode"])
+        # Words are modal: a feed is written where it changes, the first G1 has one.
+        g1 = [c for c in path.Commands if c.Name == "G1"]
+        self.assertIn("F", g1[0].Parameters)
+        feeds = {c.Parameters["F"] for c in g1 if "F" in c.Parameters}
+        self.assertIn(20.0, feeds)  # the helical entry and the rings at the horizontal feed
+        self.assertLessEqual(feeds, {20.0, 5.0})
+        self.assertTrue(all("F" not in c.Parameters for c in path.Commands if c.Name == "G0"))
+        # At least the cut length at the horizontal feed, at most all of it at the vertical one.
+        self.assertGreater(program["seconds"], program["cutLength"] / 20.0)
+        self.assertLess(program["seconds"], program["cutLength"] / 5.0 + program["rapidLength"] / 50.0)
+        self.assertEqual(path.Commands[-1].Name, "G0")
+
+    def test_clock_text(self):
         self.assertEqual(moves.clock_text(3725.4), "01:02:05")
 
 

@@ -426,6 +426,11 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     u.cutter = {t.diameter, t.cornerRadius, t.type};
     u.top = top;
     u.bottom = bottom;
+    // Through an opening a rounded corner must pass the wall's lower edge whole, or it leaves
+    // the corner's profile on the wall: the finishing passes go that much deeper, as far as
+    // the tool reaches.
+    if (e.type == ElementType::Opening && op == Operation::Profile)
+        u.bottom = std::max(bottom - t.cornerRadius, std::min(u.bottom, top - std::min(t.fluteLength, t.reach)));
     const bool floorless = e.type == ElementType::Opening || e.type == ElementType::Hole;
     u.radialAllowance = step.radialAllowance;
     u.axialAllowance = floorless ? 0.0 : step.axialAllowance;

@@ -14,4 +14,14 @@ double floorFilletOffset(double floorFilletRadius, double cornerRadius, double r
     return std::max(0.0, floorFilletRadius - (cornerRadius + radialAllowance));
 }
 
+double wallFilletOffset(double floorFilletRadius, double cornerRadius, double radialAllowance, double height) {
+    const double e0 = floorFilletOffset(floorFilletRadius, cornerRadius, radialAllowance);
+    if (e0 <= 0) return 0;
+    const double rho = cornerRadius + radialAllowance;
+    const double below = floorFilletRadius - (std::max(0.0, height) + rho);  // of the fillet's centre
+    if (below <= 0) return 0;
+    if (below >= e0) return e0;
+    return e0 - std::sqrt(e0 * e0 - below * below);
+}
+
 }  // namespace aeronc::toolpath

@@ -5,10 +5,13 @@
 #include "MoveWriter.h"
 #include "Validate.h"
 
+#include <aeronc/toolpath/FloorFillet.h>
+
 #include <aeronc/core/Error.h>
 #include <aeronc/toolpath/Levels.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 namespace aeronc::toolpath {
@@ -202,11 +205,11 @@ Polyline fromLongestEdge(const Loop& loop) {
 
 Toolpath profile(const ProfileUnit& unit, const Cutter& cutter, const ProfileParameters& p) {
     checkMilling(p, cutter, unit.top, unit.bottom);
-    const double R = cutter.radius(), d = R + p.radialAllowance, tol = p.chordTolerance;
+    const double R = cutter.radius(), d0 = R + p.radialAllowance, tol = p.chordTolerance;
     const double leadRadius = p.leadRadius ? *p.leadRadius : R;
     requireFinite(leadRadius, "leadRadius");
     if (!(leadRadius > 0)) throw inputError("leadRadius must be positive");
-    std::vector<Cut> cuts;
+    requireFinite(unit.floorFilletRadius, "floorFilletRadius");
     Polyline drive;
     ToolSide side = p.side;
     if (unit.closed) {
@@ -215,40 +218,61 @@ Toolpath profile(const ProfileUnit& unit, const Cutter& cutter, const ProfilePar
         const bool ccw = clip::signedArea(drive) > 0;
         if (side == ToolSide::Left) side = ccw ? ToolSide::Inside : ToolSide::Outside;
         if (side == ToolSide::Right) side = ccw ? ToolSide::Outside : ToolSide::Inside;
-        clip::Paths region{clip::toPath(drive)};
-        if (!ClipperLib::Orientation(region[0])) ClipperLib::ReversePath(region[0]);
-        const clip::Paths centres = clip::offset(region, side == ToolSide::Outside ? d : -d, tol);
-        if (centres.empty()) throw inputError("the cutter does not fit inside the drive");
-        for (const auto& path : centres) {
-            Loop l = clip::toLoop(path);
-            // Clipper's orientation keeps the part on the left outside the loop and on the right
-            // inside it: climb milling (part on the left) as is outside, reversed inside.
-            if ((side == ToolSide::Inside) == p.climb) std::reverse(l.begin(), l.end());
-            cuts.push_back({fromLongestEdge(l), {}, {}});
-        }
     } else {
         if (side == ToolSide::Outside || side == ToolSide::Inside)
             throw inputError("an open drive takes the side left or right");
         drive = trimmed(checkedPolyline(unit.drive), unit.startLimit, unit.endLimit);
-        Polyline path = sideOffset(drive, d, side == ToolSide::Left ? 1 : -1, tol);
-        // The part lies opposite the cutter: on the left of travel (climb) when the cutter runs right.
-        if ((side == ToolSide::Left) == p.climb) std::reverse(path.begin(), path.end());
-        cuts.push_back({path, {}, {}});
     }
-    const Leads leads(drive, unit.closed, side, d, p);
-    for (Cut& c : cuts) leads.add(c, leadRadius);
+    // The cuts with the tool's axis at d from the drive.
+    auto cutsAt = [&](double d) {
+        std::vector<Cut> cuts;
+        if (unit.closed) {
+            clip::Paths region{clip::toPath(drive)};
+            if (!ClipperLib::Orientation(region[0])) ClipperLib::ReversePath(region[0]);
+            const clip::Paths centres = clip::offset(region, side == ToolSide::Outside ? d : -d, tol);
+            if (centres.empty()) throw inputError("the cutter does not fit inside the drive");
+            for (const auto& path : centres) {
+                Loop l = clip::toLoop(path);
+                // Clipper's orientation keeps the part on the left outside the loop and on the right
+                // inside it: climb milling (part on the left) as is outside, reversed inside.
+                if ((side == ToolSide::Inside) == p.climb) std::reverse(l.begin(), l.end());
+                cuts.push_back({fromLongestEdge(l), {}, {}});
+            }
+        } else {
+            Polyline path = sideOffset(drive, d, side == ToolSide::Left ? 1 : -1, tol);
+            // The part lies opposite the cutter: on the left of travel (climb) when the cutter runs right.
+            if ((side == ToolSide::Left) == p.climb) std::reverse(path.begin(), path.end());
+            cuts.push_back({path, {}, {}});
+        }
+        const Leads leads(drive, unit.closed, side, d, p);
+        for (Cut& c : cuts) leads.add(c, leadRadius);
+        return cuts;
+    };
 
-    const std::vector<double> levels = cuttingLevels(unit.top, unit.bottom + p.axialAllowance, p.stepDown);
+    const double floorLevel = unit.bottom + p.axialAllowance;
+    const std::vector<double> levels = cuttingLevels(unit.top, floorLevel, p.stepDown);
+    // Near the floor a fillet holds the cutter off the wall by more: cuts per offset, computed once.
+    std::map<long long, std::vector<Cut>> byOffset;
+    std::vector<const std::vector<Cut>*> cutsOfLevel;
+    for (double level : levels) {
+        const double e = wallFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.radialAllowance,
+                                          level - floorLevel);
+        const long long key = std::llround(e * 1e6);
+        auto it = byOffset.find(key);
+        if (it == byOffset.end()) it = byOffset.emplace(key, cutsAt(d0 + e)).first;
+        cutsOfLevel.push_back(&it->second);
+    }
     const Heights hs = heightsOf(p, unit.top);
     const double approach = std::min(p.clearance, 1.0);
     Toolpath tp;
     MoveWriter w(tp);
-    const Point& first = cuts.front().leadIn.empty() ? cuts.front().path.front() : cuts.front().leadIn.front();
+    const Cut& c0 = cutsOfLevel.front()->front();
+    const Point& first = c0.leadIn.empty() ? c0.path.front() : c0.leadIn.front();
     w.rapid(first[0], first[1], hs.safe);
     for (std::size_t i = 0; i < levels.size(); ++i)
-        for (const Cut& c : cuts) {
+        for (const Cut& c : *cutsOfLevel[i]) {
             const Point& a = c.leadIn.empty() ? c.path.front() : c.leadIn.front();
-            w.rapidOver(a, hs.clearance, (i == 0 ? unit.top : levels[i - 1]) + approach);
+            w.rapidOver(a, hs.clearance, (i == 0 ? entryTop(p, unit.top) : levels[i - 1]) + approach);
             w.plunge(a[0], a[1], levels[i]);
             for (const Point& q : c.leadIn) w.feed(q, levels[i]);
             for (const Point& q : c.path) w.feed(q, levels[i]);

@@ -28,7 +28,7 @@ std::set<std::string> keysOf(const std::string& op) {
     auto add = [&](std::initializer_list<const char*> more) { k.insert(more.begin(), more.end()); };
     if (op == "pocket" || op == "rest") add({"contour", "islands", "openEdges", "floorFilletRadius", "finishingPass", "finishingAllowance"});
     if (op == "rest") add({"previousCutter"});
-    if (op == "profile") add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit"});
+    if (op == "profile") add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit", "floorFilletRadius"});
     if (op == "helix") add({"holes", "finishingAllowance", "breakThrough"});
     if (op == "drill") add({"holes", "retractHeight", "peck", "dwell", "pointAngle", "breakThrough"});
     return k;
@@ -141,6 +141,8 @@ Toolpath compute(const json& j) {
         get(j, "closed", u.closed);
         u.top = required(j, "top");
         u.bottom = required(j, "bottom");
+        get(j, "floorFilletRadius", u.floorFilletRadius);
+        if (u.floorFilletRadius < 0) throw inputError("floorFilletRadius must be at least 0");
         if (j.contains("startLimit")) u.startLimit = point(j.at("startLimit"));
         if (j.contains("endLimit")) u.endLimit = point(j.at("endLimit"));
         p.side = u.closed ? ToolSide::Outside : ToolSide::Left;
@@ -229,7 +231,9 @@ std::string toJson(const Toolpath& t) {
     return out;
 }
 
-std::string toolpathJson(const std::string& unitJson) {
+std::string toolpathJson(const std::string& unitJson) { return toJson(toolpathOfJson(unitJson)); }
+
+Toolpath toolpathOfJson(const std::string& unitJson) {
     json j;
     try {
         j = json::parse(unitJson);
@@ -238,7 +242,7 @@ std::string toolpathJson(const std::string& unitJson) {
     }
     const std::string name = j.is_object() && j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : "";
     try {
-        return toJson(compute(j));
+        return compute(j);
     } catch (const Error& e) {
         if (name.empty()) throw;
         throw Error(e.kind(), "unit '" + name + "': " + e.what());

@@ -52,6 +52,20 @@ int expectSoundChain(const recognition::DomainTree& tree, const MachiningChain& 
     for (const auto& e : tree.elements)
         EXPECT_TRUE(units[e.id] > 0 || listed.count(e.id)) << "element " << e.id << " neither machined nor listed";
 
+    // Through an opening the finishing passes go the breakthrough and the corner radius below its
+    // floor level, as far as the tool reaches: a rounded corner passes the wall's lower edge whole.
+    for (const MachiningUnit& u : c.units) {
+        const recognition::DomainElement* e = nullptr;
+        for (const auto& x : tree.elements)
+            if (x.id == u.element) e = &x;
+        if (!e || e->type != recognition::ElementType::Opening || u.operation != Operation::Profile) continue;
+        const ChainTool* t = c.tool(u.tool);
+        if (!t) return ADD_FAILURE() << "unit " << u.id << ": no tool " << u.tool, 0;
+        const double want = std::max(e->level - ChainOptions{}.breakthrough - u.cutter.cornerRadius,
+                                     std::min(e->level - ChainOptions{}.breakthrough, u.top - t->usableLength()));
+        EXPECT_NEAR(u.bottom, want, 1e-9) << "unit " << u.id;
+    }
+
     // The order lists every unit once.
     std::vector<int> sorted = c.order;
     std::sort(sorted.begin(), sorted.end());
@@ -279,5 +293,5 @@ TEST_P(NistChain, EveryElementMachinedOrListed) {
 
 INSTANTIATE_TEST_SUITE_P(Nist, NistChain,
                          ::testing::Values("nist_ftc_07_asme1_rd.stp", "nist_ftc_08_asme1_rc.stp",
-                                           "nist_ctc_01_asme1_ap203.stp"),
+                                           "nist_ftc_09_asme1_rd.stp", "nist_ctc_01_asme1_ap203.stp"),
                          [](const auto& info) { return info.param.substr(5, 6); });

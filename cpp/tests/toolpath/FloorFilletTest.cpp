@@ -20,8 +20,8 @@ namespace {
 // How far the grown corner arc of a cutter (axis at R + a + e from the wall x = 0, tip at the
 // floor + axial) reaches into the fillet's allowance layer, in the plane normal to the wall;
 // <= 0: clear. The layer is what the verification holds the cutter grown by a away from.
-double intoFillet(double rf, double rc, double a, double e) {
-    const double cx = a + e + rc, cz = a + rc, rho = rc + a;  // grown arc, lifted to the tip
+double intoFillet(double rf, double rc, double a, double e, double height = 0) {
+    const double cx = a + e + rc, cz = height + a + rc, rho = rc + a;  // grown arc, lifted to the tip
     double worst = -1e9;
     for (int k = 0; k <= 2000; ++k) {  // the lower-left quarter of the arc faces the fillet
         const double t = M_PI + 0.5 * M_PI * k / 2000.0;
@@ -52,6 +52,25 @@ TEST(FloorFillet, OffsetKeepsTheCornerOutOfTheFillet) {
               std::string::npos);
     EXPECT_NE(aeronc::test::inputErrorOf([] { floorFilletOffset(NAN, 2, 0.5); }).find("floorFilletRadius"),
               std::string::npos);
+}
+
+// Down a wall, level by level: the least offset that keeps the grown corner out of the fillet,
+// shrinking to 0 where the corner's centre reaches the fillet's height.
+TEST(FloorFillet, WallOffsetAtEachHeightIsTheLeastThatClearsTheFillet) {
+    struct Case { double rf, rc, a; };
+    for (const Case c : {Case{6.35, 4, 0}, Case{6.35, 4, 0.2}, Case{3, 0, 0.5}, Case{6, 2, 1}}) {
+        EXPECT_DOUBLE_EQ(wallFilletOffset(c.rf, c.rc, c.a, 0), floorFilletOffset(c.rf, c.rc, c.a));
+        double last = 1e9;
+        for (double h = 0; h <= c.rf + 1; h += 0.25) {
+            const double e = wallFilletOffset(c.rf, c.rc, c.a, h);
+            EXPECT_LE(e, last + 1e-12) << h;
+            last = e;
+            EXPECT_LE(intoFillet(c.rf, c.rc, c.a, e, h), 1e-9) << c.rf << " " << c.rc << " " << h;
+            if (e > 0.06) EXPECT_GT(intoFillet(c.rf, c.rc, c.a, e - 0.05, h), 1e-6) << c.rf << " " << c.rc << " " << h;
+        }
+        EXPECT_EQ(wallFilletOffset(c.rf, c.rc, c.a, c.rf - c.rc - c.a), 0.0);
+    }
+    EXPECT_EQ(wallFilletOffset(0, 2, 0.5, 0), 0.0);
 }
 
 // A 100 x 60 pocket with a 3 mm floor fillet, a 16 mm bull end mill with a 2 mm corner and

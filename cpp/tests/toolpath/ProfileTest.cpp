@@ -3,10 +3,14 @@
 #include "ErrorOf.h"
 #include "Checks.h"
 
+#include <aeronc/toolpath/FloorFillet.h>
 #include <aeronc/toolpath/Levels.h>
 #include <aeronc/toolpath/Profile.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
 
 using namespace aeronc::toolpath;
 using namespace aeronc::toolpath::test;
@@ -155,4 +159,34 @@ TEST(Profile, BadInputIsAClearError) {
     ProfileParameters q;
     q.leadRadius = -1;
     EXPECT_NE(err({rectangle(0, 0, 40, 40), true, {}, {}, 0, -5}, q).find("leadRadius"), std::string::npos);
+}
+
+// Round a 20 mm square island with a 3 mm floor fillet, a flat 8 mm end mill, levels every 1 mm
+// from 6 down to 0: the floor level runs 3 mm further out (the fillet's width), the levels
+// above the fillet at the radius, the ones between by wallFilletOffset.
+TEST(Profile, FloorFilletHoldsTheLowLevelsOffTheWall) {
+    ProfileUnit u;
+    u.drive = {{0, 0}, {20, 0}, {20, 20}, {0, 20}};
+    u.top = 6, u.bottom = 0;
+    u.floorFilletRadius = 3;
+    ProfileParameters p;
+    p.side = ToolSide::Outside;
+    p.lead = Lead::None;
+    p.stepDown = 1;
+    const Toolpath t = profile(u, {8, 0}, p);
+    std::map<double, double> nearest;  // level -> least distance of its cutting moves from the square
+    for (const Move& m : t.moves) {
+        if (m.kind != Move::Kind::Feed) continue;
+        const double dx = std::max({0.0 - m.u, 0.0, m.u - 20}), dy = std::max({0.0 - m.v, 0.0, m.v - 20});
+        const double d = std::hypot(dx, dy);
+        auto it = nearest.find(m.h);
+        if (it == nearest.end() || d < it->second) nearest[m.h] = d;
+    }
+    ASSERT_EQ(nearest.size(), 6u);
+    for (const auto& [h, d] : nearest) {
+        const double want = 4 + wallFilletOffset(3, 0, 0, h);
+        EXPECT_NEAR(d, want, 0.006) << "level " << h;
+    }
+    EXPECT_NEAR(nearest.at(0), 7, 0.006);
+    EXPECT_NEAR(nearest.at(5), 4, 0.006);
 }

@@ -16,4 +16,10 @@ namespace aeronc::toolpath {
 // e above; 0 for no fillet. Throws aeronc::inputError for a negative or non-finite radius.
 double floorFilletOffset(double floorFilletRadius, double cornerRadius, double radialAllowance);
 
+// The same at a level `height` above the floor's allowance (a profile's levels down a wall):
+// the grown corner arc about (rc + a + e, height + rc + a) stays inside the fillet's circle when
+//     e >= (rf - rc - a) - sqrt((rf - rc - a)^2 - (rf - height - rc - a)^2),
+// 0 once the arc's centre is at the fillet's height or above; floorFilletOffset at height 0.
+double wallFilletOffset(double floorFilletRadius, double cornerRadius, double radialAllowance, double height);
+
 }  // namespace aeronc::toolpath

@@ -10,6 +10,9 @@ struct ProfileUnit {
     // Open polylines only: the drive is cut between the points of the polyline nearest these.
     std::optional<Point> startLimit, endLimit;
     double top = 0, bottom = 0;
+    // Of the floor's edge along the wall: near the floor the cutter keeps out of it, level by
+    // level (FloorFillet.h wallFilletOffset).
+    double floorFilletRadius = 0;
 };
 
 // The side of the drive that the cutter runs on, the side of the material it removes.

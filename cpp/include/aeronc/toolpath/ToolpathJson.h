@@ -13,6 +13,9 @@ namespace aeronc::toolpath {
 // keys and everything the operations refuse.
 std::string toolpathJson(const std::string& unitJson);
 
+// The same, as the toolpath itself.
+Toolpath toolpathOfJson(const std::string& unitJson);
+
 std::string toJson(const Toolpath& toolpath);
 
 }  // namespace aeronc::toolpath
