@@ -5,6 +5,7 @@
       RecognitionCancelled     the progress callback asked to stop
     KnowledgeBaseError         the knowledge base or tool planning failed
     CuttingOptimisationError   the cutting-parameter optimisation cannot run or write
+    MachiningChainError        the machining chain cannot be built or updated
     PostError                  a post failed; names the operation and the move
 
 The C++ core (aeronc._core) raises exceptions of its own; `from_core` turns them into these
@@ -32,6 +33,10 @@ class KnowledgeBaseError(AeroNCError):
 
 class CuttingOptimisationError(AeroNCError):
     """The cutting-parameter optimisation cannot run or write; the message says why."""
+
+
+class MachiningChainError(AeroNCError):
+    """The machining chain or its Jobs cannot be built or updated; the message says why."""
 
 
 class PostError(AeroNCError):

@@ -137,6 +137,14 @@ def create_tool_controller(doc, job, label, bit_attrs, number, spindle_rpm, hori
     return tc
 
 
+def add_tool_controller(job, label, number):
+    """A new ToolController with FreeCAD's default tool bit in the Job (the caller sets the bit's
+    diameter, speeds and feeds)."""
+    tc = _tool_controller_module().Create(label, toolNumber=number)
+    job.Proxy.addToolController(tc)
+    return tc
+
+
 def _set_bit_attributes(bit, attributes):
     """FreeCAD 0.20's CreateFromAttrs drops a bit file's "attribute" section (Flutes, Material,
     ...): set the ones the bit's shape defines. An enumeration takes its option whatever the case."""
@@ -286,3 +294,85 @@ def tooled_operations(job):
     ops = getattr(job, "Operations", None)
     return [op for op in (ops.Group if ops is not None else [])
             if op_active(op) and tool_controller_of(op) is not None]
+
+
+def add_scripted_operation(doc, name):
+    """A new Path object whose Path an AeroNC proxy computes (FreeCAD 0.20 and 1.x both call
+    the type Path::FeaturePython); the caller adds it to a Job's Operations."""
+    return doc.addObject("Path::FeaturePython", name)
+
+
+# --- Jobs and operations of the machining chain ---------------------------------------------
+
+def path_of(commands):
+    """A Path from (name, parameters) pairs; parameters are FreeCAD's (lengths mm, feeds mm/s)."""
+    import Path
+    return Path.Path([Path.Command(name, params) for name, params in commands])
+
+
+def create_path_object(doc, name):
+    """A new Path::FeaturePython object (an operation's container) in doc; in the GUI it gets
+    Path's own view provider, which draws its Path."""
+    import Path  # noqa: F401  registers the Path object types
+    return doc.addObject("Path::FeaturePython", name)
+
+
+def add_operation(job, op, before=None):
+    """Put op into the Job's Operations (before another operation, or last)."""
+    job.Proxy.addOperation(op, before)
+
+
+def job_operations(job):
+    ops = getattr(job, "Operations", None)
+    return list(ops.Group) if ops is not None else []
+
+
+def set_job_operations(job, ops):
+    """Order the Job's Operations group (ops: the objects in their new order)."""
+    job.Operations.Group = list(ops)
+
+
+def set_model_placement(job, placement):
+    """Place every model clone of the Job: placement applies to the part's own placement."""
+    for clone in job_models(job):
+        originals = getattr(clone, "Objects", None) or []
+        base = originals[0].Placement if originals else FreeCAD.Placement()
+        clone.Placement = placement.multiply(base)
+
+
+def set_job_stock_box(job, box):
+    """Replace the Job's stock by a box (xmin, ymin, zmin, xmax, ymax, zmax) in the Job's frame."""
+    try:
+        from Path.Main import Stock  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathStock as Stock  # FreeCAD 0.20
+    doc = job.Document
+    if FreeCAD.ActiveDocument is not doc:
+        FreeCAD.setActiveDocument(doc.Name)
+    old = job.Stock
+    extent = FreeCAD.Vector(box[3] - box[0], box[4] - box[1], box[5] - box[2])
+    stock = Stock.CreateBox(job, extent, FreeCAD.Placement(FreeCAD.Vector(box[0], box[1], box[2]), FreeCAD.Rotation()))
+    stock.Label = old.Label if old is not None else "Stock"
+    job.Stock = stock
+    if FreeCAD.GuiUp and stock.ViewObject:
+        stock.ViewObject.Visibility = False
+    if old is not None and doc.getObject(old.Name) is not None:
+        doc.removeObject(old.Name)
+    return stock
+
+
+def job_height_offsets(job):
+    """(safe height offset, clearance height offset) of the Job's setup sheet, mm."""
+    sheet = getattr(job, "SetupSheet", None)
+    if sheet is None:
+        return 3.0, 5.0
+    return sheet.SafeHeightOffset.Value, sheet.ClearanceHeightOffset.Value
+
+
+def remove_job(job):
+    """Remove a Job with everything it holds (operations, tool controllers, stock, model
+    clones, setup sheet), as Path's own Delete does."""
+    doc = job.Document
+    job.Proxy.onDelete(job)
+    if doc.getObject(job.Name) is not None:
+        doc.removeObject(job.Name)

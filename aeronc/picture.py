@@ -86,7 +86,7 @@ def render(shape, result, path, title="", views=VIEWS, size=700):
     from matplotlib.patches import Patch
 
     box = shape.BoundBox
-    tol = max(box.DiagonalLength * 1e-3, 0.01)
+    tol = max(box.DiagonalLength * 3e-3, 0.01)  # a picture of 700 pixels needs no finer mesh
     tris, colours, edge_pts = [], [], []
     roles = result["faceRoles"]
     for i, face in enumerate(shape.Faces):

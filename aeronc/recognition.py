@@ -110,11 +110,15 @@ def recognise(source, directions=None, allowance=0.0, blank=None,
 
 def summary(result):
     """Counts of a result: {'setups', 'elements', 'closed_pocket', 'open_pocket', 'opening',
-    'hole', 'faces', 'unclaimed'}."""
+    'hole', 'faces', 'unclaimed'}; unclaimed: faces inside the blank that no element machines
+    (results written before the core listed them count faces without a role)."""
+    if "unclaimedFaces" in result:
+        unclaimed = len(result["unclaimedFaces"])
+    else:
+        unclaimed = sum(1 for r in result.get("faceRoles", []) if r == "unclaimed")
     counts = {"setups": len(result.get("setups", [])), "elements": len(result.get("elements", [])),
               "closed_pocket": 0, "open_pocket": 0, "opening": 0, "hole": 0,
-              "faces": result.get("faceCount", 0),
-              "unclaimed": sum(1 for r in result.get("faceRoles", []) if r == "unclaimed")}
+              "faces": result.get("faceCount", 0), "unclaimed": unclaimed}
     for el in result.get("elements", []):
         counts[el["type"]] = counts.get(el["type"], 0) + 1
     return counts
@@ -124,4 +128,4 @@ def summary_text(result):
     c = summary(result)
     return ("{setups} setups, {elements} domain elements: {closed_pocket} closed pockets, "
             "{open_pocket} open pockets, {opening} openings, {hole} holes; "
-            "{unclaimed} of {faces} faces unclaimed").format(**c)
+            "{unclaimed} of {faces} faces inside the blank left without an element").format(**c)

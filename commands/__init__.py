@@ -7,12 +7,17 @@ they do is imported when they run. base.py holds what every command shares.
 """
 import FreeCADGui
 
-COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_EditKnowledgeBase"]
+COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_MachiningChain",
+            "AeroNC_EditKnowledgeBase"]
+# Datum holes and compensated drilling (commands/datum_holes.py).
+DRILLING_COMMANDS = ["AeroNC_DefineDatumHoles", "AeroNC_CameraProgram", "AeroNC_ImportMeasurements",
+                     "AeroNC_CompensatedDrilling"]
 
 
 def register():
     """Register every AeroNC command with FreeCAD (once)."""
     from aeronc.commands.edit_knowledge_base import EditKnowledgeBase
+    from aeronc.commands.machining_chain import MachiningChain
     from aeronc.commands.optimise_cutting import OptimiseCutting
     from aeronc.commands.recognise_features import RecogniseFeatures
     from aeronc.commands.select_tools import SelectTools
@@ -20,6 +25,12 @@ def register():
     for name, command in (("AeroNC_RecogniseFeatures", RecogniseFeatures),
                           ("AeroNC_SelectTools", SelectTools),
                           ("AeroNC_OptimiseCutting", OptimiseCutting),
+                          ("AeroNC_MachiningChain", MachiningChain),
                           ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
+        if name not in known:
+            FreeCADGui.addCommand(name, command())
+    from aeronc.commands import datum_holes
+    for name, command in zip(DRILLING_COMMANDS, (datum_holes.DefineDatumHoles, datum_holes.CameraProgram,
+                                                 datum_holes.ImportMeasurements, datum_holes.CompensatedDrilling)):
         if name not in known:
             FreeCADGui.addCommand(name, command())

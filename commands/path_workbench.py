@@ -1,7 +1,10 @@
 """Puts AeroNC's commands into FreeCAD 0.20's Path workbench (0.20 has no
 WorkbenchManipulator): an "AeroNC" menu in Path's menu bar, an "AeroNC" toolbar, and the
-context menu of the 3-D view and tree: the commands for a selected solid, Select tools for
-Machining Features, Optimise cutting parameters for a Job, ToolController or operation.
+context menu of the 3-D view and tree: the commands for a selected solid, Select tools and
+Machining chain for Machining Features, Machining chain for a chain, Optimise cutting
+parameters for a Job, ToolController or operation, Define as datum (photo) hole for
+selected holes, and the camera program, measurements and compensated drilling for a
+photo-hole or measured-hole set.
 
 Path's workbench object is set up lazily on its first activation, so the menu and toolbar
 are added when the main window reports that Path has been activated, and the workbench is
@@ -39,13 +42,13 @@ def _on_workbench_activated(name):
 def extend(wb):
     """Add AeroNC's menu, toolbar and context menu to workbench wb; True if anything was
     added (it is idempotent)."""
-    from aeronc.commands import COMMANDS
+    from aeronc.commands import COMMANDS, DRILLING_COMMANDS
     changed = False
     if TOOLBAR not in wb.listToolbars():
-        wb.appendToolbar(TOOLBAR, COMMANDS)
+        wb.appendToolbar(TOOLBAR, COMMANDS + DRILLING_COMMANDS)
         changed = True
     if MENU not in wb.listMenus():
-        wb.appendMenu(MENU, COMMANDS)
+        wb.appendMenu(MENU, COMMANDS + ["Separator"] + DRILLING_COMMANDS)
         changed = True
     if not getattr(wb, "_aeronc_context_menu", False):
         original = wb.ContextMenu
@@ -54,11 +57,19 @@ def extend(wb):
             try:
                 original(recipient)  # Path's own items (its errors still reach FreeCAD)
             finally:
+                from aeronc.commands.machining_chain import selected_chain_source
                 from aeronc.commands.optimise_cutting import selected_target
                 from aeronc.commands.recognise_features import selected_solid
                 from aeronc.commands.select_tools import selected_machining_features
-                if selected_machining_features() is not None:
-                    wb.appendContextMenu("", ["Separator", "AeroNC_SelectTools"])
+                from aeronc.commands import datum_holes
+                if datum_holes.selected_holes() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_DefineDatumHoles"])
+                elif datum_holes.selected_photo_set() is not None or datum_holes.selected_measured_set() is not None:
+                    wb.appendContextMenu("", ["Separator"] + DRILLING_COMMANDS[1:])
+                elif selected_machining_features() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_SelectTools", "AeroNC_MachiningChain"])
+                elif selected_chain_source() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_MachiningChain"])
                 elif FreeCADGui.Selection.getSelection() and selected_target() is not None:
                     wb.appendContextMenu("", ["Separator", "AeroNC_OptimiseCutting"])
                 elif selected_solid() is not None:

@@ -14,6 +14,7 @@ from PySide import QtCore, QtGui
 
 from aeronc import knowledge_base
 from aeronc.errors import KnowledgeBaseError, from_core
+from aeronc.panels.narrow import ElidedLabel, button_rows, scrolling
 
 
 def show_error(text):
@@ -26,7 +27,7 @@ class _TableTab:
 
     def __init__(self, kb, name):
         self.name = name
-        self.widget = QtGui.QTableWidget()
+        self.widget = scrolling(QtGui.QTableWidget())
         self.widget.verticalHeader().setVisible(False)
         self.load(kb)
         self.widget.itemChanged.connect(self._changed)
@@ -101,10 +102,8 @@ class KnowledgeBasePanel:
         w.setWindowTitle("Knowledge base")
         w.setWindowIcon(QtGui.QIcon(aeronc.icon("KnowledgeBase")))
         lay = QtGui.QVBoxLayout(w)
-        where = QtGui.QLabel("{} (schema {})".format(self.kb.path, self.kb.schema_version))
-        where.setWordWrap(True)
-        where.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
-        lay.addWidget(where)
+        self.where = ElidedLabel("{} (schema {})".format(self.kb.path, self.kb.schema_version))
+        lay.addWidget(self.where)
         self.tabs = QtGui.QTabWidget()
         self.tables = []
         for name in self.kb.editable_tables():
@@ -113,21 +112,11 @@ class KnowledgeBasePanel:
             self.tabs.addTab(tab.widget, name.replace("_", " "))
         self.tabs.setMinimumHeight(380)
         lay.addWidget(self.tabs)
-        row = QtGui.QHBoxLayout()
-        for text, slot in (("Add row", lambda: self.tab().add_row()),
-                           ("Delete rows", lambda: self.tab().delete_selected()),
-                           ("Save", self.save), ("Revert", self.revert)):
-            b = QtGui.QPushButton(text)
-            b.clicked.connect(slot)
-            row.addWidget(b)
-        lay.addLayout(row)
-        row = QtGui.QHBoxLayout()
-        for text, slot in (("Import FreeCAD library...", self.import_library),
-                           ("Export FreeCAD library...", self.export_library)):
-            b = QtGui.QPushButton(text)
-            b.clicked.connect(slot)
-            row.addWidget(b)
-        lay.addLayout(row)
+        button_rows(lay, (("Add row", lambda: self.tab().add_row()),
+                          ("Delete rows", lambda: self.tab().delete_selected()),
+                          ("Save", self.save), ("Revert", self.revert)))
+        button_rows(lay, (("Import FreeCAD library...", self.import_library),
+                          ("Export FreeCAD library...", self.export_library)), per_row=1)
         return w
 
     def tab(self):

@@ -16,13 +16,13 @@ from PySide import QtCore, QtGui
 from aeronc import cutting_optimisation as co
 from aeronc import knowledge_base
 from aeronc.errors import AeroNCError
+from aeronc.panels.narrow import ScaledPicture, compact_combo, scrolling, wrapping_form
 from aeronc.panels.result_table import add_run_and_results
 
 COLUMNS = ["ToolController", "Operation", "a_p \u00d7 a_e mm", "n r/min", "v_f mm/min", "Active limits / problem"]
 METHOD_LABELS = [("nlopt", "Deterministic (scan + NLopt)"), ("ga", "Genetic algorithm"),
                  ("both", "Both, side by side")]
 MAP_POINTS = 81
-DOCK_WIDTH = 600  # px the panel asks of the task dock
 PLOT_SIZE_IN, PLOT_DPI = (5.4, 4.2), 80
 PREFS = "User parameter:BaseApp/Preferences/Mod/AeroNC/Optimise"
 
@@ -55,23 +55,14 @@ class OptimiseCuttingPanel:
         self.job, self.tcs = co.tool_controllers_of(target)
         self.form = self._build_form()
         OptimiseCuttingPanel.current = self
-        QtCore.QTimer.singleShot(0, self._widen)
         QtCore.QTimer.singleShot(0, self.run)
-
-    @staticmethod
-    def _widen():
-        """The table and the plot need room: widen the task dock if it is narrow."""
-        mw = FreeCADGui.getMainWindow()
-        for dock in mw.findChildren(QtGui.QDockWidget):
-            if dock.isVisible() and dock.objectName() in ("Combo View", "Tasks") and dock.width() < DOCK_WIDTH:
-                mw.resizeDocks([dock], [DOCK_WIDTH], QtCore.Qt.Horizontal)
 
     # -- the form ---------------------------------------------------------------------------
     def _build_form(self):
         import aeronc
         prefs = FreeCAD.ParamGet(PREFS)
         w = QtGui.QWidget()
-        w.setWindowTitle("Optimise cutting parameters")
+        w.setWindowTitle("Optimise cutting")  # the task box header: short enough for the default width
         w.setWindowIcon(QtGui.QIcon(aeronc.icon("OptimiseCutting")))
         lay = QtGui.QVBoxLayout(w)
         what = "{} ToolControllers of {}".format(len(self.tcs), self.job.Label) if len(self.tcs) > 1 \
@@ -80,9 +71,9 @@ class OptimiseCuttingPanel:
         head.setWordWrap(True)
         lay.addWidget(head)
 
-        form = QtGui.QFormLayout()
-        self.material = QtGui.QComboBox()
-        self.machine = QtGui.QComboBox()
+        form = wrapping_form()
+        self.material = compact_combo(QtGui.QComboBox())
+        self.machine = compact_combo(QtGui.QComboBox())
         finishing_ra = 3.2
         try:
             kb = knowledge_base.open_kb(self.kb_path)
@@ -102,6 +93,7 @@ class OptimiseCuttingPanel:
         self.method = QtGui.QComboBox()
         for key, label in METHOD_LABELS:
             self.method.addItem(label, key)
+        compact_combo(self.method)
         form.addRow("Method", self.method)
         self.ra_roughing = _spin(co.ROUGHING_RA_MAX_UM, 0.0001, 100, 4, "\u00b5m", 0.1)
         self.ra_finishing = _spin(finishing_ra, 0.0001, 100, 4, "\u00b5m", 0.1)
@@ -112,7 +104,7 @@ class OptimiseCuttingPanel:
         econ = QtGui.QGroupBox("Economics")
         econ.setCheckable(True)
         econ.setChecked(False)  # folded: the defaults serve most shops
-        ef = QtGui.QFormLayout(econ)
+        ef = wrapping_form(econ)
         d = co.DEFAULT_ECONOMICS
         self.t0 = _spin(prefs.GetFloat("t_0_min", d["t_0_min"]), 0, 1000, 2, "min")
         self.c0 = _spin(prefs.GetFloat("c_0_per_min", d["c_0_per_min"]), 0, 1e6, 2, "/min")
@@ -135,17 +127,15 @@ class OptimiseCuttingPanel:
         self.table.setSelectionMode(QtGui.QAbstractItemView.SingleSelection)
         self.table.itemSelectionChanged.connect(self._show_selected)
 
-        self.plot = QtGui.QLabel("")
-        self.plot.setAlignment(QtCore.Qt.AlignCenter)
+        self.plot = ScaledPicture()  # drawn at its full size, shown at the panel's width
         self.plot.setAutoFillBackground(True)
-        self.plot.setFixedHeight(int(PLOT_SIZE_IN[1] * PLOT_DPI) + 4)  # fixed: the layout never moves under it
         lay.addWidget(self.plot)
         self.report = QtGui.QPlainTextEdit()
         self.report.setReadOnly(True)
         self.report.setLineWrapMode(QtGui.QPlainTextEdit.NoWrap)
         self.report.setFont(QtGui.QFontDatabase.systemFont(QtGui.QFontDatabase.FixedFont))
         self.report.setMinimumHeight(120)
-        lay.addWidget(self.report)
+        lay.addWidget(scrolling(self.report))
         return w
 
     def _economics(self):
@@ -259,7 +249,7 @@ class OptimiseCuttingPanel:
                 p.tc.Label, p.params["kb"]["workpiece_material"], p.tool_material, p.operation), *PLOT_SIZE_IN, PLOT_DPI)
             pix = QtGui.QPixmap()
             pix.loadFromData(png, "PNG")
-            self.plot.setPixmap(pix)
+            self.plot.set_picture(pix)
         except Exception as e:  # a plot that cannot be drawn must not hide the answer
             FreeCAD.Console.PrintLog(traceback.format_exc())
             self.plot.setText("no plot: {}".format(e))

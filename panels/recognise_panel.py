@@ -12,6 +12,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import recognition
+from aeronc.panels.narrow import ElidedLabel, compact_combo, wrapping_form
 
 DIRECTION_CHOICES = [  # (text, directions; None = custom vector)
     ("Automatic (from the part)", []),
@@ -58,30 +59,28 @@ class RecognisePanel:
     def _build_form(self):
         import aeronc
         w = QtGui.QWidget()
-        w.setWindowTitle("Recognise machining features")
+        w.setWindowTitle("Recognise features")  # the task box header: short enough for the default width
         w.setWindowIcon(QtGui.QIcon(aeronc.icon("RecogniseFeatures")))
         lay = QtGui.QVBoxLayout(w)
-        lay.addWidget(QtGui.QLabel("Part: <b>{}</b>".format(self.part.Label if self.part else "?")))
+        lay.addWidget(ElidedLabel("Part: {}".format(self.part.Label if self.part else "?")))
 
         box = QtGui.QGroupBox("Setup directions")
-        f = QtGui.QFormLayout(box)
+        f = wrapping_form(box)
         self.direction = QtGui.QComboBox()
         for text, _ in DIRECTION_CHOICES:
             self.direction.addItem(text)
-        f.addRow("Directions", self.direction)
-        row = QtGui.QHBoxLayout()
+        f.addRow("Directions", compact_combo(self.direction))
+        # One row per component: three spin boxes side by side do not fit the default width.
         self.custom = [_spin(v, -1.0, 1.0, 4, step=0.1) for v in (0.0, 0.0, 1.0)]
         for axis, s in zip("XYZ", self.custom):
-            row.addWidget(QtGui.QLabel(axis))
-            row.addWidget(s)
-        f.addRow("Vector", row)
+            f.addRow("Vector {}".format(axis), s)
         self.direction.currentIndexChanged.connect(self._directions_changed)
         self._directions_changed()
         lay.addWidget(box)
 
         box = QtGui.QGroupBox("Blank")
-        f = QtGui.QFormLayout(box)
-        self.blank = QtGui.QComboBox()
+        f = wrapping_form(box)
+        self.blank = compact_combo(QtGui.QComboBox())
         self.blank.addItem("Part bounding box + allowance")
         self.jobs = self._find_jobs()
         for job in self.jobs:
@@ -94,7 +93,7 @@ class RecognisePanel:
         lay.addWidget(box)
 
         box = QtGui.QGroupBox("Tolerances")
-        f = QtGui.QFormLayout(box)
+        f = wrapping_form(box)
         self.linear = _spin(recognition.DEFAULT_LINEAR_TOLERANCE, 1e-6, 1.0, 6, " mm", 1e-3)
         self.angular = _spin(math.degrees(recognition.DEFAULT_ANGULAR_TOLERANCE), 1e-4, 5.0, 4, " \u00b0", 0.01)
         self.chord = _spin(recognition.DEFAULT_CHORD_TOLERANCE, 1e-4, 10.0, 4, " mm", 0.01)
@@ -213,6 +212,9 @@ class RecognisePanel:
         if self.run() is None:
             return False  # keep the panel open to change settings
         self._close()
+        # The part stays selected after the command, and the selection colour would hide the
+        # feature colours until the user clicks elsewhere: show the result.
+        FreeCADGui.Selection.clearSelection()
         return True
 
     def reject(self):

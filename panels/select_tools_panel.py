@@ -14,6 +14,7 @@ from PySide import QtCore, QtGui
 
 from aeronc import knowledge_base, tool_planning
 from aeronc.errors import AeroNCError
+from aeronc.panels.narrow import ElidedLabel, compact_combo, wrapping_form
 from aeronc.panels.result_table import add_run_and_results
 
 COLUMNS = ["Element", "Type", "Finishing", "Roughing", "\u03b7", "Narrow", "Problem"]
@@ -41,9 +42,9 @@ class SelectToolsPanel:
         w.setWindowTitle("Select tools")
         w.setWindowIcon(QtGui.QIcon(aeronc.icon("SelectTools")))
         lay = QtGui.QVBoxLayout(w)
-        form = QtGui.QFormLayout()
-        self.material = QtGui.QComboBox()
-        self.machine = QtGui.QComboBox()
+        form = wrapping_form()
+        self.material = compact_combo(QtGui.QComboBox())
+        self.machine = compact_combo(QtGui.QComboBox())
         try:
             kb = knowledge_base.open_kb(self.kb_path)
             self.material.addItems(kb.workpiece_materials())
@@ -59,10 +60,8 @@ class SelectToolsPanel:
             self.machine.setCurrentIndex(self.machine.findText(previous))
         form.addRow("Workpiece material", self.material)
         form.addRow("Machine", self.machine)
-        kb_label = QtGui.QLabel(where)
-        kb_label.setWordWrap(True)
-        kb_label.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
-        form.addRow("Knowledge base", kb_label)
+        self.kb_label = ElidedLabel(where)  # a path: the whole width, the middle elided
+        form.addRow("Knowledge base", self.kb_label)
         lay.addLayout(form)
         self.run_button, self.summary, self.table = add_run_and_results(lay, "Select tools", self.run, COLUMNS)
         self.table.setMinimumHeight(260)

@@ -35,7 +35,9 @@ case "${1:-}" in
   demo)
     out=$ROOT/out/demo
     mkdir -p "$out"
-    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py"
+    # FreeCAD's start-up banner is not the job's; the job's own log follows it.
+    HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py" 2>&1 |
+      awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
     ;;
   post)
     out=$ROOT/out/post

@@ -48,22 +48,28 @@ def create_profile(name="Profile"):
 
 def add_tool_controller(job, label, number):
     """A new tool controller (FreeCAD's default tool bit) in the Job."""
-    try:
-        from Path.Tool import Controller  # FreeCAD 1.x
-    except ImportError:
-        from PathScripts import PathToolController as Controller  # FreeCAD 0.20
-    tc = Controller.Create(label, toolNumber=number)
-    job.Proxy.addToolController(tc)
-    return tc
+    from aeronc import pathcompat
+    return pathcompat.add_tool_controller(job, label, number)
 
 
-def create_pocket_shape(name="Pocket"):
-    """FreeCAD's Pocket Shape operation in the active document's Job (headless)."""
+def create_pocket_shape(name="Pocket", job=None):
+    """FreeCAD's Pocket Shape operation in job, or in the active document's only Job (headless).
+    The Job must hold exactly one ToolController: headless, Path cannot choose between several."""
     try:
         from Path.Op import PocketShape  # FreeCAD 1.x
     except ImportError:
         from PathScripts import PathPocketShape as PocketShape  # FreeCAD 0.20
-    return PocketShape.Create(name)
+    return PocketShape.Create(name, parentJob=job)
+
+
+def create_adaptive(name="Adaptive", job=None):
+    """FreeCAD's Adaptive clearing operation in job, or in the active document's only Job
+    (headless; the Job must hold exactly one ToolController)."""
+    try:
+        from Path.Op import Adaptive  # FreeCAD 1.x
+    except ImportError:
+        from PathScripts import PathAdaptive as Adaptive  # FreeCAD 0.20
+    return Adaptive.Create(name, parentJob=job)
 
 
 def create_custom_operation(name, gcode):

@@ -17,13 +17,26 @@ def attach(obj, restoring=False):
     if vobj is None or getattr(vobj, "Proxy", None) is not None:
         return
     from aeronc.objects import DOMAIN_ELEMENT, MACHINING_FEATURES, SETUP_DIRECTION
+    from aeronc.objects import compensated_drilling, measured_hole_set, photo_hole_set
+    from aeronc.objects.machining_chain import TYPE as MACHINING_CHAIN
+    from aeronc.operations import TYPES as OPERATIONS
     t = proxy_type(obj)
-    if t == MACHINING_FEATURES:
+    if t == photo_hole_set.TYPE:
+        from aeronc.viewproviders.view_photo_hole_set import ViewPhotoHoleSet as cls
+    elif t == measured_hole_set.TYPE:
+        from aeronc.viewproviders.view_measured_hole_set import ViewMeasuredHoleSet as cls
+    elif t == compensated_drilling.TYPE:
+        from aeronc.viewproviders.view_compensated_drilling import ViewCompensatedDrilling as cls
+    elif t == MACHINING_FEATURES:
         from aeronc.viewproviders.view_machining_features import ViewMachiningFeatures as cls
     elif t == SETUP_DIRECTION:
         from aeronc.viewproviders.view_setup_direction import ViewSetupDirection as cls
     elif t == DOMAIN_ELEMENT:
         from aeronc.viewproviders.view_domain_element import ViewDomainElement as cls
+    elif t == MACHINING_CHAIN:
+        from aeronc.viewproviders.view_machining_chain import ViewMachiningChain as cls
+    elif t in OPERATIONS:
+        from aeronc.viewproviders.view_operation import ViewOperation as cls
     else:
         return
     cls(vobj)

@@ -8,12 +8,16 @@
 //                       [--machine NAME] [--resources DIR]
 //   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
 //                   [--resources DIR]
+//   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
+//                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
+#include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
+#include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>
@@ -58,6 +62,9 @@ const char* kUsage =
     "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
     "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
     "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"
+    "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+    "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
+    "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
     "  --time-limit S (recognise, select-tools PART): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
@@ -283,6 +290,82 @@ int selectToolsCmd(int argc, char** argv) {
     return 0;
 }
 
+// chain PART ... recognises the part, then plans tools and the chain; chain --tree FILE ...
+// plans a stored recognition.
+int chainCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("chain needs a part file or --tree RECOGNITION.json");
+    const bool fromTree = std::string(argv[2]) == "--tree";
+    if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
+    const std::string part = argv[fromTree ? 3 : 2];
+    std::string jsonOut, kbPath, material, resources, machine, family = "integral_panel";
+    bool directions = false;
+    aeronc::recognition::RecogniseOptions opt;
+    forEachOption(
+        argc, argv,
+        [&](const std::string& a, const Next& next) {
+            if (a == "--json") jsonOut = next();
+            else if (a == "--kb") kbPath = next();
+            else if (a == "--material") material = next();
+            else if (a == "--machine") machine = next();
+            else if (a == "--family" || a == "--template") family = next();
+            else if (a == "--directions") {
+                opt.directions = parseDirections(next());
+                directions = true;
+            } else if (a == "--resources") resources = next();
+            else return false;
+            return true;
+        },
+        fromTree ? 4 : 3);
+    if (fromTree && directions)
+        throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
+    if (kbPath.empty()) throw aeronc::inputError("chain needs --kb KB.sqlite (created when missing)");
+    if (material.empty()) throw aeronc::inputError("chain needs --material NAME, e.g. 7050-T7451");
+
+    aeronc::recognition::DomainTree tree;
+    if (fromTree) {
+        const std::string text = aeronc::readTextFile(part, "recognition file");
+        try {
+            tree = aeronc::recognition::fromJson(text);
+        } catch (const aeronc::Error& e) {
+            throw aeronc::inputError(part + ": " + e.what());
+        }
+    }
+    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
+        kbPath, [&] { return kbResources(resources, argv[0]).string(); });
+    // The slow part last: material, machine and template are checked before recognition.
+    const auto known = kb.workpieceMaterials();
+    if (std::find(known.begin(), known.end(), material) == known.end()) {
+        std::string list;
+        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
+        throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list +
+                                 ")");
+    }
+    aeronc::kb::chainOptions(kb, material, machine);
+    aeronc::kb::loadProcessTemplate(kb, family);
+
+    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(part), opt);
+    const auto chain = aeronc::kb::planChain(tree, kb, material, machine, family);
+    const std::string text = aeronc::chain::toJson(chain);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+
+    int failed = 0, processes = 0;
+    for (const auto& c : chain.checks) failed += !c.ok;
+    for (const auto& s : chain.setups) processes += static_cast<int>(s.processes.size());
+    std::cerr << part << ": template " << chain.processTemplate.name << ", " << tree.elements.size()
+              << " element(s), " << chain.units.size() << " unit(s) in " << processes << " process(es), "
+              << chain.unmachined.size() << " unmachined note(s); rapid travel " << chain.travel.rulesOnly << " -> "
+              << chain.travel.optimised << " mm (" << chain.travel.savedPercent << " % saved); " << failed
+              << " rule failure(s)\n";
+    for (const auto& m : chain.unmachined)
+        std::cerr << "unmachined: element " << m.element << (m.step ? std::string(" step ") + toString(*m.step) : "")
+                  << ": " << m.reason << "\n";
+    for (const auto& c : chain.checks)
+        if (!c.ok) std::cerr << "rule " << c.rule << ": " << c.node << ": " << c.message << "\n";
+    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
+    return 0;
+}
+
 int optimiseCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("optimise needs a parameter file (JSON), e.g. resources/optimise/*.json");
     std::string file = argv[2], jsonOut, kbPath, resources, method = "nlopt";
@@ -340,6 +423,7 @@ int runCommand(const std::string& cmd, int argc, char** argv) {
         if (cmd == "panel") return panelCmd(argc, argv);
         if (cmd == "select-tools") return selectToolsCmd(argc, argv);
         if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
+        if (cmd == "chain") return chainCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {

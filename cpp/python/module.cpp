@@ -57,6 +57,10 @@ recognition::RecogniseOptions makeOptions(const std::vector<std::array<double, 3
 }  // namespace
 
 void bindOptimise(py::module_& m);  // optimise_bindings.cpp
+void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machining units
+void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
+void bindChain(py::module_& m);     // chain_bindings.cpp
+void bindVerify(py::module_& m);    // verify_bindings.cpp: simulation of a program against the part
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -64,13 +68,14 @@ PYBIND11_MODULE(_core, m) {
     aeronc::python::bindKnowledgeBase(m);
 
     // Reading and recognition run with OCCT's faults caught: a damaged shape that makes
-    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on.
-    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const recognition::RecogniseOptions& o,
-                            const std::string& what) {
+    // OpenCASCADE fault raises RecognitionError, and FreeCAD's session goes on. Faces are
+    // numbered as the shape numbers them: the FaceN of the object the shape came from.
+    auto recogniseWith = [](const std::function<TopoDS_Shape()>& load, const std::string& origin,
+                            const recognition::RecogniseOptions& o, const std::string& what) {
         recognition::DomainTree t;
         {
             py::gil_scoped_release nogil;
-            runCatchingOcctFaults([&] { t = recognition::recognise(load(), o); }, what);
+            runCatchingOcctFaults([&] { t = recognition::recogniseShape(load(), origin, o); }, what);
         }
         return recognition::toJson(t, -1);
     };
@@ -82,7 +87,8 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith([&] { return partFromBrepText(brep); }, o, "recognising the shape");
+                return recogniseWith([&] { return shapeFromBrepText(brep); }, "BREP text", o,
+                                     "recognising the shape");
             });
         },
         py::arg("brep_text"), py::arg("directions") = std::vector<std::array<double, 3>>{},
@@ -97,7 +103,7 @@ PYBIND11_MODULE(_core, m) {
                         const py::object& progress) {
             return guarded([&] {
                 const auto o = makeOptions(directions, allowance, blank, lin, ang, chord, progress);
-                return recogniseWith([&] { return loadPart(path); }, o, path);
+                return recogniseWith([&] { return loadPart(path); }, path, o, path);
             });
         },
         py::arg("path"), py::arg("directions") = std::vector<std::array<double, 3>>{}, py::arg("allowance") = 0.0,
@@ -150,5 +156,9 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("spec_json") = std::string(), "Build a generated integral panel: (brep_text, truth_json).");
     bindOptimise(m);
+    bindChain(m);
     bindKinematics(m);
+    bindToolpath(m);
+    bindCompensation(m);
+    bindVerify(m);
 }

@@ -100,6 +100,7 @@ void expectSameTree(const DomainTree& a, const DomainTree& b) {
     }
     EXPECT_EQ(a.faceRoles, b.faceRoles);
     EXPECT_EQ(a.faceElement, b.faceElement);
+    EXPECT_EQ(a.unclaimedFaces, b.unclaimedFaces);
     EXPECT_EQ(a.warnings, b.warnings);
 }
 
@@ -212,6 +213,7 @@ DomainTree handTree() {
     t.faceRoles = {FaceRole::Wall, FaceRole::Wall, FaceRole::IslandWall, FaceRole::Floor, FaceRole::Top,
                    FaceRole::FloorFillet};
     t.faceElement = {0, 0, 0, 0, -1, 0};
+    t.unclaimedFaces = {5};
     t.warnings = {"a warning", "another, with \"quotes\""};
     return t;
 }
@@ -338,4 +340,15 @@ TEST(DomainTreeJson, LinksAndNumbersOutOfRangeAreNamed) {
     has(errorAfter([](json& j) { j["faceElement"].push_back(0); }), "faceElement: 7 entries for 6 faces");
     has(errorAfter([](json& j) { j["faceElement"][4] = 3; }),
         "faceElement[4]: element 3 does not exist (-1 or 0..2)");
+    has(errorAfter([](json& j) { j["unclaimedFaces"] = {9}; }),
+        "unclaimedFaces[0]: face 9 is not a face of the part (1..6)");
+}
+
+// A tree written before unclaimedFaces existed reads back with none.
+TEST(DomainTreeJson, OlderTreeWithoutUnclaimedFacesReads) {
+    json j = json::parse(toJson(handTree()));
+    j.erase("unclaimedFaces");
+    const DomainTree back = fromJson(j.dump());
+    EXPECT_TRUE(back.unclaimedFaces.empty());
+    EXPECT_EQ(back.faceElement, handTree().faceElement);
 }

@@ -11,6 +11,7 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -25,6 +26,9 @@ using aeronc::toolselect::Tool;
 using aeronc::test::inputErrorOf;
 
 namespace {
+
+// Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills.
+constexpr std::size_t kShippedTools = 58;
 
 const std::string& schemaSql() {
     static const std::string s = aeronc::readTextFile(AERONC_RESOURCES "/kb/schema.sql", "schema");
@@ -84,7 +88,7 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
         KnowledgeBase kb = openDefault(p);
         EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
         const auto tools = kb.tools();
-        EXPECT_EQ(tools.size(), 29u);
+        EXPECT_EQ(tools.size(), kShippedTools);
         for (const Tool& t : tools) EXPECT_NO_THROW(t.validate()) << t.id;
         EXPECT_EQ(tools.front().id, "FM-125");  // largest first
         EXPECT_EQ(tools.front().flutes, 4);
@@ -111,7 +115,7 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
     }
     EXPECT_FALSE(fs::exists(p.string() + ".creating"));
     // Opening again keeps the rows (no second insert of the defaults).
-    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+    EXPECT_EQ(openDefault(p).tools().size(), kShippedTools);
 }
 
 // The SQL folder is needed, and asked for, only when the file has to be built.
@@ -122,9 +126,9 @@ TEST_F(KnowledgeBaseTest, SqlFolderAskedOnlyToBuild) {
         ++asked;
         return (fs::path(AERONC_RESOURCES) / "kb").string();
     };
-    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), 29u);
+    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), kShippedTools);
     EXPECT_EQ(asked, 1);
-    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), 29u);
+    EXPECT_EQ(KnowledgeBase::openWithSqlFolder(p.string(), folder).tools().size(), kShippedTools);
     EXPECT_EQ(asked, 1);
     const fs::path other = p.parent_path() / "other.sqlite";
     try {
@@ -149,7 +153,7 @@ TEST_F(KnowledgeBaseTest, AddToolPersists) {
     const fs::path p = file();
     openDefault(p).addTool(tool("USER-7", 7, 0.5, "bull"), 33.0);
     const auto tools = openDefault(p).tools();
-    ASSERT_EQ(tools.size(), 30u);
+    ASSERT_EQ(tools.size(), kShippedTools + 1);
     const auto it = std::find_if(tools.begin(), tools.end(), [](const Tool& t) { return t.id == "USER-7"; });
     ASSERT_NE(it, tools.end());
     EXPECT_DOUBLE_EQ(it->cornerRadius, 0.5);
@@ -168,7 +172,7 @@ TEST_F(KnowledgeBaseTest, ImpossibleToolRejectedAndDatabaseUnchanged) {
     shortReach.reach = 5;
     e = inputErrorOf([&] { kb.addTool(shortReach); });
     EXPECT_NE(e.find("BAD-3"), std::string::npos) << e;
-    EXPECT_EQ(kb.tools().size(), 29u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools);
 
     // A duplicate id and an unknown tool material are named too.
     e = inputErrorOf([&] { kb.addTool(tool("EM-F10", 10)); });
@@ -177,7 +181,7 @@ TEST_F(KnowledgeBaseTest, ImpossibleToolRejectedAndDatabaseUnchanged) {
     ceramic.material = "ceramic";
     e = inputErrorOf([&] { kb.addTool(ceramic); });
     EXPECT_NE(e.find("unknown tool material 'ceramic'"), std::string::npos) << e;
-    EXPECT_EQ(kb.tools().size(), 29u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools);
 }
 
 TEST_F(KnowledgeBaseTest, DatabaseCheckConstraintsRefuseImpossibleTools) {
@@ -200,7 +204,7 @@ TEST_F(KnowledgeBaseTest, DatabaseCheckConstraintsRefuseImpossibleTools) {
     };
     for (const char* sql : bad) EXPECT_NE(sqlite3_exec(db, sql, nullptr, nullptr, nullptr), SQLITE_OK) << sql;
     sqlite3_close(db);
-    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+    EXPECT_EQ(openDefault(p).tools().size(), kShippedTools);
 }
 
 TEST_F(KnowledgeBaseTest, ImportIsAllOrNothing) {
@@ -208,18 +212,18 @@ TEST_F(KnowledgeBaseTest, ImportIsAllOrNothing) {
     std::vector<Tool> batch = {tool("IMP-1", 5), tool("IMP-2", 7), tool("IMP-3", 9, 10, "bull"), tool("IMP-4", 11)};
     const std::string e = inputErrorOf([&] { kb.importTools(batch); });
     EXPECT_NE(e.find("IMP-3"), std::string::npos) << e;
-    EXPECT_EQ(kb.tools().size(), 29u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools);
 
     // A batch that fails inside the database (a duplicate in the middle) is rolled back too.
     batch = {tool("IMP-1", 5), tool("EM-F6", 6), tool("IMP-4", 11)};
     const std::string dup = inputErrorOf([&] { kb.importTools(batch); });
     EXPECT_NE(dup.find("EM-F6"), std::string::npos) << dup;
     EXPECT_NE(dup.find("nothing was imported"), std::string::npos) << dup;
-    EXPECT_EQ(kb.tools().size(), 29u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools);
 
     batch = {tool("IMP-1", 5), tool("IMP-4", 11)};
     kb.importTools(batch);
-    EXPECT_EQ(kb.tools().size(), 31u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools + 2);
 }
 
 TEST_F(KnowledgeBaseTest, MigratesVersionZeroKeepingUserRows) {
@@ -306,7 +310,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionOneKeepingUserRows) {
 
     {
         KnowledgeBase kb = openDefault(p);
-        EXPECT_EQ(kb.schemaVersion(), 2);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
         const auto tools = kb.tools();
         ASSERT_EQ(tools.size(), 1u);
         EXPECT_EQ(tools[0].id, "SHOP-EM-14");
@@ -397,7 +401,7 @@ TEST_F(KnowledgeBaseTest, LockedDatabase) {
     sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
     sqlite3_close(other);
     kb.addTool(tool("LOCK-1", 5));
-    EXPECT_EQ(kb.tools().size(), 30u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools + 1);
 }
 
 TEST_F(KnowledgeBaseTest, UnknownMaterial) {
@@ -416,7 +420,7 @@ TEST_F(KnowledgeBaseTest, UnknownMaterial) {
 TEST_F(KnowledgeBaseTest, EmptyFileIsFilledInPlace) {
     const fs::path p = file();
     std::ofstream(p).close();
-    EXPECT_EQ(openDefault(p).tools().size(), 29u);
+    EXPECT_EQ(openDefault(p).tools().size(), kShippedTools);
 }
 
 TEST_F(KnowledgeBaseTest, BadShippedSqlLeavesNoFile) {
@@ -430,7 +434,7 @@ TEST_F(KnowledgeBaseTest, BadShippedSqlLeavesNoFile) {
 TEST_F(KnowledgeBaseTest, TableEditingIsOneTransactionWithNamedErrors) {
     KnowledgeBase kb = openDefault(file());
     const auto tools = kb.table("tool");
-    ASSERT_EQ(tools.rows.size(), 29u);
+    ASSERT_EQ(tools.rows.size(), kShippedTools);
     ASSERT_EQ(tools.columns[0].name, "id");
     auto rowOf = [&](const aeronc::kb::Table& t, const std::string& id) {
         for (std::size_t i = 0; i < t.rows.size(); ++i)
@@ -467,10 +471,127 @@ TEST_F(KnowledgeBaseTest, TableEditingIsOneTransactionWithNamedErrors) {
     EXPECT_DOUBLE_EQ(kb.threshold("my_rule"), 0.5);
     EXPECT_EQ(kb.table("threshold").rows.size(), th.rows.size() + 1);
     kb.editTable("tool", {}, {}, {f10});
-    EXPECT_EQ(kb.tools().size(), 28u);
+    EXPECT_EQ(kb.tools().size(), kShippedTools - 1);
     // Shown values read back exactly.
     const auto cc = kb.table("cutting_condition");
     EXPECT_EQ(cc.columns[6].name, "vc_m_min");
     EXPECT_EQ(cc.rows[0][6].value_or("?"), "600");
     EXPECT_EQ(cc.rows[0][7].value_or("?"), "0.04");
+}
+
+// The shipped drill series has the clearance and tap-drill sizes, each a jobber drill whose
+// flutes are shorter than its reach.
+TEST_F(KnowledgeBaseTest, ShippedDrillSeries) {
+    KnowledgeBase kb = openDefault(file());
+    std::vector<Tool> drills;
+    for (const Tool& t : kb.tools())
+        if (t.type == "drill") drills.push_back(t);
+    EXPECT_EQ(drills.size(), 33u);
+    auto has = [&](double d) {
+        return std::any_of(drills.begin(), drills.end(), [d](const Tool& t) { return std::fabs(t.diameter - d) < 1e-9; });
+    };
+    for (double d : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 16.0, 20.0}) EXPECT_TRUE(has(d)) << d;
+    for (double d : {6.4, 6.6, 9.0, 11.0, 13.5, 17.5, 20.0, 22.0}) EXPECT_TRUE(has(d)) << "clearance " << d;
+    for (double d : {3.3, 4.2, 5.0, 6.8, 8.5, 10.2, 14.0, 17.5}) EXPECT_TRUE(has(d)) << "tap drill " << d;
+    for (const Tool& t : drills) {
+        EXPECT_NO_THROW(t.validate()) << t.id;
+        EXPECT_GE(t.reach, t.fluteLength) << t.id;
+        // HSS jobber flutes are 6 to 12 diameters long; the two carbide drills are stub length.
+        EXPECT_GE(t.fluteLength, (t.material == "HSS" ? 6 : 4) * t.diameter) << t.id;
+        EXPECT_LE(t.fluteLength, 12 * t.diameter) << t.id;
+        EXPECT_NO_THROW(kb.cuttingCondition("7050-T7451", t.material, "drilling", t.diameter)) << t.id;
+    }
+}
+
+TEST_F(KnowledgeBaseTest, MigratesVersionTwoKeepingUserRows) {
+    const fs::path p = file();
+    // The version-2 layout's planning tables: a template is a name and its step codes, a rule
+    // a line of text; with the shipped rows, a user's template, a user's rule and a user's tool.
+    rawExec(p, R"sql(
+        PRAGMA foreign_keys = ON;
+        CREATE TABLE schema_version (version INTEGER NOT NULL);
+        INSERT INTO schema_version VALUES (2);
+        CREATE TABLE workpiece_material (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, family TEXT NOT NULL,
+                                         hardness_hb REAL);
+        CREATE TABLE tool_material (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, kind TEXT NOT NULL);
+        CREATE TABLE tool (
+            id TEXT PRIMARY KEY NOT NULL,
+            type TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face', 'other')),
+            tool_material TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+            diameter REAL NOT NULL, corner_radius REAL NOT NULL DEFAULT 0, flutes INTEGER NOT NULL,
+            flute_length REAL NOT NULL, overall_length REAL, reach REAL NOT NULL, cost REAL);
+        CREATE TABLE threshold (name TEXT PRIMARY KEY NOT NULL, value REAL NOT NULL, description TEXT);
+        CREATE TABLE process_template (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, steps TEXT NOT NULL);
+        CREATE TABLE sequencing_rule (id INTEGER PRIMARY KEY, priority INTEGER NOT NULL UNIQUE, rule TEXT NOT NULL);
+        INSERT INTO tool_material (name, kind) VALUES ('carbide', 'carbide');
+        INSERT INTO tool VALUES ('SHOP-EM-14', 'bull', 'carbide', 14, 1.5, 4, 30, 90, 40, 77);
+        INSERT INTO threshold (name, value) VALUES ('eta_min', 0.8), ('mu_merge', 0.7), ('breakthrough_mm', 2.5);
+        INSERT INTO process_template (name, steps) VALUES
+          ('panel: corners before semi-finishing', 'r w c ss sf fs ff'),
+          ('my panel', 'r  w fs');
+        INSERT INTO sequencing_rule (priority, rule) VALUES
+          (1, 'process with a step that must come earlier first; otherwise larger tool first'),
+          (2, 'outer contour (m = -1) before inner shape (m = 0)'),
+          (6, 'keep the thin walls for last');
+    )sql");
+
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    ASSERT_EQ(kb.tools().size(), 1u);
+    EXPECT_EQ(kb.tools()[0].id, "SHOP-EM-14");
+    EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.8);
+    EXPECT_DOUBLE_EQ(kb.threshold("breakthrough_mm"), 2.5);   // the user's value
+    EXPECT_DOUBLE_EQ(kb.threshold("rest_min_area_mm2"), 0.5);  // added
+    EXPECT_TRUE(fs::exists(p.string() + ".v2.bak"));
+
+    auto rowsOf = [&](const std::string& table, const std::string& key, const std::string& value) {
+        const auto t = kb.table(table);
+        std::size_t col = 0;
+        while (col < t.columns.size() && t.columns[col].name != key) ++col;
+        std::vector<std::vector<aeronc::kb::Cell>> out;
+        for (const auto& r : t.rows)
+            if (r.at(col) == value) out.push_back(r);
+        return out;
+    };
+    // The user's template: its codes in its order, each with the shipped integral-panel step's data.
+    const auto mine = rowsOf("template_step", "template", "my panel");
+    ASSERT_EQ(mine.size(), 3u);
+    EXPECT_EQ(mine[0][3].value_or(""), "r");
+    EXPECT_EQ(mine[1][3].value_or(""), "w");
+    EXPECT_EQ(mine[2][3].value_or(""), "fs");
+    EXPECT_EQ(mine[0][4].value_or(""), "must");
+    EXPECT_EQ(mine[0][6].value_or(""), "roughing");
+    EXPECT_EQ(mine[0][7].value_or(""), "1");  // radial allowance of the shipped r step
+    const auto myTemplate = rowsOf("process_template", "name", "my panel");
+    ASSERT_EQ(myTemplate.size(), 1u);
+    EXPECT_EQ(myTemplate[0][1].value_or(""), "integral_panel");
+    EXPECT_EQ(rowsOf("step_order", "name", "v2: my panel").at(0)[1].value_or(""), "r  w fs");
+    // Every template has the five keyed rules; the user's own text is kept, disabled.
+    EXPECT_EQ(rowsOf("sequencing_rule", "template", "my panel").size(), 5u);
+    const auto notes = rowsOf("sequencing_rule", "rule", "note");
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0][5].value_or(""), "0");
+    EXPECT_EQ(notes[0][6].value_or(""), "keep the thin walls for last");
+
+    // The shipped templates are there, row for row as a new knowledge base has them.
+    KnowledgeBase fresh = openDefault(file("fresh.sqlite"));
+    for (const std::string table : {"part_family", "process_template", "template_step"}) {
+        for (const std::string name : {"integral_panel", "frame_beam", "rib"}) {
+            const std::string key = table == "template_step" ? "template" : "name";
+            auto strip = [&](std::vector<std::vector<aeronc::kb::Cell>> rows) {
+                if (table == "template_step")
+                    for (auto& r : rows) r[0] = std::nullopt;  // the row id differs
+                return rows;
+            };
+            const auto a = strip(rowsOf(table, key, name));
+            const auto t = fresh.table(table);
+            std::size_t col = 0;
+            while (t.columns[col].name != key) ++col;
+            std::vector<std::vector<aeronc::kb::Cell>> b;
+            for (const auto& r : t.rows)
+                if (r[col] == name) b.push_back(r);
+            EXPECT_FALSE(b.empty()) << table << " " << name;
+            EXPECT_EQ(a, strip(b)) << table << " " << name;
+        }
+    }
 }

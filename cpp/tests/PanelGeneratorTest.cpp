@@ -227,6 +227,25 @@ TEST(PanelGenerator, BoltAndLighteningHolesHaveHandComputedVolume) {
     checkTruthStructure(p);
 }
 
+// The widest lightening hole in a thin floor of a pocket with corner radii near half its width.
+TEST(PanelGenerator, WideLighteningHoleInThinFloor) {
+    PanelSpec s = allOff();
+    s.pocketsX = 1, s.pocketsY = 2;  // the second cell holds the hole
+    s.lighteningHoles = true;
+    s.webZ = 1;
+    const double pw = s.pitch - s.ribThickness;
+    s.cornerRadius = 0.5 * pw - 0.25;
+    s.lighteningDiameter = pw - s.cornerRadius;
+    Panel p = makePanel(s);
+    EXPECT_TRUE(BRepCheck_Analyzer(p.shape).IsValid());
+    const double r = s.cornerRadius, D = s.lighteningDiameter;
+    const double expected = panelLength(s) * panelWidth(s) * s.thickness -
+                            2 * (pw * pw - (4 - kPi) * r * r) * (s.thickness - s.webZ) - kPi * D * D / 4 * s.webZ;
+    EXPECT_NEAR(volume(p.shape), expected, 1e-6 * expected);
+    checkTruthPoints(p);
+    checkTruthStructure(p);
+}
+
 TEST(PanelGenerator, DefaultPanelHasEveryFeatureOnce) {
     PanelSpec s;
     Panel p = makePanel(s);
@@ -332,11 +351,13 @@ TEST(PanelGenerator, OptionsTurnFeaturesOff) {
 }
 
 TEST(PanelGenerator, RejectsImpossibleSpecs) {
-    std::vector<PanelSpec> bad(4);
+    std::vector<PanelSpec> bad(6);
     bad[0].floorFillet = bad[0].cornerRadius;  // floor fillet must be under the corner radius
     bad[1].bottomDepth = bad[1].webZ - 0.5;    // web under the pockets would be 0.5 mm
     bad[2].pocketsX = 0;
     bad[3].webZ = bad[3].thickness;
+    bad[4].lighteningDiameter = bad[4].pitch - bad[4].ribThickness - bad[4].cornerRadius + 0.1;  // wider than the floor
+    bad[5].cornerRadius = 0.5 * (bad[5].pitch - bad[5].ribThickness);  // a round pocket: no corner left
     for (const auto& s : bad) {
         try {
             makePanel(s);

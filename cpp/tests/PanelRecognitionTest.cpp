@@ -46,12 +46,12 @@ int match(const DomainTree& t, const TruthElement& want) {
     return found;
 }
 
-void expectMatchesTruth(const PanelSpec& spec) {
+void expectMatchesTruth(const PanelSpec& spec, std::vector<Vec3> directions = {{0, 0, 1}, {0, 0, -1}}) {
     const Panel panel = makePanel(spec);
     RecogniseOptions o;
-    o.directions = {{0, 0, 1}, {0, 0, -1}};
+    o.directions = directions;
     const DomainTree t = recognise(validatedSolid(panel.shape, "panel"), o);
-    ASSERT_EQ(t.setups.size(), 2u);
+    ASSERT_EQ(t.setups.size(), directions.size());
     std::map<int, int> recognisedOf;  // truth id -> element id
     for (const TruthElement& want : panel.truth) {
         const int id = match(t, want);
@@ -85,6 +85,8 @@ void expectMatchesTruth(const PanelSpec& spec) {
     std::map<std::string, int> roles;
     for (FaceRole r : t.faceRoles) roles[toString(r)]++;
     EXPECT_EQ(roles["unclaimed"], 0);
+    // Every face inside the blank belongs to an element.
+    EXPECT_TRUE(t.unclaimedFaces.empty()) << (t.warnings.empty() ? "" : t.warnings.back());
     EXPECT_GT(roles["floor"], 0);
     EXPECT_GT(roles["wall"], 0);
     EXPECT_GT(roles["hole_wall"], 0);
@@ -169,4 +171,25 @@ TEST(PanelRecognition, GivenTiltedDirections) {
     for (const DomainElement& e : b.elements) tb.insert(std::string(toString(e.type)) + "@" + std::to_string(std::lround(e.depth * 1000)));
     EXPECT_EQ(ta, tb);
     EXPECT_EQ(a.faceRoles, b.faceRoles);
+}
+
+// Lightening holes in pocket floors over the range of real panels: floors 1 to 5 mm thick,
+// corner radii up to half the pocket width, hole diameters up to the pocket width minus the
+// corner radius. Each pocket and its hole are found, with the hole under the pocket.
+TEST(PanelRecognition, FloorHolesOverThicknessRadiusAndDiameter) {
+    PanelSpec s;
+    s.pocketsX = 1, s.pocketsY = 2;  // cell (0, 0) a plain pocket, cell (0, 1) a lightening hole
+    s.lowerRibs = s.islands = s.openings = s.boltHoles = s.joggles = s.flange = s.bottomPockets = false;
+    s.thickness = 30;
+    const double pw = s.pitch - s.ribThickness;
+    for (double floor : {1.0, 2.0, 3.0, 5.0})
+        for (double radius : {3.0, 0.25 * pw, 0.5 * pw - 0.25})
+            for (double diameter : {10.0, 0.5 * (pw - radius), pw - radius}) {
+                s.webZ = floor;
+                s.cornerRadius = radius;
+                s.lighteningDiameter = diameter;
+                SCOPED_TRACE("floor " + std::to_string(floor) + " mm, corner radius " + std::to_string(radius) +
+                             ", hole diameter " + std::to_string(diameter));
+                expectMatchesTruth(s, {{0, 0, 1}});
+            }
 }

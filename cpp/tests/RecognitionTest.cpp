@@ -12,13 +12,17 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepAdaptor_Surface.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <gp_Pln.hxx>
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -143,6 +147,119 @@ TEST(Recognition, DoubleSidedAndRotationStable) {
     std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
     EXPECT_NEAR(a[0], b[0], 1e-5);
     EXPECT_NEAR(a[1], b[1], 1e-5);
+}
+
+// The case of a 30 mm plate with a 74 x 74 mm closed pocket (corner radii 8 mm) whose floor
+// is 2 mm thick, and a through hole of 16 mm in the middle of that floor.
+TopoDS_Shape pocketWithFloorHole(bool upsideDown) {
+    const double floorZ = upsideDown ? -1 : 2, pocketTop = upsideDown ? 28 : 31;
+    TopoDS_Shape part =
+        cut(BRepPrimAPI_MakeBox(120, 120, 30).Shape(), roundedBox(23, 23, floorZ, 74, 74, pocketTop - floorZ, 8));
+    return cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(60, 60, -1), gp_Dir(0, 0, 1)), 8, 32).Shape());
+}
+
+void expectPocketOverHole(const DomainTree& t, const Vec3& pocketSide) {
+    ASSERT_EQ(t.elements.size(), 2u);
+    const DomainElement* pocket = nullptr;
+    const DomainElement* hole = nullptr;
+    for (auto& e : t.elements) (e.hole ? hole : pocket) = &e;
+    ASSERT_TRUE(pocket && hole);
+    EXPECT_EQ(pocket->type, ElementType::ClosedPocket);
+    EXPECT_EQ(dot(t.setups[static_cast<std::size_t>(pocket->setup)].direction, pocketSide), 1.0);
+    EXPECT_NEAR(pocket->depth, 28, 1e-6);
+    EXPECT_EQ(pocket->contourFaces.size(), 8u);
+    EXPECT_TRUE(hole->hole->through);
+    EXPECT_NEAR(hole->hole->diameter, 16, 1e-6);
+    // Every face inside the blank is machined by one of them.
+    EXPECT_TRUE(t.unclaimedFaces.empty());
+    int claimed = 0;
+    for (int e : t.faceElement) claimed += e >= 0;
+    EXPECT_EQ(claimed, 8 + 1 + 1);  // walls and corners, floor, hole wall
+}
+
+TEST(Recognition, PocketWithThroughHoleInThinFloor) {
+    expectPocketOverHole(recognise(validatedSolid(pocketWithFloorHole(false), "test"), along({{0, 0, 1}, {0, 0, -1}})),
+                         {0, 0, 1});
+    expectPocketOverHole(recognise(validatedSolid(pocketWithFloorHole(false), "test"), RecogniseOptions{}), {0, 0, 1});
+}
+
+// Seen from the floor's side, the pocket is a cavity capped by its floor except where the
+// hole pierces it: no opening there.
+TEST(Recognition, PocketWithFloorHoleSeenFromTheFloorSide) {
+    const TopoDS_Shape part = validatedSolid(pocketWithFloorHole(true), "test");
+    expectPocketOverHole(recognise(part, along({{0, 0, 1}, {0, 0, -1}})), {0, 0, -1});
+    expectPocketOverHole(recognise(part, RecogniseOptions{}), {0, 0, -1});
+}
+
+// A cross hole along X, with +Z as the only setup: no element machines its wall, and the
+// result says so by face number; the faces on the blank's boundary are not reported.
+TEST(Recognition, FaceInsideTheBlankThatNoElementClaimsIsReported) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), roundedBox(30, 25, 10, 40, 30, 15, 5));
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-1, 12, 5), gp_Dir(1, 0, 0)), 3, 102).Shape());
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    int bore = -1;
+    for (int i = 1; i <= faces.Extent(); ++i)
+        if (BRepAdaptor_Surface(TopoDS::Face(faces(i))).GetType() == GeomAbs_Cylinder &&
+            BRepAdaptor_Surface(TopoDS::Face(faces(i))).Cylinder().Radius() == 3)
+            bore = i;
+    ASSERT_GT(bore, 0);
+    const DomainTree t = recognise(solid, along({{0, 0, 1}}));
+    ASSERT_EQ(t.elements.size(), 1u);
+    EXPECT_EQ(t.unclaimedFaces, std::vector<int>{bore});
+    bool warned = false;
+    for (const std::string& w : t.warnings) warned |= w.find("Face" + std::to_string(bore)) != std::string::npos;
+    EXPECT_TRUE(warned) << "no warning names Face" << bore;
+}
+
+// A STEP import can hold free faces and shells besides the solid. Face numbers then follow
+// the whole shape (FreeCAD's FaceN of the imported object), wherever the free shapes lie.
+TEST(Recognition, FreeShapesBesideTheSolidKeepTheShapesFaceNumbers) {
+    const TopoDS_Shape solid =
+        validatedSolid(cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), roundedBox(30, 25, 10, 40, 30, 15, 5)), "test");
+    const TopoDS_Shape freeFace = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 50), gp_Dir(0, 0, 1)), 0, 10, 0, 10).Face();
+    TopoDS_Shape freeShell;
+    for (TopExp_Explorer e(BRepPrimAPI_MakeBox(gp_Pnt(200, 0, 0), 5, 5, 5).Shape(), TopAbs_SHELL); e.More(); e.Next())
+        freeShell = e.Current();
+    TopoDS_Compound all;
+    BRep_Builder b;
+    b.MakeCompound(all);
+    b.Add(all, freeFace);  // first, so that the solid's faces do not start at Face1
+    b.Add(all, solid);
+    b.Add(all, freeShell);
+    TopTools_IndexedMapOfShape allFaces, solidFaces;
+    TopExp::MapShapes(all, TopAbs_FACE, allFaces);
+    TopExp::MapShapes(solid, TopAbs_FACE, solidFaces);
+    ASSERT_EQ(allFaces.Extent(), solidFaces.Extent() + 7);
+
+    const DomainTree alone = recognise(solid, along({{0, 0, 1}}));
+    const DomainTree t = recogniseShape(all, "import", along({{0, 0, 1}}));
+    EXPECT_EQ(t.faceCount, allFaces.Extent());
+    ASSERT_EQ(t.faceRoles.size(), static_cast<std::size_t>(allFaces.Extent()));
+    ASSERT_EQ(t.elements.size(), alone.elements.size());
+    // Each face of the solid has the role it has alone, under the whole shape's number.
+    for (int i = 1; i <= solidFaces.Extent(); ++i) {
+        const int n = allFaces.FindIndex(solidFaces(i));
+        EXPECT_EQ(t.faceRoles[static_cast<std::size_t>(n - 1)], alone.faceRoles[static_cast<std::size_t>(i - 1)]);
+        EXPECT_EQ(t.faceElement[static_cast<std::size_t>(n - 1)], alone.faceElement[static_cast<std::size_t>(i - 1)]);
+    }
+    std::vector<int> floors;
+    for (int f : alone.elements[0].floorFaces) floors.push_back(allFaces.FindIndex(solidFaces(f)));
+    EXPECT_EQ(t.elements[0].floorFaces, floors);
+    // The free faces: no element, listed and named.
+    std::vector<int> leftOut{allFaces.FindIndex(freeFace)};
+    for (TopExp_Explorer e(freeShell, TopAbs_FACE); e.More(); e.Next()) leftOut.push_back(allFaces.FindIndex(e.Current()));
+    std::sort(leftOut.begin(), leftOut.end());
+    EXPECT_EQ(t.leftOutFaces, leftOut);
+    for (int f : leftOut) EXPECT_EQ(t.faceElement[static_cast<std::size_t>(f - 1)], -1);
+    bool named = false;
+    for (const std::string& w : t.warnings) named |= w.find("Face" + std::to_string(leftOut.back())) != std::string::npos;
+    EXPECT_TRUE(named);
+    // The numbers survive the JSON.
+    EXPECT_EQ(fromJson(toJson(t)).leftOutFaces, leftOut);
+    // A solid alone keeps its own numbering.
+    EXPECT_EQ(toJson(recogniseShape(solid, "solid", along({{0, 0, 1}}))), toJson(alone));
 }
 
 TEST(BadInput, NotAPartFile) {

@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 2 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 3 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -10,6 +10,15 @@
 --   * The 5-axis AC table-table machine is a generic example (assumed values).
 --   * Tool lengths follow the usual short/standard end-mill series (assumed), costs are
 --     indicative list prices (assumed).
+--   * The jobber drill series follows the diameter steps and the flute and overall lengths
+--     of DIN 338 / ISO 235 jobber drills up to 20 mm (22 mm: jobber length extrapolated,
+--     assumed); reach (the length out of the chuck) is assumed as the flute length plus a
+--     quarter of the shank. The sizes are the usual ones plus the tap-drill sizes
+--     (M4 3.3, M5 4.2, M6 5, M8 6.8, M10 8.5, M12 10.2, M16 14, M20 17.5) and the ISO 273
+--     clearance sizes (M3 3.4, M4 4.5, M5 5.5, M6 6.4 / 6.6, M8 9, M10 11, M12 13.5,
+--     M16 17.5, M20 22).
+--   * Process templates, allowances and sequencing rules are assumed shop practice for
+--     aluminium structural parts, written after the patent's and the panel paper's rules.
 --   * Cutting data (v_c, f_z, a_p, a_e) are mid-range handbook-style values per material
 --     family (assumed). Force coefficients follow the form of the milling-force formula
 --     in DESIGN.md section 3: steel x carbide uses the classic face-milling handbook
@@ -72,6 +81,38 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('DR-10.2',   'drill', 'carbide',10.2,   0,   2,  47, 118,  60,  75),
   ('FM-125',    'face',  'carbide', 125,   1,   4,   6,  63,  63, 450);
 
+-- Jobber drills (DIN 338 / ISO 235 lengths), HSS. 5, 6.8, 8.5 and 10.2 mm are above.
+INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost) VALUES
+  ('DR-1',   'drill', 'HSS',     1,   0,   2,  12,  34,  18,   2),
+  ('DR-1.5', 'drill', 'HSS',   1.5,   0,   2,  18,  40,  24,   3),
+  ('DR-2',   'drill', 'HSS',     2,   0,   2,  24,  49,  30,   3),
+  ('DR-2.5', 'drill', 'HSS',   2.5,   0,   2,  30,  57,  37,   3),
+  ('DR-3',   'drill', 'HSS',     3,   0,   2,  33,  61,  40,   4),
+  ('DR-3.3', 'drill', 'HSS',   3.3,   0,   2,  36,  65,  43,   4),
+  ('DR-3.4', 'drill', 'HSS',   3.4,   0,   2,  36,  65,  43,   5),
+  ('DR-3.5', 'drill', 'HSS',   3.5,   0,   2,  39,  70,  47,   5),
+  ('DR-4',   'drill', 'HSS',     4,   0,   2,  43,  75,  51,   6),
+  ('DR-4.2', 'drill', 'HSS',   4.2,   0,   2,  43,  75,  51,   6),
+  ('DR-4.5', 'drill', 'HSS',   4.5,   0,   2,  47,  80,  55,   7),
+  ('DR-5.5', 'drill', 'HSS',   5.5,   0,   2,  57,  93,  66,   9),
+  ('DR-6',   'drill', 'HSS',     6,   0,   2,  57,  93,  66,  10),
+  ('DR-6.4', 'drill', 'HSS',   6.4,   0,   2,  63, 101,  73,  11),
+  ('DR-6.6', 'drill', 'HSS',   6.6,   0,   2,  63, 101,  73,  12),
+  ('DR-7',   'drill', 'HSS',     7,   0,   2,  69, 109,  79,  13),
+  ('DR-8',   'drill', 'HSS',     8,   0,   2,  75, 117,  85,  16),
+  ('DR-9',   'drill', 'HSS',     9,   0,   2,  81, 125,  92,  20),
+  ('DR-10',  'drill', 'HSS',    10,   0,   2,  87, 133,  99,  24),
+  ('DR-11',  'drill', 'HSS',    11,   0,   2,  94, 142, 106,  29),
+  ('DR-12',  'drill', 'HSS',    12,   0,   2, 101, 151, 113,  34),
+  ('DR-13',  'drill', 'HSS',    13,   0,   2, 101, 151, 113,  40),
+  ('DR-13.5', 'drill', 'HSS',  13.5,   0,   2, 108, 160, 121,  43),
+  ('DR-14',  'drill', 'HSS',    14,   0,   2, 108, 160, 121,  46),
+  ('DR-16',  'drill', 'HSS',    16,   0,   2, 120, 178, 134,  60),
+  ('DR-17.5', 'drill', 'HSS',  17.5,   0,   2, 130, 191, 145,  71),
+  ('DR-18',  'drill', 'HSS',    18,   0,   2, 130, 191, 145,  75),
+  ('DR-20',  'drill', 'HSS',    20,   0,   2, 140, 205, 156,  92),
+  ('DR-22',  'drill', 'HSS',    22,   0,   2, 150, 218, 167, 111);
+
 -- Cutting conditions -------------------------------------------------------------------
 -- ae_ratio is a_e / tool diameter; drilling rows use a_p = hole-depth step (peck), ae_ratio 1.
 -- Rows with a diameter range [d_min, d_max) take precedence over a row without one. Handbook
@@ -122,17 +163,58 @@ INSERT INTO threshold (name, value, description) VALUES
   ('mu_merge',       0.70, 'merge two tool groups onto the smaller tool when mu exceeds this'),
   ('layer_delta_mm', 0.50, 'delta: a last layer thinner than this is folded into the one above'),
   ('ra_max_um',      3.20, 'default roughness limit R_a for finishing'),
-  ('plunge_feed_ratio', 0.30, 'vertical (plunge and ramp) feed as a fraction of the horizontal feed');
+  ('plunge_feed_ratio', 0.30, 'vertical (plunge and ramp) feed as a fraction of the horizontal feed'),
+  ('breakthrough_mm',   1.00, 'openings and through holes are cut this far past the part'),
+  ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area');
 
--- Step codes (DESIGN.md section 3): r rough, w webs, c corners, ss/sf semi-finish walls/flanges,
--- fs/ff finish walls/flanges, t cut off.
-INSERT INTO process_template (name, steps) VALUES
-  ('panel: corners before semi-finishing', 'r w c ss sf fs ff'),
-  ('panel: corners after semi-finishing',  'r w ss sf c fs ff');
+-- Process planning (docs/machining-chain.md) --------------------------------------------
+-- The same rows are seeded by the migration from schema version 2 (KnowledgeBase.cpp).
+INSERT INTO part_family (name, required_steps, description) VALUES
+  ('integral_panel', 'r w fs',    'aircraft integral panel: pockets on one or both faces, ribs, flanges, holes'),
+  ('frame_beam',     'r w ss fs', 'frame or beam: deep pockets, thin webs and flanges'),
+  ('rib',            'r fs',      'rib: a thin web with pockets on both faces');
 
-INSERT INTO sequencing_rule (priority, rule) VALUES
-  (1, 'process with a step that must come earlier first; otherwise larger tool first'),
-  (2, 'outer contour (m = -1) before inner shape (m = 0)'),
-  (3, 'of two topologically related units, higher Z first'),
-  (4, 'feature type order: slot-on-wall (2), pocket (1), bevel face or flange (4), rib (3)'),
-  (5, 'otherwise low distortion: by symmetry, from the centre out, by user choice');
+INSERT INTO step_order (name, codes, description) VALUES
+  ('standard',     'r w c ss sf fs ff d h t', 'WS_r < WS_w < WS_c < WS_ss < WS_sf < WS_fs < WS_ff, then holes and cut-off'),
+  ('corners_late', 'r w ss sf c fs ff d h t', 'WS_r < WS_w < WS_ss < WS_sf < WS_c < WS_fs < WS_ff, then holes and cut-off');
+
+INSERT INTO process_template (name, family, step_order, description) VALUES
+  ('integral_panel', 'integral_panel', 'standard',     'integral panel: rough, webs, corners, semi-finish and finish the walls, holes'),
+  ('frame_beam',     'frame_beam',     'corners_late', 'frame or beam: corners after semi-finishing the walls and flanges'),
+  ('rib',            'rib',            'standard',     'rib: no flanges');
+
+INSERT INTO template_step (template, position, code, existence, features, tool_role, radial_allowance, axial_allowance, description) VALUES
+  ('integral_panel', 1, 'r',  'must',     'closed_pocket open_pocket flange opening', 'roughing',  1.0, 0.5, 'rough the inner and outer shape, leaving the allowances'),
+  ('integral_panel', 2, 'w',  'must',     'closed_pocket open_pocket flange',         'finishing', 0.5, 0.0, 'finish the webs (floors)'),
+  ('integral_panel', 3, 'c',  'may',      'closed_pocket open_pocket flange opening', 'corner',    0.5, 0.0, 'rest-machine the corners the roughing tool cannot reach'),
+  ('integral_panel', 4, 'ss', 'may',      'closed_pocket open_pocket opening',        'finishing', 0.2, 0.0, 'semi-finish the walls'),
+  ('integral_panel', 5, 'sf', 'may',      'flange',                                   'finishing', 0.2, 0.0, 'semi-finish the flanges'),
+  ('integral_panel', 6, 'fs', 'must',     'closed_pocket open_pocket opening',        'finishing', 0.0, 0.0, 'finish the walls'),
+  ('integral_panel', 7, 'ff', 'may',      'flange',                                   'finishing', 0.0, 0.0, 'finish the flanges'),
+  ('integral_panel', 8, 'd',  'may',      'hole',                                     'drilling',  0.0, 0.0, 'drill the holes a drill fits'),
+  ('integral_panel', 9, 'h',  'may',      'hole',                                     'finishing', 0.0, 0.0, 'mill the other holes by helical interpolation'),
+  ('frame_beam',     1, 'r',  'must',     'closed_pocket open_pocket flange opening', 'roughing',  1.5, 0.5, 'rough the inner and outer shape, leaving the allowances'),
+  ('frame_beam',     2, 'w',  'must',     'closed_pocket open_pocket flange',         'finishing', 0.5, 0.0, 'finish the webs (floors)'),
+  ('frame_beam',     3, 'ss', 'must',     'closed_pocket open_pocket opening',        'finishing', 0.3, 0.0, 'semi-finish the walls, releasing distortion'),
+  ('frame_beam',     4, 'sf', 'may',      'flange',                                   'finishing', 0.3, 0.0, 'semi-finish the flanges'),
+  ('frame_beam',     5, 'c',  'may',      'closed_pocket open_pocket flange opening', 'corner',    0.3, 0.0, 'rest-machine the corners the roughing tool cannot reach'),
+  ('frame_beam',     6, 'fs', 'must',     'closed_pocket open_pocket opening',        'finishing', 0.0, 0.0, 'finish the walls'),
+  ('frame_beam',     7, 'ff', 'may',      'flange',                                   'finishing', 0.0, 0.0, 'finish the flanges'),
+  ('frame_beam',     8, 'd',  'may',      'hole',                                     'drilling',  0.0, 0.0, 'drill the holes a drill fits'),
+  ('frame_beam',     9, 'h',  'may',      'hole',                                     'finishing', 0.0, 0.0, 'mill the other holes by helical interpolation'),
+  ('rib',            1, 'r',  'must',     'closed_pocket open_pocket opening',        'roughing',  1.0, 0.5, 'rough the inner and outer shape, leaving the allowances'),
+  ('rib',            2, 'w',  'may',      'closed_pocket open_pocket',                'finishing', 0.3, 0.0, 'finish the webs (floors)'),
+  ('rib',            3, 'c',  'may',      'closed_pocket open_pocket opening',        'corner',    0.3, 0.0, 'rest-machine the corners the roughing tool cannot reach'),
+  ('rib',            4, 'ss', 'must_not', '',                                         NULL,        0.0, 0.0, 'a rib is too thin to semi-finish'),
+  ('rib',            5, 'sf', 'must_not', '',                                         NULL,        0.0, 0.0, 'a rib has no flanges'),
+  ('rib',            6, 'fs', 'must',     'closed_pocket open_pocket opening',        'finishing', 0.0, 0.0, 'finish the walls'),
+  ('rib',            7, 'ff', 'must_not', '',                                         NULL,        0.0, 0.0, 'a rib has no flanges'),
+  ('rib',            8, 'd',  'may',      'hole',                                     'drilling',  0.0, 0.0, 'drill the holes a drill fits'),
+  ('rib',            9, 'h',  'may',      'hole',                                     'finishing', 0.0, 0.0, 'mill the other holes by helical interpolation');
+
+INSERT INTO sequencing_rule (template, priority, rule, parameters, description)
+  SELECT name, 1, 'process_order', 'order=larger_tool_first', 'rule 1: a process with a step that must come earlier first; otherwise the larger tool first' FROM process_template
+  UNION ALL SELECT name, 2, 'outer_before_inner', 'outer=open_pocket,flange', 'rule 2: the outer contour (m = -1) before the inner shape (m = 0)' FROM process_template
+  UNION ALL SELECT name, 3, 'higher_z_first', '', 'rule 3: of two topologically related units, the higher Z first' FROM process_template
+  UNION ALL SELECT name, 4, 'feature_type_order', 'order=open_pocket,closed_pocket,flange,opening,hole', 'rule 4: by feature type (slot on a wall, pocket, flange, rib)' FROM process_template
+  UNION ALL SELECT name, 5, 'centre_out', '', 'rule 5: otherwise for low distortion, symmetric, from the centre out' FROM process_template;

@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 2.
+-- AeroNC machining knowledge base, schema version 3.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
@@ -13,7 +13,7 @@ PRAGMA foreign_keys = ON;
 CREATE TABLE schema_version (
     version INTEGER NOT NULL
 );
-INSERT INTO schema_version (version) VALUES (2);
+INSERT INTO schema_version (version) VALUES (3);
 
 -- Resource facts -----------------------------------------------------------------------
 
@@ -128,16 +128,69 @@ CREATE TABLE threshold (
     description TEXT
 );
 
--- steps: the step codes in order, space separated, e.g. 'r w c ss sf fs ff'.
-CREATE TABLE process_template (
-    id    INTEGER PRIMARY KEY,
-    name  TEXT NOT NULL UNIQUE,
-    steps TEXT NOT NULL
+-- Process planning (the machining chain, docs/machining-chain.md) ------------------------
+-- Step codes (DESIGN.md section 3): r rough, w finish webs (floors), c corners, ss/sf
+-- semi-finish walls/flanges, fs/ff finish walls/flanges, t cut off, d drill, h mill a hole
+-- (helical interpolation). Feature types: closed_pocket, open_pocket, opening, hole, flange
+-- (a pocket carrying a flange).
+
+-- A part family and the steps every one of its templates must contain as must-steps.
+CREATE TABLE part_family (
+    name           TEXT PRIMARY KEY NOT NULL,     -- 'integral_panel', 'frame_beam', 'rib'
+    required_steps TEXT NOT NULL DEFAULT '',      -- step codes, space separated
+    description    TEXT
 );
 
--- Sequencing rules, applied in ascending priority; rule is a reviewable text key.
+-- A priority order of the step codes within a setup: the patent's
+-- r < w < c < ss < sf < fs < ff or its alternative r < w < ss < sf < c < fs < ff.
+CREATE TABLE step_order (
+    name        TEXT PRIMARY KEY NOT NULL,
+    codes       TEXT NOT NULL,                    -- step codes, first to last, space separated
+    description TEXT
+);
+
+-- A process template: the steps a part of the family goes through, in the priority order
+-- it chooses. The template named like its family is that family's default.
+CREATE TABLE process_template (
+    name        TEXT PRIMARY KEY NOT NULL,
+    family      TEXT NOT NULL REFERENCES part_family (name) ON UPDATE CASCADE,
+    step_order  TEXT NOT NULL REFERENCES step_order (name) ON UPDATE CASCADE,
+    description TEXT
+);
+
+-- One step of a template: whether it must, may or must not exist, the feature types it
+-- machines, the tool it takes (roughing, finishing, corner or drilling tool of the element)
+-- and the allowances it leaves on the walls (radial) and floors (axial).
+CREATE TABLE template_step (
+    id               INTEGER PRIMARY KEY,
+    template         TEXT NOT NULL REFERENCES process_template (name) ON UPDATE CASCADE ON DELETE CASCADE,
+    position         INTEGER NOT NULL CHECK (position > 0),
+    code             TEXT NOT NULL CHECK (code IN ('r', 'w', 'c', 'ss', 'sf', 'fs', 'ff', 't', 'd', 'h')),
+    existence        TEXT NOT NULL CHECK (existence IN ('must', 'may', 'must_not')),
+    features         TEXT NOT NULL DEFAULT '',    -- feature types, space separated
+    tool_role        TEXT CHECK (tool_role IS NULL OR tool_role IN ('roughing', 'finishing', 'corner', 'drilling')),
+    radial_allowance REAL NOT NULL DEFAULT 0 CHECK (radial_allowance >= 0),
+    axial_allowance  REAL NOT NULL DEFAULT 0 CHECK (axial_allowance >= 0),
+    description      TEXT,
+    UNIQUE (template, position),
+    UNIQUE (template, code)
+);
+
+-- Sequencing rules of a template (integral-panel paper section 2.4), applied in ascending
+-- priority. rule is a key; parameters are 'name=value' words:
+--   process_order      order=larger_tool_first|smaller_tool_first
+--   outer_before_inner outer=<feature types, comma separated>
+--   higher_z_first     (none): of a parent and child element, the higher unit first
+--   feature_type_order order=<feature types, comma separated>
+--   centre_out         (none): otherwise symmetric, from the centre of the setup out
+-- A disabled rule (enabled = 0) is kept for review and not applied.
 CREATE TABLE sequencing_rule (
-    id       INTEGER PRIMARY KEY,
-    priority INTEGER NOT NULL UNIQUE,
-    rule     TEXT NOT NULL
+    id          INTEGER PRIMARY KEY,
+    template    TEXT NOT NULL REFERENCES process_template (name) ON UPDATE CASCADE ON DELETE CASCADE,
+    priority    INTEGER NOT NULL,
+    rule        TEXT NOT NULL,
+    parameters  TEXT NOT NULL DEFAULT '',
+    enabled     INTEGER NOT NULL DEFAULT 1 CHECK (enabled IN (0, 1)),
+    description TEXT,
+    UNIQUE (template, priority)
 );

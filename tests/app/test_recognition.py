@@ -37,6 +37,20 @@ class TestRecognition(unittest.TestCase):
         self.assertEqual(a["faceRoles"], b["faceRoles"])
         self.assertEqual(len(a["elements"]), len(b["elements"]))
 
+    def test_free_faces_beside_the_solid_keep_the_objects_face_numbers(self):
+        # A free face first: the solid's faces are Face2... of the compound, as after File > Import.
+        free = Part.makePlane(10, 10, FreeCAD.Vector(0, 0, 100))
+        shape = Part.makeCompound([free, self.part.Shape])
+        alone = recognition.recognise(self.part.Shape, directions=[(0, 0, 1)])
+        r = recognition.recognise(shape, directions=[(0, 0, 1)])
+        n = len(shape.Faces)
+        self.assertEqual(r["faceCount"], n)
+        self.assertEqual(r["leftOutFaces"], [1])
+        self.assertEqual(r["faceRoles"][0], "stock")
+        self.assertEqual(r["faceRoles"][1:], alone["faceRoles"])
+        self.assertEqual([f + 1 for f in alone["elements"][0]["floorFaces"]], r["elements"][0]["floorFaces"])
+        self.assertTrue(any("Face1" in w and "left out" in w for w in r["warnings"]), r["warnings"])
+
     def test_automatic_directions(self):
         r = recognition.recognise(self.part)
         self.assertGreaterEqual(len(r["setups"]), 1)

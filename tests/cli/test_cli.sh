@@ -69,6 +69,27 @@ expect_error "select-tools --tree unknown type" "elements\[0\].type: unknown ele
 expect_error "select-tools --tree with directions" "a --tree has its setups" "$cli" select-tools --tree "$tmp/tree.json" --directions +Z --kb "$tmp/kb.sqlite" --material 7050-T7451
 expect_error "select-tools --tree unknown material" "unknown workpiece material" "$cli" select-tools --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material unobtainium
 
+# The machining chain: the part and the stored tree give the same chain; bad input is named.
+if "$cli" chain "$tmp/p.step" --directions +Z --kb "$tmp/kb.sqlite" --material 7050-T7451 --json "$tmp/chain.json" 2>/dev/null &&
+   grep -q '"operation": "pocket"' "$tmp/chain.json" &&
+   "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --json "$tmp/tree_chain.json" 2>/dev/null &&
+   cmp -s "$tmp/chain.json" "$tmp/tree_chain.json"; then
+  passed=$((passed + 1)); echo "ok   chain writes JSON, the same from the part and the tree"
+else
+  failed=$((failed + 1)); echo "FAIL chain writes JSON, the same from the part and the tree"
+fi
+expect_error "chain unknown family" "no process template or part family 'impeller'" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --family impeller
+expect_error "chain unknown machine" "unknown machine" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --machine Lathe
+expect_error "chain without material" "chain needs --material" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite"
+expect_error "chain --tree missing field" "missing field 'setups'" "$cli" chain --tree "$tmp/short.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+python3 -c 'import json, sys
+t = json.load(open(sys.argv[1]))
+t["elements"] = []
+t["faceElement"] = [-1] * len(t["faceElement"])
+for s in t["setups"]: s["elements"] = []
+json.dump(t, open(sys.argv[2], "w"))' "$tmp/tree.json" "$tmp/bare.json"
+expect_error "chain of a tree with no element" "no domain element" "$cli" chain --tree "$tmp/bare.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+
 # Cutting-parameter optimisation: the paper's example solves; bad parameter files are refused.
 opt="$(dirname "$0")/../../resources/optimise/xa5032_face_mill_45_steel.json"
 if "$cli" optimise "$opt" --method both --json "$tmp/opt.json" >/dev/null 2>&1 &&

@@ -78,6 +78,31 @@ def click_ok(which=QtGui.QDialogButtonBox.Ok):
     return False
 
 
+def combo_view_width():
+    """Width of the Combo View dock, where the task panels show (FreeCAD's default is about 260 px
+    on a 1280 px screen)."""
+    docks = [d for d in Gui.getMainWindow().findChildren(QtGui.QDockWidget)
+             if d.objectName() == "Combo View" and d.isVisible()]
+    return docks[0].width() if docks else None
+
+
+def fits_combo_view(panel_form, default_width):
+    """(fits, detail): the open task panel left the Combo View at its default width, and its form
+    is no wider than the view shows."""
+    pump(0.3)
+    width = combo_view_width()
+    form = panel_form.width()
+    view = panel_form.parentWidget()
+    while view is not None and not isinstance(view, QtGui.QScrollArea):
+        view = view.parentWidget()
+    # The task view's content against what its viewport shows (less any vertical scroll bar).
+    content = view.widget().width() if view is not None else form
+    shown = view.viewport().width() if view is not None else width
+    ok = width is not None and width <= default_width + 2 and content <= shown
+    return ok, "combo view {} px (default {}), task panel {} px shown in {} px".format(
+        width, default_width, content, shown)
+
+
 def window_shot(doc, name):
     """The main window with doc's 3-D view painted in (a grab leaves it blank under Xvfb);
     saved as <ARTIFACTS>/<name>.png, whose path is returned."""

@@ -83,8 +83,11 @@ def run():
           panel.table.item(0, 2).text())
     active = panel.table.item(0, 5).text()
     check("active limits shown", active and active == ", ".join(p.optimum["active"]), active)
-    pix = panel.plot.pixmap()
+    pix = panel.plot.picture()
     check("plot drawn", pix is not None and not pix.isNull() and pix.width() > 300, pix)
+    shown = panel.plot.pixmap()
+    check("plot shown within the panel", shown is not None and 0 < shown.width() <= panel.plot.width(),
+          (shown.width() if shown else None, panel.plot.width()))
     check("report compares both methods", "GA" in panel.report.toPlainText() and "SLSQP" in panel.report.toPlainText(),
           panel.report.toPlainText()[:300])
     check("nothing written yet", feeds(tc) == before)

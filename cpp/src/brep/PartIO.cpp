@@ -73,7 +73,9 @@ TopoDS_Shape validatedSolid(const TopoDS_Shape& shape, const std::string& origin
     return solid;
 }
 
-TopoDS_Shape partFromBrepText(const std::string& text) {
+TopoDS_Shape partFromBrepText(const std::string& text) { return validatedSolid(shapeFromBrepText(text), "BREP text"); }
+
+TopoDS_Shape shapeFromBrepText(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw inputError("BREP text is empty");
     std::istringstream in(text);
     TopoDS_Shape shape;
@@ -84,7 +86,7 @@ TopoDS_Shape partFromBrepText(const std::string& text) {
         throw inputError(std::string("BREP text could not be read: ") + f.GetMessageString());
     }
     if (shape.IsNull()) throw inputError("BREP text could not be read: not an OpenCASCADE BREP shape");
-    return validatedSolid(shape, "BREP text");
+    return shape;
 }
 
 TopoDS_Shape loadPart(const std::string& path) {

@@ -97,7 +97,9 @@ void NcFormatter::spindle(const ClRecord& r) {
         w_.line("M5");
         return;
     }
-    if (m_.maxSpindleSpeed && r.rpm > *m_.maxSpindleSpeed)
+    // A speed the optimiser or the knowledge base capped at the limit may sit a rounding error
+    // above it; the word written is the same.
+    if (m_.maxSpindleSpeed && r.rpm > *m_.maxSpindleSpeed * (1 + 1e-9))
         throw inputError("spindle speed " + num(r.rpm) + " r/min exceeds the machine's maximum spindle speed " +
                          num(*m_.maxSpindleSpeed) + " r/min");
     checkValue("spindle speed", r.rpm, "r/min", 0, true);
@@ -115,7 +117,7 @@ void NcFormatter::checkCycle(const ClRecord& r) const {
 }
 
 void NcFormatter::checkFeed(double f, int decimals) const {
-    if (m_.maxFeed && f > *m_.maxFeed)
+    if (m_.maxFeed && f > *m_.maxFeed * (1 + 1e-9))
         throw inputError("feed " + num(f) + " mm/min exceeds the machine's maximum feed " + num(*m_.maxFeed) + " mm/min");
     checkValue("feed", f, "mm/min", decimals, true);
 }

@@ -78,6 +78,8 @@ std::string toJson(const DomainTree& t, int indent) {
     j["faceRoles"] = json::array();
     for (FaceRole r : t.faceRoles) j["faceRoles"].push_back(toString(r));
     j["faceElement"] = t.faceElement;
+    j["unclaimedFaces"] = t.unclaimedFaces;
+    j["leftOutFaces"] = t.leftOutFaces;
     j["warnings"] = t.warnings;
     return j.dump(indent);
 }
@@ -111,6 +113,10 @@ public:
         return Field(j_.at(i), where_ + "[" + std::to_string(i) + "]");
     }
     bool isNull() const { return j_.is_null(); }
+    bool has(const char* key) const {
+        expect(j_.is_object(), "an object");
+        return j_.contains(key);
+    }
 
     int integer() const {
         expect(j_.is_number_integer(), "a whole number");
@@ -339,6 +345,8 @@ void checkLinks(const DomainTree& t, const Field& root) {
     if (t.faceElement.size() != faces)
         root["faceElement"].fail(std::to_string(t.faceElement.size()) + " entries for " + std::to_string(faces) +
                                  " faces");
+    if (root.has("unclaimedFaces")) face(root["unclaimedFaces"], t.unclaimedFaces);
+    if (root.has("leftOutFaces")) face(root["leftOutFaces"], t.leftOutFaces);
     for (std::size_t k = 0; k < faces; ++k)
         if (t.faceElement[k] < -1 || t.faceElement[k] >= n)
             root["faceElement"].at(k).fail("element " + std::to_string(t.faceElement[k]) + " does not exist (-1 or " +
@@ -371,6 +379,9 @@ DomainTree fromJson(const std::string& text) {
     t.elements = root["elements"].list(element);
     t.faceRoles = root["faceRoles"].list(faceRole);
     t.faceElement = root["faceElement"].integers();
+    // Added later: optional, so that older trees still read.
+    if (root.has("unclaimedFaces")) t.unclaimedFaces = root["unclaimedFaces"].integers();
+    if (root.has("leftOutFaces")) t.leftOutFaces = root["leftOutFaces"].integers();
     t.warnings = root["warnings"].list([](const Field& f) { return f.text(); });
     checkLinks(t, root);
     return t;

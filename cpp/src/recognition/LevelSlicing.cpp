@@ -140,8 +140,9 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             bool wall = false;
             for (int f : c.contourFaces) wall |= fs[static_cast<std::size_t>(f)].att == Attitude::Vertical;
             if (!wall) continue;
-            // Capped from above (a cavity seen from the wrong side): not machinable here.
-            if (!std::isinf(view_.rays().firstHit(frame.world(c.sample, z), true))) continue;
+            // Capped from above anywhere (a cavity seen from the wrong side, maybe with a hole
+            // in its floor): not machinable here.
+            if (capped(c, z)) continue;
         }
         ElementDraft in;
         DomainElement& e = in.el;
@@ -184,6 +185,14 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         in.sample = c.sample;
         made.push_back(std::move(in));
     }
+}
+
+bool LevelSlicing::capped(const VoidRegion& c, double z) const {
+    if (!std::isinf(view_.rays().firstHit(view_.frame.world(c.sample, z), true))) return true;
+    const double inset = std::max(0.05, 100 * view_.tol.linear);
+    for (const P2& p : c.region.boundaryProbes(inset, 24))
+        if (!std::isinf(view_.rays().firstHit(view_.frame.world(p, z), true))) return true;
+    return false;
 }
 
 // An opening: the region's walls all end at this level and below it lies no material.

@@ -27,6 +27,8 @@ public:
 
 private:
     bool leavesPart(VoidRegion& c, double h, double z) const;
+    // Whether material lies above the region anywhere, seen from the slice at z.
+    bool capped(const VoidRegion& c, double z) const;
 
     const SetupView& view_;
     const FaceCatalogue& faces_;

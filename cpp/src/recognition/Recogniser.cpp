@@ -14,6 +14,7 @@
 #include "SetupDirections.h"
 #include "SetupView.h"
 #include "Tolerances.h"
+#include "UnclaimedFaces.h"
 
 #include <Standard_Failure.hxx>
 
@@ -48,6 +49,7 @@ public:
             }
         }
         assignFaceRoles(tree_, faces_, tol_);
+        reportUnclaimedFaces(tree_, onBlank_);
         return std::move(tree_);
     }
 
@@ -57,6 +59,7 @@ private:
     FaceCatalogue faces_;
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
+    std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
     std::vector<Vec3> axes_;     // principal axes, on first use
     RegionWidths widths_;
     double progressBase_ = 0, progressSpan_ = 1;
@@ -84,6 +87,7 @@ private:
     void runSetup(const Vec3& d) {
         if (axes_.empty()) axes_ = principalAxes(faces_, tol_);
         const SetupView view(faces_, tol_, d, axes_, opt_);
+        markBlankBoundaryFaces(view, onBlank_);
 
         SetupDirection setup;
         setup.id = static_cast<int>(tree_.setups.size());

@@ -115,4 +115,21 @@ P2 Region::interiorPoint() const {
     return toP2(outer[0]);
 }
 
+std::vector<P2> Region::boundaryProbes(double inset, std::size_t maxCount) const {
+    const Paths ps = thinned(paths());
+    Paths e;
+    // Narrow regions vanish under the full inset: halve it until something is left.
+    for (double r = inset; r > 1e-4 && e.empty(); r *= 0.5) e = erode(ps, r);
+    std::vector<P2> out;
+    std::size_t total = 0;
+    for (const Path& p : e) total += p.size();
+    if (total == 0) return out;
+    const std::size_t step = std::max<std::size_t>(1, total / std::max<std::size_t>(1, maxCount));
+    std::size_t k = 0;
+    for (const Path& p : e)
+        for (const IntPoint& q : p)
+            if (k++ % step == 0) out.push_back(toP2(q));
+    return out;
+}
+
 }  // namespace aeronc::recognition

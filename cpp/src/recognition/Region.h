@@ -30,6 +30,9 @@ struct Region {
     double minWidth() const;
     // A point at least `clearance` (or as far as the region allows) from the boundary.
     P2 interiorPoint() const;
+    // Up to maxCount points inside the region, `inset` from its boundary (less where the
+    // region is narrower), spread along the outer boundary and the islands'.
+    std::vector<P2> boundaryProbes(double inset, std::size_t maxCount) const;
 };
 
 }  // namespace aeronc::recognition

@@ -47,9 +47,11 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
     x0 += gap, y0 += gap, h0 += gap, x1 -= gap, y1 -= gap, h1 -= gap;
     blankLo = {x0 - options.blankAllowance, y0 - options.blankAllowance};
     blankHi = {x1 + options.blankAllowance, y1 + options.blankAllowance};
+    blankH0 = h0, blankH1 = h1;
     if (options.blank) {
         constexpr double kInf = std::numeric_limits<double>::infinity();
         blankLo = {kInf, kInf}, blankHi = {-kInf, -kInf};
+        blankH0 = kInf, blankH1 = -kInf;
         for (int c = 0; c < 8; ++c) {
             const Vec3 p{(c & 1) ? options.blank->max[0] : options.blank->min[0],
                          (c & 2) ? options.blank->max[1] : options.blank->min[1],
@@ -57,6 +59,7 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
             const P2 q = frame.project(p);
             blankLo.x = std::min(blankLo.x, q.x), blankLo.y = std::min(blankLo.y, q.y);
             blankHi.x = std::max(blankHi.x, q.x), blankHi.y = std::max(blankHi.y, q.y);
+            blankH0 = std::min(blankH0, frame.height(p)), blankH1 = std::max(blankH1, frame.height(p));
         }
     }
 }

@@ -29,6 +29,7 @@ public:
     std::vector<FaceInSetup> fs;  // index: face (0-based)
     double h0 = 0, h1 = 0;        // the part's height range
     P2 blankLo, blankHi;          // the blank's rectangle in the slicing plane
+    double blankH0 = 0, blankH1 = 0;  // and its height range: the part's, or the given blank's
 
     AxisRays& rays() const { return *rays_; }
     // Whether the tool reaches face i from this side, computed once per face.

@@ -27,7 +27,8 @@
 //
 // Feature sizes: island 0.30 pw x 0.25 pw (corner radius 3, top 2 mm under the panel top,
 // floor fillet round its foot); opening 0.40 pw x 0.30 pw (corner radius 3); lightening hole
-// diameter min(20, 0.4 pw); joggle the middle third of the pocket along x, full width in y,
+// diameter lighteningDiameter, by default min(20, 0.4 pw), at most pw - cornerRadius and
+// clear of the floor fillet; joggle the middle third of the pocket along x, full width in y,
 // 1.5 mm deep; -Z pocket inset 4 mm from the pocket outline; rib notch 3 mm into each pocket
 // and 0.5 pw - max(cornerRadius, floorFillet) wide; bolt holes 6.6, counterbore 11 x 6 deep,
 // countersink 12 at 90 degrees, placed for the largest clearance to edges and pockets.
@@ -246,7 +247,7 @@ Panel makePanel(const PanelSpec& s) {
     const double pw = s.pitch - s.ribThickness;
     if (nx < 1 || ny < 1) fail("need at least one pocket");
     if (s.ribThickness <= 0 || s.border <= 0) fail("rib thickness and border must be positive");
-    if (R < 0 || pw <= 2 * R + 1) fail("pockets too small for the corner radius");
+    if (R < 0 || pw < 2 * R + 0.5) fail("pockets too small for the corner radius");
     if (Z <= 0 || Z >= T) fail("webZ must lie inside the thickness");
     if (ff < 0 || (ff > 0 && (ff >= R || ff >= T - Z))) fail("floor fillet must be < cornerRadius");
     if (s.bottomPockets && (s.bottomDepth <= 0 || Z - s.bottomDepth < 1))
@@ -284,7 +285,11 @@ Panel makePanel(const PanelSpec& s) {
     const double ow = 0.40 * pw, oh = 0.30 * pw;
     const double orad = kOpeningCornerRadius;
     if (s.openings && 2 * orad + 1 >= std::min(ow, oh)) fail("pockets too small for openings");
-    const double holeD = std::min(kLighteningDiameter, 0.4 * pw);
+    const double holeD = s.lighteningDiameter > 0 ? s.lighteningDiameter : std::min(kLighteningDiameter, 0.4 * pw);
+    if (s.lighteningHoles && s.lighteningDiameter < 0) fail("the lightening hole diameter must not be negative");
+    // The floor ring round the hole keeps room for a truth point beside the floor fillet.
+    if (s.lighteningHoles && (holeD > pw - R + 1e-9 || holeD > pw - 2 * ff - 1))
+        fail("lightening hole too wide for the pocket");
 
     TopoDS_Shape tools[5];
     tools[Plain] = plainTool;
@@ -366,7 +371,10 @@ Panel makePanel(const PanelSpec& s) {
             const int k = kindOf(i, j);
             toolList.Append(placed(tools[k], x0, y0));
 
-            const double px = x0 + std::max(pw / 6, ff + 1.0);
+            double px = x0 + std::max(pw / 6, ff + 1.0);
+            // A wide lightening hole leaves a ring of floor: take its middle, clear of the fillet.
+            if (k == Lightening && c - (px - x0) < 0.5 * holeD + 0.5)
+                px = x0 + 0.5 * (ff + c - 0.5 * holeD);
             TruthElement p = element("closed_pocket", 0, {px, y0 + c, Z + kAbove}, Z, "pocket");
             p.islands = (k == Island) ? 1 : 0;
             const int pid = add(p);

@@ -18,6 +18,9 @@ TopoDS_Shape loadStepWithFaceNames(const std::string& path, std::vector<std::str
 // Same checks for a shape passed as BREP text (FreeCAD's Shape.exportBrepToString()).
 TopoDS_Shape partFromBrepText(const std::string& text);
 
+// The whole shape of BREP text, unchecked (it may hold free shapes besides a solid).
+TopoDS_Shape shapeFromBrepText(const std::string& text);
+
 // Same checks for a shape already in memory.
 TopoDS_Shape validatedSolid(const TopoDS_Shape& shape, const std::string& origin);
 

@@ -99,6 +99,8 @@ struct DomainTree {
     std::vector<DomainElement> elements;
     std::vector<FaceRole> faceRoles;    // index FaceN-1
     std::vector<int> faceElement;       // index FaceN-1; -1 when no element claims it
+    std::vector<int> unclaimedFaces;    // FaceN inside the blank that no element claims (also a warning)
+    std::vector<int> leftOutFaces;      // FaceN of the shape's faces outside its solid (free faces, shells)
     std::vector<std::string> warnings;
 };
 

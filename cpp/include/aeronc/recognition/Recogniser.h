@@ -32,4 +32,11 @@ struct RecogniseOptions {
 // Layered-slicing recognition of generalised pockets, openings and holes.
 DomainTree recognise(const TopoDS_Shape& solid, const RecogniseOptions& options = {});
 
+// Recognises the one solid of `shape`, which may also hold free faces, shells, wires or
+// edges (a STEP import often does), and numbers the faces by their FaceN in `shape`, so
+// roles, selections and the face count are those of the object the user picked. Faces
+// outside the solid get no element and the role stock; they are listed in leftOutFaces and
+// named in a warning. Throws like validatedSolid for a shape without exactly one valid solid.
+DomainTree recogniseShape(const TopoDS_Shape& shape, const std::string& origin, const RecogniseOptions& options = {});
+
 }  // namespace aeronc::recognition

@@ -22,6 +22,7 @@ struct PanelSpec {
     bool islands = true;              // boss in some pockets
     bool openings = true;             // rectangular through windows in some floors
     bool lighteningHoles = true;      // round through holes in some floors
+    double lighteningDiameter = 0;    // their diameter; 0: min(20, 0.4 x pocket width)
     bool boltHoles = true;            // holes in the border, some counterbored / countersunk
     bool joggles = true;              // a shallow step in some floors
     bool flange = true;               // the border lowered along one edge: an open pocket

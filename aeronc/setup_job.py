@@ -1,0 +1,152 @@
+"""The Path Job of one setup of the machining chain.
+
+Its Model is the part placed by the setup frame: the frame's u, v, w become the Job's X, Y, Z,
+so the setup's tool axis is the Job's +Z and the units' geometry (u, v, h) is in Job
+coordinates. For -Z that is a rotation of 180 degrees about X. Its Stock is the recognition
+blank box in the same frame. Its ToolControllers are the ones the setup's units need, one per
+knowledge-base tool and cutting operation, tagged like Select tools' ("<tool id>/<operation>"):
+a Job keeps the controllers it has (with an optimiser's speeds and feeds); a missing one is
+copied from a controller of the same tag in another Job of the part (Select tools' Job), or
+made from the unit's cutting data (the knowledge base's n and feeds).
+"""
+import FreeCAD
+
+from aeronc import pathcompat
+from aeronc.tool_planning import TC_TAG
+
+SETUP_TAG = "AeroNCSetup"  # property on the Jobs of a chain: the setup id
+
+
+
+def frame_rotation(frame):
+    """The rotation taking world coordinates to the setup frame (rows u, v, w)."""
+    u, v, w = (frame[k] for k in ("u", "v", "w"))
+    m = FreeCAD.Matrix(u[0], u[1], u[2], 0, v[0], v[1], v[2], 0, w[0], w[1], w[2], 0, 0, 0, 0, 1)
+    return FreeCAD.Rotation(m)
+
+
+def frame_placement(frame):
+    return FreeCAD.Placement(FreeCAD.Vector(), frame_rotation(frame))
+
+
+def box_in_frame(box, frame):
+    """The box (xmin, ymin, zmin, xmax, ymax, zmax) bounding a world box seen in the frame."""
+    rot = frame_rotation(frame)
+    corners = [rot.multVec(FreeCAD.Vector(x, y, z))
+               for x in (box[0], box[3]) for y in (box[1], box[4]) for z in (box[2], box[5])]
+    xs, ys, zs = [c.x for c in corners], [c.y for c in corners], [c.z for c in corners]
+    clean = [round(c, 9) + 0.0 for c in (min(xs), min(ys), min(zs), max(xs), max(ys), max(zs))]
+    return tuple(clean)
+
+
+def blank_box(group):
+    """The recognition blank of a Machining Features group: its Blank, or the part's bounding
+    box grown by its Allowance."""
+    if len(group.Blank) == 6:
+        return tuple(group.Blank)
+    bb = group.Source.Shape.BoundBox
+    a = group.Allowance.Value
+    return (bb.XMin - a, bb.YMin - a, bb.ZMin - a, bb.XMax + a, bb.YMax + a, bb.ZMax + a)
+
+
+def cutting_operation(unit):
+    """The knowledge base's cutting operation whose data a unit uses: drilling for the drill
+    step, roughing for rough, corner, hole-milling and cut-off steps, finishing otherwise."""
+    from aeronc.chain_edits import setting_operation
+    return setting_operation(unit.get("step", ""))
+
+
+def tag_of(unit):
+    return "{}/{}".format(unit["tool"], cutting_operation(unit))
+
+
+def setup_label(setup, part):
+    return "Job {} ({})".format(setup.get("name") or setup["id"], part.Label)
+
+
+def make_job(doc, part, setup):
+    job = pathcompat.create_job(doc, [part], "Job")
+    job.addProperty("App::PropertyInteger", SETUP_TAG, "AeroNC", "Setup of the machining chain this Job machines",
+                    0, True)
+    setattr(job, SETUP_TAG, int(setup["id"]))
+    # The Job's default ToolController is not one the chain uses.
+    for tc in pathcompat.tool_controllers(job):
+        pathcompat.remove_tool_controller(doc, tc)
+    return job
+
+
+def place(job, part, setup, blank):
+    """Model and stock of the Job in the setup's frame."""
+    job.Label = setup_label(setup, part)
+    pathcompat.set_model_placement(job, frame_placement(setup["frame"]))
+    stock = job.Stock
+    box = box_in_frame(blank, setup["frame"])
+    bb = stock.Shape.BoundBox if stock is not None and not stock.Shape.isNull() else None
+    if bb is None or any(abs(a - b) > 1e-6 for a, b in zip((bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax), box)):
+        pathcompat.set_job_stock_box(job, box)
+
+
+def tool_controllers(job, units, part, kb):
+    """{tag: ToolController} for the units, made in the Job where missing (see module doc)."""
+    doc = job.Document
+    have = {getattr(tc, TC_TAG): tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, TC_TAG)}
+    elsewhere = {}
+    for other in pathcompat.jobs_of_part(doc, part):
+        if other is job:
+            continue
+        for tc in pathcompat.tool_controllers(other):
+            if hasattr(tc, TC_TAG):
+                elsewhere.setdefault(getattr(tc, TC_TAG), tc)
+    used = [tc.ToolNumber for tc in pathcompat.tool_controllers(job)]
+    out = {}
+    for unit in units:
+        tag = tag_of(unit)
+        if tag in out:
+            continue
+        tc = have.get(tag)
+        if tc is None:
+            source = elsewhere.get(tag)
+            number = unit.get("toolNumber") or (source.ToolNumber if source is not None else None)
+            if not number or number in used:
+                number = max(used + [0]) + 1
+            s = unit.get("setting") or {}
+            rpm = float(source.SpindleSpeed) if source is not None else float(s.get("spindleRpm") or 0.0)
+            hfeed = _mm_min(source.HorizFeed) if source is not None else float(s.get("feedMmMin") or 0.0)
+            vfeed = _mm_min(source.VertFeed) if source is not None else float(s.get("plungeFeedMmMin") or 0.0)
+            tc = _make_tool_controller(doc, job, unit["tool"], tag, number, rpm, hfeed, vfeed, kb)
+            if source is not None:
+                _copy_optimum(source, tc)
+            used.append(number)
+        out[tag] = tc
+    return out
+
+
+def unused_tool_controllers(job, wanted):
+    """The Job's chain ToolControllers (tagged) that no unit needs and no operation uses."""
+    return [tc for tc in pathcompat.tool_controllers(job)
+            if hasattr(tc, TC_TAG) and tc not in wanted and not pathcompat.tool_controller_in_use(tc)]
+
+
+def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb):
+    import json
+    from aeronc.errors import MachiningChainError, from_core
+    with from_core(MachiningChainError, "tool {} of the chain".format(tool_id)):
+        _, document = kb.bit_document(tool_id)
+    tc = pathcompat.create_tool_controller(doc, job, "TC: {} {}".format(*tag.split("/")), json.loads(document),
+                                           number, rpm, hfeed, vfeed)
+    tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan", 0, True)
+    setattr(tc, TC_TAG, tag)
+    return tc
+
+
+def _copy_optimum(source, tc):
+    """The optimiser's record travels with the speeds and feeds it chose."""
+    from aeronc.cutting_optimisation import RESULT_PROPERTY
+    if RESULT_PROPERTY in source.PropertiesList:
+        tc.addProperty(source.getTypeIdOfProperty(RESULT_PROPERTY), RESULT_PROPERTY, "AeroNC",
+                       source.getDocumentationOfProperty(RESULT_PROPERTY), 0, True)
+        setattr(tc, RESULT_PROPERTY, getattr(source, RESULT_PROPERTY))
+
+
+def _mm_min(quantity):
+    return float(FreeCAD.Units.Quantity(quantity).getValueAs("mm/min"))

@@ -1,0 +1,178 @@
+"""Verification of posted programs: re-read, then simulated against the blank.
+
+A posted LinuxCNC program is re-read by LinuxCNC's own interpreter (`rs274`, Debian package
+linuxcnc-uspace), an independent reading of what the machine will do. Its canonical moves
+(machine coordinates) go back through the machine's forward kinematics to tool tips in the
+Job's frame, then through the Job's placement to the part's frame, and every operation of every
+setup runs, in program order, on one Z-dexel model of the blank (`_core.simulate`). The
+report says whether any cutting move gouges the part beyond its allowance, whether any rapid
+passes through material, and how much material is left on the faces the plan finishes.
+
+An operation is recognised in the program by the "(operation: <label>)" comment the posts
+write; its allowances and cutter come from the operation of that label in the Job.
+"""
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+from aeronc.errors import AeroNCError, from_core
+
+
+class VerificationError(AeroNCError):
+    """A program could not be re-read or simulated; the message says why."""
+
+
+_CANON = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z_]+)\((.*)\)\s*$")
+_FINISHING_STEPS = ("w", "fs", "ff", "c")
+
+
+def rs274_path():
+    path = shutil.which("rs274")
+    if not path:
+        raise VerificationError("LinuxCNC's rs274 interpreter is not installed (Debian package linuxcnc-uspace); "
+                                "it re-reads the posted program for the verification")
+    return path
+
+
+def reread(program_path, tools, arc_step=0.5):
+    """The program as LinuxCNC's interpreter reads it: [{"label", "tool", "moves": [[kind, x, y, z, a, c]]}]
+    in machine coordinates, one entry per "(operation: ...)" comment. tools: {number: diameter}.
+    Kinds: 0 rapid, 1 feed. Arcs come back as chords of at most arc_step mm."""
+    work = tempfile.mkdtemp(prefix="aeronc_reread_")
+    try:
+        table = os.path.join(work, "tools.tbl")
+        with open(table, "w") as f:
+            for number, diameter in sorted(tools.items()):
+                f.write("T{0} P{0} D{1:.4f} Z0.0\n".format(int(number), float(diameter)))
+        run = subprocess.run([rs274_path(), "-t", table, "-g", program_path], capture_output=True, text=True,
+                             timeout=600)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    errors = [l for l in run.stderr.splitlines() if l.strip() and l.strip() != "executing"]
+    if run.returncode != 0 or errors:
+        raise VerificationError("{}: rs274 reported: {}".format(os.path.basename(program_path),
+                                                             "; ".join(errors[:5]) or "exit {}".format(run.returncode)))
+    ops, current, tool = [], None, None
+    last = None
+    for line in run.stdout.splitlines():
+        m = _CANON.match(line)
+        if not m:
+            continue
+        name, args = m.group(1), m.group(2)
+        if name == "COMMENT":
+            text = args.strip().strip('"')
+            if text.startswith("operation: "):
+                current = {"label": text[len("operation: "):], "tool": tool, "moves": []}
+                ops.append(current)
+        elif name == "CHANGE_TOOL":
+            tool = int(float(args))
+            if current is not None:
+                current["tool"] = tool
+        elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
+            v = [float(x) for x in args.split(",")]
+            last = (v[0], v[1], v[2], v[3], v[5])
+            if current is not None:
+                current["moves"].append([0 if name == "STRAIGHT_TRAVERSE" else 1] + list(last))
+        elif name == "ARC_FEED":
+            v = [float(x) for x in args.split(",")]
+            end = (v[0], v[1], v[5], v[6], v[8])
+            if current is not None and last is not None:
+                current["moves"].extend([1] + list(p) for p in _arc_points(last, end, (v[2], v[3]), int(v[4]),
+                                                                            arc_step))
+            last = end
+    return ops
+
+
+def _arc_points(start, end, centre, rotation, step):
+    """Points along an XY arc (rotation > 0: counter-clockwise, < 0: clockwise, |n| > 1: extra turns)."""
+    r = math.hypot(start[0] - centre[0], start[1] - centre[1])
+    a0 = math.atan2(start[1] - centre[1], start[0] - centre[0])
+    a1 = math.atan2(end[1] - centre[1], end[0] - centre[0])
+    sweep = a1 - a0
+    if rotation > 0:
+        while sweep <= 1e-12:
+            sweep += 2 * math.pi
+        sweep += 2 * math.pi * (rotation - 1)
+    else:
+        while sweep >= -1e-12:
+            sweep -= 2 * math.pi
+        sweep -= 2 * math.pi * (-rotation - 1)
+    n = max(1, int(math.ceil(abs(sweep) * r / step)))
+    pts = []
+    for k in range(1, n + 1):
+        t = k / n
+        a = a0 + sweep * t
+        pts.append((centre[0] + r * math.cos(a), centre[1] + r * math.sin(a),
+                    start[2] + (end[2] - start[2]) * t, end[3], end[4]))
+    return pts
+
+
+def to_part_frame(ops, machine_json, job_to_part):
+    """Machine-coordinate moves -> tool tips in the part's frame, and the tool axis there.
+    job_to_part: a FreeCAD Placement from the Job's frame to the part's."""
+    from aeronc import _core
+    import FreeCAD
+    out = []
+    for op in ops:
+        moves, axis = [], None
+        for m in op["moves"]:
+            with from_core(VerificationError, "forward kinematics of " + op["label"]):
+                tip, a = _core.forward_kinematics(machine_json, [m[1], m[2], m[3]], [m[4], m[5]], None, 0.0)
+            p = job_to_part.multVec(FreeCAD.Vector(*tip))
+            d = job_to_part.Rotation.multVec(FreeCAD.Vector(*a))
+            axis = (round(d.x, 9), round(d.y, 9), round(d.z, 9))
+            moves.append([m[0], p.x, p.y, p.z])
+        out.append(dict(op, moves=moves, axis=list(axis) if axis else [0.0, 0.0, 1.0]))
+    return out
+
+
+def plunges_marked(moves):
+    """Feed moves straight down the tool axis become plunges (kind 2)."""
+    out = []
+    prev = None
+    for m in moves:
+        k = m[0]
+        if k == 1 and prev is not None and abs(m[1] - prev[1]) < 1e-9 and abs(m[2] - prev[2]) < 1e-9:
+            k = 2
+        out.append([k] + list(m[1:]))
+        prev = m
+    return out
+
+
+def finished_faces(chain, result):
+    """(faces the plan finishes, {element label: its finished faces}): floors and walls of the
+    elements with an enabled finishing unit (webs, walls, flanges, corners)."""
+    elements = {e["id"]: e for e in result.get("elements", [])}
+    finished = {}
+    for u in chain.get("units", []):
+        if not u.get("enabled", True) or u.get("step") not in _FINISHING_STEPS:
+            continue
+        e = elements.get(u.get("element"))
+        if e is None:
+            continue
+        faces = finished.setdefault("E{}".format(e["id"]), set())
+        if u.get("step") == "w":
+            faces.update(e.get("floorFaces", []))
+        if u.get("step") in ("fs", "ff"):
+            faces.update(e.get("contourFaces", []))
+            for island in e.get("islandFaces", []):
+                faces.update(island)
+    faces = sorted(set().union(*finished.values())) if finished else []
+    return faces, {k: sorted(v) for k, v in finished.items() if v}
+
+
+def simulate(part_shape, ops, blank, finished, elements, cell_size=0.5, options=None):
+    """Run ops (part frame, see to_part_frame; each with "cutter", "radialAllowance",
+    "axialAllowance") on the blank; returns the core's report dict."""
+    from aeronc import _core
+    program = {"cellSize": cell_size, "blank": list(blank), "finishedFaces": finished, "elements": elements,
+               "ops": [{"label": o["label"], "axis": o["axis"], "cutter": o["cutter"],
+                        "radialAllowance": o["radialAllowance"], "axialAllowance": o["axialAllowance"],
+                        "moves": plunges_marked(o["moves"])} for o in ops if o["moves"]]}
+    with from_core(VerificationError, "simulation"):
+        text = _core.simulate(part_shape.exportBrepToString(), json.dumps(program), json.dumps(options or {}))
+    return json.loads(text)

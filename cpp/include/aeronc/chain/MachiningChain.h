@@ -1,0 +1,160 @@
+#pragma once
+// The NC machining chain (the patent's 数控加工链): the process plan's seven levels
+// part -> machine -> setup -> process -> step -> program -> tool, with the machining units
+// under the tool nodes as the eighth. Geometry is 2-D in each setup's frame (u, v), heights
+// along its tool axis w, all in mm; docs/machining-chain.md describes every field.
+#include <aeronc/chain/ProcessTemplate.h>
+#include <aeronc/core/Vec3.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aeronc::chain {
+
+using Point2 = std::array<double, 2>;  // (u, v)
+using Loop = std::vector<Point2>;      // closed, the first point not repeated
+
+struct Cutter {
+    double diameter = 0;
+    double cornerRadius = 0;
+    std::string type;  // flat, bull, ball, drill
+};
+
+// Spindle speed and feeds of the unit's tool in its operation.
+struct Setting {
+    double spindleRpm = 0;
+    double feedMmMin = 0;
+    double plungeFeedMmMin = 0;
+};
+
+struct HoleTarget {
+    double u = 0, v = 0;
+    double diameter = 0;
+    double top = 0, bottom = 0;  // heights along w; bottom includes the breakthrough of a through hole
+    bool through = false;
+};
+
+// One machining unit: a region of one element, one operation, one tool.
+struct MachiningUnit {
+    int id = -1;
+    int setup = -1;
+    int element = -1;
+    StepCode step = StepCode::Rough;
+    Operation operation = Operation::Pocket;
+    std::string featureType;
+    std::string tool;
+    int toolNumber = 0;
+    Cutter cutter;
+    std::optional<Cutter> previousCutter;  // rest: the cutter that went before
+    Setting setting;
+    double top = 0, bottom = 0;  // heights along w
+    Loop contour;                // drive loop at the floor (counter-clockwise)
+    std::vector<Loop> islands;   // island loops (clockwise)
+    std::vector<std::array<Point2, 2>> openEdges;  // stretches of the contour open to the blank
+    std::vector<HoleTarget> holes;
+    double radialAllowance = 0, axialAllowance = 0;
+    double floorFilletRadius = 0;  // the element's: the toolpath keeps the cutter out of it
+    double stepDown = 0;  // the knowledge base's a_p for the tool
+    double stepOver = 0;  // a_e
+    Point2 at{0, 0};      // where rapid travel to and from the unit is measured
+    std::optional<double> eta;  // machinable ratio of the tool in the element (pocket, rest)
+    std::string note;           // why this operation, when it is not the obvious one
+    bool enabled = true;
+    int order = -1;  // position in MachiningChain::order
+};
+
+struct ChainProgram {
+    std::string tool;
+    std::vector<int> units;
+};
+struct ChainStep {
+    StepCode code = StepCode::Rough;
+    std::vector<ChainProgram> programs;
+};
+// The steps done on one machine with one tool in one clamping, back to back.
+struct ChainProcess {
+    int id = -1;
+    std::string machine;
+    std::string tool;
+    std::vector<ChainStep> steps;
+};
+struct ChainSetup {
+    int id = -1;
+    std::string name;
+    Vec3 direction{0, 0, 1};
+    Vec3 u{1, 0, 0}, v{0, 1, 0}, w{0, 0, 1};  // the frame the units' geometry is in
+    std::vector<ChainProcess> processes;
+};
+
+// What the rules need to know of a domain element.
+struct ChainElement {
+    int id = -1;
+    int setup = -1;
+    int parent = -1;
+    std::string featureType;
+    double level = 0, top = 0, depth = 0;
+    double minWidth = 0;
+    double minCornerRadius = -1;  // < 0: no concave corner
+    double floorFilletRadius = 0;
+    int narrowPassages = 0;  // passages narrower than the roughing tool (toolselect::MachinableRatio)
+    std::optional<double> holeDiameter;
+};
+
+struct ToolData {
+    double spindleRpm = 0, feedMmMin = 0, plungeFeedMmMin = 0;
+    double ap = 0, ae = 0;
+};
+
+struct ChainTool {
+    std::string id, type, material;
+    double diameter = 0, cornerRadius = 0, fluteLength = 0, reach = 0;
+    int flutes = 0;
+    int number = 0;  // T number in the chain's order of first use; 0: not used
+    std::map<std::string, ToolData> settings;  // by operation: roughing, finishing, drilling
+    double usableLength() const { return fluteLength < reach ? fluteLength : reach; }
+};
+
+struct RuleCheck {
+    std::string rule;  // priority, existence, validity, removal, fit
+    std::string node;  // the node at fault ("chain" for a rule that holds everywhere)
+    bool ok = true;
+    std::string message;
+};
+
+struct Unmachined {
+    int element = -1;
+    std::optional<StepCode> step;  // the step that could not machine it; none: nothing could
+    std::string reason;
+};
+
+struct Travel {
+    double rulesOnly = 0;  // rapid travel of the order the sequencing rules alone give, mm
+    double optimised = 0;  // of the chain's order
+    double savedPercent = 0;
+};
+
+struct MachiningChain {
+    std::string family, material, machine;
+    ProcessTemplate processTemplate;
+    std::vector<ChainSetup> setups;
+    std::vector<ChainElement> elements;
+    std::vector<ChainTool> tools;
+    std::vector<MachiningUnit> units;  // units[i].id == i
+    std::vector<int> order;            // every unit id once, setup by setup
+    Travel travel;
+    std::vector<RuleCheck> checks;
+    std::vector<Unmachined> unmachined;
+
+    const ChainTool* tool(const std::string& id) const;
+    const ChainElement* element(int id) const;
+    const ChainSetup* setup(int id) const;
+};
+
+// The operation whose cutting data a unit uses: roughing for r, c, h and t, drilling for d,
+// finishing otherwise.
+const char* settingOperation(StepCode step);
+
+}  // namespace aeronc::chain

@@ -1,0 +1,142 @@
+#pragma once
+// Compensation of the holes still to be drilled from the measured deviations of the datum
+// holes, by one of seven methods, with each method's leave-one-out error over the datum holes.
+//
+//   seed                 the seed's interpolation along rows (RowInterpolation.h)
+//   rigid, similarity    the best-fit transform of the datum holes alone (BestFit.h)
+//   rigid+idw, ...       the best fit, then its residuals interpolated by inverse distance
+//   rigid+tps, ...       weighting or by a thin-plate spline (ResidualField.h)
+//
+// No method wins every distortion (a similarity fit is best for rigid and scale errors, an
+// interpolated residual for bending), so the proposed method is the one whose leave-one-out
+// error is lowest: each datum hole predicted from the others.
+#include <aeronc/compensation/BestFit.h>
+#include <aeronc/compensation/HoleRows.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aeronc::compensation {
+
+enum class Method { Seed, Rigid, Similarity, RigidIdw, SimilarityIdw, RigidTps, SimilarityTps };
+
+// Every method, simplest first (the order that breaks ties in the leave-one-out proposal).
+const std::vector<Method>& allMethods();
+std::string methodName(Method m);                            // "seed", "rigid", "similarity+tps", ...
+std::optional<Method> methodFromName(const std::string& name);  // nullopt for an unknown name
+
+// A measured datum hole: its nominal position and where it was measured, in the part frame.
+// row and station (distance along the row) matter for the seed's method; row -1 lets
+// compensate() find the rows.
+struct Datum {
+    std::string id;
+    Vec3 nominal = Vec3::Zero();
+    Vec3 measured = Vec3::Zero();
+    int row = -1;
+    double station = 0.0;
+    Vec3 deviation() const { return measured - nominal; }
+};
+
+// A hole still to be drilled: nominal position and unit surface normal.
+struct NominalHole {
+    std::string id;
+    Vec3 position = Vec3::Zero();
+    Vec3 normal = Vec3::UnitZ();
+    int row = -1;
+    double station = 0.0;
+};
+
+// A method fitted to a set of datum holes: the correction at any nominal hole.
+class Compensator {
+public:
+    // Throws when the datum holes do not support the method: none at all; a 3-D fit with fewer
+    // than three or with collinear datum holes; rows missing for the seed's method. (One datum
+    // hole is enough for the seed's method here: a leave-one-out prediction from two.)
+    Compensator(Method method, std::vector<Datum> datums);
+
+    Method method() const { return method_; }
+    // The correction dP at a hole; `note` (if given) says when the seed's method extrapolates.
+    Vec3 correction(const NominalHole& hole, std::string* note = nullptr) const;
+    // correction() of many holes at once (faster for the spline); notes as correction() gives them.
+    std::vector<Vec3> corrections(const std::vector<NominalHole>& holes, std::vector<std::string>* notes = nullptr) const;
+    // The fitted transform (identity for the seed's method); it also turns the normals.
+    const SimilarityTransform& fit() const { return fit_; }
+    bool usesFit() const { return method_ != Method::Seed; }
+
+private:
+    Vec3 seedCorrection(const NominalHole& hole, std::string* note) const;
+
+    Method method_;
+    std::vector<Datum> datums_;
+    SimilarityTransform fit_;
+    std::vector<Vec3> residuals_;  // measured - fit(nominal) per datum
+    std::map<int, std::vector<int>> rowDatums_;  // per row: its datum holes by station
+    struct Fields;
+    std::shared_ptr<const Fields> fields_;
+};
+
+struct LeaveOneOut {
+    Method method = Method::Seed;
+    bool available = false;
+    std::string reason;          // why not available
+    double rms = 0.0, max = 0.0;  // over the datum holes, mm
+    std::vector<double> errors;  // per datum hole: |predicted - measured deviation|
+};
+
+struct HoleCorrection {
+    std::string id;
+    Vec3 nominal = Vec3::Zero();
+    Vec3 correction = Vec3::Zero();
+    Vec3 compensated = Vec3::Zero();
+    Vec3 normal = Vec3::UnitZ();  // the nominal normal turned by the fit
+    bool exceedsTolerance = false;
+    std::string note;
+};
+
+struct DatumResidual {
+    std::string id;
+    Vec3 deviation = Vec3::Zero();  // measured - nominal
+    Vec3 residual = Vec3::Zero();   // measured - fit(nominal): what the fit leaves
+};
+
+struct CompensationInput {
+    std::vector<Datum> datums;
+    std::vector<NominalHole> holes;
+    double tolerance = 0.5;  // a correction longer than this is flagged, mm
+    RowOptions rows;         // used when rows are not given
+};
+
+struct CompensationResult {
+    Method method = Method::Seed;
+    std::optional<Method> proposed;  // none when no method's leave-one-out error can be computed
+    SimilarityTransform fit;
+    std::vector<LeaveOneOut> leaveOneOut;  // in allMethods() order
+    std::vector<DatumResidual> datums;
+    std::vector<HoleCorrection> holes;
+    int flagged = 0;
+};
+
+// Finds rows (HoleRows.h) over the datum and nominal holes together when any of them has
+// row -1, and gives every point its row and station.
+void assignRows(std::vector<Datum>& datums, std::vector<NominalHole>& holes, const RowOptions& options = {});
+
+// Each method's leave-one-out error over the datum holes (rows assigned).
+std::vector<LeaveOneOut> leaveOneOut(const std::vector<Datum>& datums);
+
+// The available method with the lowest leave-one-out RMS error; a method within 1e-9 mm or
+// 0.5 % of the best and earlier in allMethods() wins the tie.
+std::optional<Method> proposedMethod(const std::vector<LeaveOneOut>& figures);
+
+// Corrects each hole with a fitted method; a correction longer than `tolerance` is flagged.
+std::vector<HoleCorrection> correctHoles(const Compensator& compensator, const std::vector<NominalHole>& holes,
+                                         double tolerance);
+
+// Checks the input (at least two datum holes, finite values, unique ids), assigns rows,
+// computes the leave-one-out figures and compensates every hole with `method` (the proposed
+// one when nullopt).
+CompensationResult compensate(CompensationInput input, std::optional<Method> method = std::nullopt);
+
+}  // namespace aeronc::compensation

@@ -1,0 +1,17 @@
+#pragma once
+// Helical hole milling: an end mill interpolates a hole larger than itself.
+#include <aeronc/toolpath/Hole.h>
+
+namespace aeronc::toolpath {
+
+struct HelicalHoleParameters : CutParameters {
+    double finishingAllowance = 0;  // radial allowance of the finishing circle, at most radialAllowance
+    double breakThrough = 0.5;      // below bottom for a through hole, beyond the cutter's corner radius
+};
+
+// Per hole: a helix at radialAllowance down to the floor at a pitch of at most stepDown (and
+// at most the ramp angle's), a full circle there, then a finishing circle at
+// finishingAllowance. Climb milling runs clockwise.
+Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const HelicalHoleParameters& parameters);
+
+}  // namespace aeronc::toolpath

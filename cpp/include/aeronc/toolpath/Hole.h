@@ -1,0 +1,14 @@
+#pragma once
+// A round hole along the tool axis, in the setup frame.
+#include <aeronc/toolpath/Toolpath.h>
+
+namespace aeronc::toolpath {
+
+struct Hole {
+    Point centre;
+    double diameter = 0;
+    double top = 0, bottom = 0;  // bottom: where the full diameter ends
+    bool through = false;        // the cutter breaks through below bottom
+};
+
+}  // namespace aeronc::toolpath

@@ -1,0 +1,64 @@
+#include <aeronc/toolpath/HelicalHole.h>
+
+#include "Arcs.h"
+#include "HoleChecks.h"
+#include "Validate.h"
+
+#include <aeronc/core/Error.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aeronc::toolpath {
+
+Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const HelicalHoleParameters& p) {
+    checkHoles(holes);
+    double top = holes.front().top;
+    for (const Hole& h : holes) top = std::max(top, h.top);
+    for (const Hole& h : holes) checkMilling(p, cutter, h.top, h.bottom);
+    requireFinite(p.finishingAllowance, "finishingAllowance");
+    requireFinite(p.breakThrough, "breakThrough");
+    if (p.finishingAllowance > p.radialAllowance + 1e-12)
+        throw inputError("finishingAllowance must be at most radialAllowance");
+    if (p.breakThrough < 0) throw inputError("breakThrough must be at least 0");
+    const double R = cutter.radius(), tol = p.chordTolerance;
+    const Heights hs = heightsOf(p, top);
+    const double approach = std::min(p.clearance, 1.0);
+    const double tanAngle = std::tan(p.rampAngleDeg * M_PI / 180);
+    const double sign = p.climb ? -1 : 1;  // climb: clockwise, the wall on the left
+
+    Toolpath tp;
+    MoveWriter w(tp);
+    for (std::size_t i = 0; i < holes.size(); ++i) {
+        const Hole& h = holes[i];
+        const std::string what = "hole " + std::to_string(i + 1);
+        const double rough = h.diameter / 2 - R - p.radialAllowance;
+        const double finish = h.diameter / 2 - R - p.finishingAllowance;
+        if (!(rough > tol))
+            throw inputError(what + " (diameter " + std::to_string(h.diameter) +
+                             " mm) is not larger than the cutter and its allowance: drill it instead");
+        const double floor = h.through ? h.bottom - p.breakThrough - cutter.cornerRadius : h.bottom + p.axialAllowance;
+        if (!(floor < h.top)) throw inputError(what + ": the axial allowance leaves nothing to cut");
+        // Pitch: at most the step-down, and no steeper than the ramp angle on the helix.
+        const double pitch = std::min(p.stepDown, 2 * M_PI * rough * tanAngle / chordFactor(rough, tol));
+        const double start = h.top + approach;
+        const double turns = (start - floor) / pitch;
+        if (turns > 1e5) throw inputError(what + ": the helix would take more than 10^5 turns");
+        const double a0 = M_PI;  // start on the -u side
+        const Point first = onCircle(h.centre, rough, a0);
+        if (!w.started()) w.rapid(first[0], first[1], hs.safe);
+        w.rapidOver(first, hs.clearance, start);
+        double a = helixMoves(w, h.centre, rough, a0, sign * 2 * M_PI * turns, floor, tol);
+        a = helixMoves(w, h.centre, rough, a, sign * 2 * M_PI, floor, tol);  // the flat turn at the bottom
+        // Straight out to the finishing radius, once round, and in to the centre, off the wall.
+        const Point out = onCircle(h.centre, finish, a);
+        w.feed(out, floor);
+        a = helixMoves(w, h.centre, finish, a, sign * 2 * M_PI, floor, tol);
+        w.feed(h.centre, floor);
+        w.retract(hs.clearance);
+    }
+    w.retract(hs.safe);
+    return tp;
+}
+
+}  // namespace aeronc::toolpath

@@ -1,0 +1,56 @@
+#include "PocketArea.h"
+
+#include "Validate.h"
+
+#include <aeronc/core/Error.h>
+
+#include <cmath>
+
+namespace aeronc::toolpath {
+
+namespace {
+constexpr double kOnContour = 0.1;  // mm: how far an open edge may stray from the contour
+}
+
+PocketArea pocketArea(const PocketUnit& unit, double extension) {
+    const Loop contour = checkedLoop(unit.contour, "the contour");
+    clip::Paths outer{clip::toPath(contour)};
+    if (!ClipperLib::Orientation(outer[0])) ClipperLib::ReversePath(outer[0]);
+    clip::Paths islands;
+    for (std::size_t i = 0; i < unit.islands.size(); ++i)
+        islands.push_back(clip::toPath(checkedLoop(unit.islands[i], "island " + std::to_string(i + 1))));
+
+    PocketArea a;
+    a.material = clip::subtract(outer, islands);
+    if (!(clip::area(a.material) > 0)) throw inputError("the islands cover the whole pocket");
+
+    clip::Paths extensions;
+    for (std::size_t i = 0; i < unit.openEdges.size(); ++i) {
+        const std::string what = "open edge " + std::to_string(i + 1);
+        const Point& p = unit.openEdges[i].a;
+        const Point& q = unit.openEdges[i].b;
+        for (double c : {p[0], p[1], q[0], q[1]}) requireFinite(c, what + "'s coordinate");
+        const double len = clip::distance(p, q);
+        if (!(len > 1e-6)) throw inputError(what + " has no length");
+        const Point mid{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2};
+        if (clip::nearestOnLoop(contour, mid).distance > kOnContour)
+            throw inputError(what + " does not lie on the contour");
+        // Outward: the side of the edge away from the contour's inside.
+        Point n{-(q[1] - p[1]) / len, (q[0] - p[0]) / len};
+        const double probe = std::min(kOnContour * 2, len / 4);
+        if (clip::contains(outer, {mid[0] + n[0] * probe, mid[1] + n[1] * probe})) n = {-n[0], -n[1]};
+        // Starting a little inside, the rectangle overlaps the contour however it was rounded.
+        const double in = kOnContour;
+        Loop rect{{p[0] - n[0] * in, p[1] - n[1] * in},
+                  {q[0] - n[0] * in, q[1] - n[1] * in},
+                  {q[0] + n[0] * extension, q[1] + n[1] * extension},
+                  {p[0] + n[0] * extension, p[1] + n[1] * extension}};
+        clip::Path r = clip::toPath(rect);
+        if (!ClipperLib::Orientation(r)) ClipperLib::ReversePath(r);
+        extensions.push_back(r);
+    }
+    a.region = extensions.empty() ? a.material : clip::subtract(clip::unite(outer, extensions), islands);
+    return a;
+}
+
+}  // namespace aeronc::toolpath

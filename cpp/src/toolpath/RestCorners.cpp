@@ -1,0 +1,65 @@
+#include <aeronc/toolpath/RestCorners.h>
+
+#include "ClearingMoves.h"
+#include "PocketArea.h"
+#include "Validate.h"
+
+#include <aeronc/core/Error.h>
+#include <aeronc/toolpath/FloorFillet.h>
+#include <aeronc/toolpath/Levels.h>
+
+#include <algorithm>
+
+namespace aeronc::toolpath {
+
+Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutter& cutter, const PocketParameters& p) {
+    const double s = checkMilling(p, cutter, unit.top, unit.bottom);
+    checkCutter(previous, "the previous cutter");
+    const double R = cutter.radius(), R0 = previous.radius(), a = p.radialAllowance, tol = p.chordTolerance;
+    if (!(R < R0)) throw inputError("rest machining needs a cutter smaller than the previous one");
+    // The same extension as the previous cutter's clearing had.
+    const PocketArea area = pocketArea(unit, 2 * (R0 + a) + p.clearance);
+    const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, a);
+    const clip::Paths centres = clip::offset(area.region, -(R + a + fillet), tol);
+    if (!(clip::area(centres) > 0)) throw inputError("the rest-machining cutter does not fit in the pocket");
+    const clip::Paths reached = clip::offset(centres, R, tol);
+    const double filletBefore = floorFilletOffset(unit.floorFilletRadius, previous.cornerRadius, a);
+    const clip::Paths reachedBefore =
+        clip::offset(clip::offset(area.region, -(R0 + a + filletBefore), tol), R0 + filletBefore, tol);
+    // What is left, without the slivers that only rounding makes.
+    const clip::Paths rest =
+        clip::offset(clip::offset(clip::subtract(reached, reachedBefore), -2 * tol, tol), 2 * tol, tol);
+    Toolpath tp;
+    if (rest.empty()) return tp;
+
+    // The centres from which the cutter touches the rest; outside them it meets only what the
+    // previous cutter cleared, so a plunge there is safe.
+    const clip::Paths touching = clip::intersect(clip::offset(rest, R, tol), centres);
+    const clip::Paths cleared = clip::subtract(centres, clip::offset(rest, R + 2 * tol, tol));
+    ClearingOptions o;
+    o.stepOver = s;
+    o.reach = R - cutter.cornerRadius > 0.1 * R ? R - cutter.cornerRadius : R;
+    o.chordTolerance = tol;
+    o.helixRadius = 0.5 * R;
+    o.minHelixRadius = 0.25 * R;
+    o.maxEntryLink = 2 * cutter.diameter;
+    o.climb = p.climb;
+    const ClearingPlan plan = planClearing(touching, centres, cleared, o);
+    if (plan.chains.empty()) return tp;
+
+    const std::vector<double> levels = cuttingLevels(unit.top, unit.bottom + p.axialAllowance, p.stepDown);
+    const Heights hs = heightsOf(p, unit.top);
+    EntrySettings es;
+    es.clearancePlane = hs.clearance;
+    es.approach = std::min(p.clearance, 1.0);
+    es.rampAngleDeg = p.rampAngleDeg;
+    es.chordTolerance = tol;
+    es.climb = p.climb;
+    MoveWriter w(tp);
+    w.rapid(plan.chains.front().path.front()[0], plan.chains.front().path.front()[1], hs.safe);
+    clearingMoves(w, plan, levels, unit.top, es);
+    w.retract(hs.safe);
+    return tp;
+}
+
+}  // namespace aeronc::toolpath

@@ -1,0 +1,264 @@
+#include <aeronc/core/Error.h>
+#include <aeronc/verify/Simulation.h>
+#include <aeronc/verify/SweptSegment.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace aeronc::verify {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// What one offending cell shows: copied for every hit, so no label in it.
+struct CellHit {
+    double depth = 0;
+    bool wall = false;
+    int face = 0;
+    std::array<double, 3> position{};
+};
+
+// Counts offending cells of one check, and per move its deepest cell.
+class Tally {
+public:
+    Tally(CheckResult& result, double tolerance, int maxListed) : r_(result), maxListed_(maxListed) {
+        r_.tolerance = tolerance;
+    }
+    void startSegment(int op, const std::string& label, const Segment& seg) {
+        op_ = op, label_ = &label, seg_ = &seg;
+        segmentWorst_.reset();
+    }
+    void hit(const CellHit& h) {
+        ++r_.cells;
+        if (!segmentWorst_ || h.depth > segmentWorst_->depth) segmentWorst_ = h;
+    }
+    // Returns true when the segment's move offends and was not counted yet.
+    bool endSegment() {
+        if (!segmentWorst_) return false;
+        MoveEvent e;
+        e.operation = op_, e.label = *label_, e.move = seg_->move, e.tip = seg_->to;
+        e.depth = segmentWorst_->depth, e.wall = segmentWorst_->wall, e.face = segmentWorst_->face;
+        e.position = segmentWorst_->position;
+        const bool sameMove = lastOp_ == op_ && lastMove_ == e.move;
+        if (!sameMove) ++r_.moves;
+        if (!r_.worst || e.depth > r_.worst->depth) r_.worst = e;
+        if (sameMove && !r_.listed.empty() && r_.listed.back().operation == op_ && r_.listed.back().move == e.move) {
+            if (e.depth > r_.listed.back().depth) r_.listed.back() = e;
+        } else if (!sameMove && int(r_.listed.size()) < maxListed_) {
+            r_.listed.push_back(e);
+        }
+        lastOp_ = op_, lastMove_ = e.move;
+        return !sameMove;
+    }
+
+private:
+    CheckResult& r_;
+    int maxListed_;
+    int op_ = -1, lastOp_ = -1, lastMove_ = -1;
+    const std::string* label_ = nullptr;
+    const Segment* seg_ = nullptr;
+    std::optional<CellHit> segmentWorst_;
+};
+
+struct Run {
+    const PartDexels& part;
+    StockDexels& stock;
+    const SimulationOptions& options;
+    Tally gouges, collisions;
+};
+
+// Gouge: part material above the grown cutter's envelope, lowered by the axial allowance. The
+// depth is the smaller of the vertical and the horizontal overlap. Fills e and returns true
+// beyond the tolerance.
+bool gougeAt(const PartDexels& part, std::size_t c, const SweptSegment& sw, const Cutter& grown, double axial,
+             int s, double tol, double x, double y, double d, CellHit& e) {
+    if (part.empty(c)) return false;
+    const double partTop = s > 0 ? (part.end(c) - 1)->z1 : -part.begin(c)->z0;
+    if (sw.lowerBound(grown, d) - axial >= partTop - tol) return false;  // clear of it everywhere
+    const double hg = sw.envelope(grown, x, y) - axial;
+    const double sideways = grown.radius - d;
+    double depth = 0, contact = 0;
+    int face = 0;
+    bool wall = false;
+    if (s > 0) {
+        for (const PartSpan* p = part.end(c); p != part.begin(c);) {
+            --p;
+            if (p->z1 <= hg + tol) break;
+            const double down = p->z1 - hg, dp = std::min(down, sideways);
+            if (dp <= depth) continue;
+            depth = dp, wall = sideways < down;
+            contact = wall ? std::max(hg, p->z0) : p->z1, face = wall ? 0 : p->face1;
+        }
+    } else {
+        for (const PartSpan* p = part.begin(c); p != part.end(c); ++p) {
+            if (-p->z0 <= hg + tol) break;
+            const double down = -p->z0 - hg, dp = std::min(down, sideways);
+            if (dp <= depth) continue;
+            depth = dp, wall = sideways < down;
+            contact = wall ? std::min(-hg, p->z1) : p->z0, face = wall ? 0 : p->face0;
+        }
+    }
+    if (depth <= tol) return false;
+    e.depth = depth, e.wall = wall, e.face = face, e.position = {x, y, contact};
+    return true;
+}
+
+void runOperation(int index, const Operation& op, Run& run, OperationSummary& summary) {
+    const Grid& grid = run.part.grid;
+    const int s = op.axis;
+    const Cutter& cutter = op.cutter;
+    const Cutter grown = cutter.grownBy(op.radialAllowance);  // what the part must stay clear of
+    const double reach = std::max(cutter.radius, grown.radius);
+    const double gougeTol = run.options.gougeTolerance, collisionTol = run.options.collisionTolerance;
+    double removed = 0;
+
+    const auto segments = segmentsOf(op);
+    summary.label = op.label;
+    summary.moves = op.moves.size();
+    summary.segments = segments.size();
+    for (const Segment& seg : segments) {
+        const SweptSegment sw(seg.from[0], seg.from[1], s * seg.from[2], seg.to[0], seg.to[1], s * seg.to[2]);
+        run.gouges.startSegment(index, op.label, seg);
+        run.collisions.startSegment(index, op.label, seg);
+
+        const auto rows = grid.rows(sw.minY() - reach, sw.maxY() + reach);
+        for (int j = rows.first; j <= rows.second; ++j) {
+            const double y = grid.centreY(j);
+            double xa, xb;
+            if (!sw.rowSpan(y, reach, xa, xb)) continue;
+            const auto cols = grid.columns(xa, xb);
+            for (int i = cols.first; i <= cols.second; ++i) {
+                const double x = grid.centreX(i);
+                const std::size_t c = grid.index(i, j);
+                const double d = sw.distance(x, y);
+
+                if (!seg.rapid && d <= grown.radius) {
+                    CellHit e;
+                    if (gougeAt(run.part, c, sw, grown, op.axialAllowance, s, gougeTol, x, y, d, e)) run.gouges.hit(e);
+                }
+
+                if (d > cutter.radius || run.stock.empty(c)) continue;
+                const double top = s > 0 ? run.stock.top(c) : -run.stock.bottom(c);
+                if (sw.lowerBound(cutter, d) >= top) continue;  // above all material here
+                const double h = sw.envelope(cutter, x, y);
+                if (h == HUGE_VAL) continue;
+                if (seg.rapid) {
+                    const double depth = std::min(top - h, cutter.radius - d);
+                    if (depth > collisionTol) run.collisions.hit({depth, cutter.radius - d < top - h, 0, {x, y, s * top}});
+                }
+                removed += s > 0 ? run.stock.removeAbove(c, h) : run.stock.removeBelow(c, -h);
+            }
+        }
+        if (run.gouges.endSegment()) ++summary.gougingMoves;
+        if (run.collisions.endSegment()) ++summary.collidingMoves;
+    }
+    summary.removedVolume = removed * grid.cellArea();
+}
+
+// The face of the steep triangle nearest to a wall gouge at (x, y, z): dexels only know the faces
+// at the ends of their spans.
+int wallFaceNear(const TriangleMesh& mesh, const std::array<double, 3>& at) {
+    int best = 0;
+    double bestDistance = HUGE_VAL;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const auto& v = mesh.triangles[t];
+        const Point3* P[3] = {&mesh.vertices[v[0]], &mesh.vertices[v[1]], &mesh.vertices[v[2]]};
+        const double zlo = std::min({(*P[0])[2], (*P[1])[2], (*P[2])[2]});
+        const double zhi = std::max({(*P[0])[2], (*P[1])[2], (*P[2])[2]});
+        if (at[2] < zlo - 1e-6 || at[2] > zhi + 1e-6) continue;
+        const double ux = (*P[1])[0] - (*P[0])[0], uy = (*P[1])[1] - (*P[0])[1], uz = (*P[1])[2] - (*P[0])[2];
+        const double vx = (*P[2])[0] - (*P[0])[0], vy = (*P[2])[1] - (*P[0])[1], vz = (*P[2])[2] - (*P[0])[2];
+        const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        if (std::abs(nz) >= 0.2 * std::sqrt(nx * nx + ny * ny + nz * nz)) continue;  // not a wall
+        // Horizontal distance to the triangle's edges: enough for a steep triangle.
+        for (int e = 0; e < 3; ++e) {
+            const Point3& a = *P[e];
+            const Point3& b = *P[(e + 1) % 3];
+            const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+            const double t01 = len2 > 0 ? std::clamp(((at[0] - a[0]) * dx + (at[1] - a[1]) * dy) / len2, 0.0, 1.0) : 0;
+            const double d = std::hypot(at[0] - a[0] - t01 * dx, at[1] - a[1] - t01 * dy);
+            if (d < bestDistance) bestDistance = d, best = mesh.faces[t];
+        }
+    }
+    return best;
+}
+
+// Stock minus part at the two ends of each column (see LeftoverMap).
+LeftoverMap leftoverOf(const PartDexels& part, const StockDexels& stock) {
+    LeftoverMap m;
+    m.grid = part.grid;
+    const std::size_t n = part.grid.cells();
+    m.top.assign(n, 0.f), m.bottom.assign(n, 0.f);
+    for (std::size_t c = 0; c < n; ++c) {
+        const bool hasPart = !part.empty(c), hasStock = !stock.empty(c);
+        if (!hasPart && !hasStock) continue;
+        if (!hasPart) {
+            double len = 0;
+            for (auto* s = stock.begin(c); s != stock.end(c); ++s) len += s->z1 - s->z0;
+            m.top[c] = m.bottom[c] = float(len);
+            continue;
+        }
+        const double partTop = (part.end(c) - 1)->z1, partBottom = part.begin(c)->z0;
+        if (!hasStock) {
+            m.top[c] = m.bottom[c] = float(partBottom - partTop);
+            continue;
+        }
+        m.top[c] = float(stock.top(c) - partTop);
+        m.bottom[c] = float(partBottom - stock.bottom(c));
+    }
+    return m;
+}
+
+}  // namespace
+
+SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                          const SimulationOptions& options) {
+    if (!(options.gougeTolerance >= 0) || !(options.collisionTolerance >= 0))
+        throw inputError("the gouge and collision tolerances must not be negative");
+    SimulationReport r;
+    r.grid = part.grid;
+    r.partVolume = part.volume();
+    r.triangles = mesh.triangles.size();
+    r.inconsistentColumns = part.inconsistentColumns;
+
+    const auto blank = program.hasBlank ? program.blank : bounds(mesh);
+    StockDexels stock = StockDexels::box(part.grid, blank);
+    r.blankVolume = stock.volume();
+
+    auto t = Clock::now();
+    Run run{part, stock, options, Tally(r.gouges, options.gougeTolerance, options.maxListed),
+            Tally(r.collisions, options.collisionTolerance, options.maxListed)};
+    r.operations.resize(program.operations.size());
+    for (std::size_t k = 0; k < program.operations.size(); ++k)
+        runOperation(int(k), program.operations[k], run, r.operations[k]);
+    r.simulateSeconds = since(t);
+    r.finalStockVolume = stock.volume();
+    for (auto& e : r.gouges.listed)
+        if (e.wall) e.face = wallFaceNear(mesh, e.position);
+    if (r.gouges.worst && r.gouges.worst->wall) r.gouges.worst->face = wallFaceNear(mesh, r.gouges.worst->position);
+
+    t = Clock::now();
+    r.coverage = measureCoverage(mesh, part, stock, program.finishedFaces, program.elements, options.coverage);
+    if (options.leftoverMap) r.leftover = leftoverOf(part, stock);
+    r.coverageSeconds = since(t);
+    return r;
+}
+
+SimulationReport simulate(const TriangleMesh& mesh, const Program& program, const SimulationOptions& options) {
+    validate(mesh);
+    const auto b = bounds(mesh);
+    auto box = program.hasBlank ? program.blank : b;
+    const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
+                                   std::max(b[4], box[4]), program.cellSize);
+    const auto t = Clock::now();
+    const PartDexels part = rasterise(mesh, grid);
+    const double rasterise = since(t);
+    SimulationReport r = simulate(part, mesh, program, options);
+    r.rasteriseSeconds = rasterise;
+    return r;
+}
+
+}  // namespace aeronc::verify

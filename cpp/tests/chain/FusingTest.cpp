@@ -1,0 +1,266 @@
+// The chain of whole parts, planned from the shipped knowledge base: generated double-sided
+// panels whose pockets and holes are known by construction, the sample panel, and NIST parts.
+// Every element is machined or listed with a reason, the order keeps the precedences (checked
+// here independently of the sequencer), optimising never adds travel, and the rules hold.
+#include "Fixtures.h"
+
+#include <aeronc/chain/ChainJson.h>
+#include <aeronc/brep/PartIO.h>
+#include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+using namespace aeronc;
+using namespace aeronc::chain;
+
+namespace {
+
+const test::KbDir& kbDir() {
+    static const test::KbDir dir("fusing");
+    return dir;
+}
+
+double area(const Loop& l) {
+    double a = 0;
+    for (std::size_t i = 0; i < l.size(); ++i)
+        a += l[i][0] * l[(i + 1) % l.size()][1] - l[(i + 1) % l.size()][0] * l[i][1];
+    return 0.5 * a;
+}
+
+bool outer(const MachiningUnit& u) { return u.featureType == "open_pocket" || u.featureType == "flange"; }
+
+// The properties every chain must have, checked without the sequencer's code. Returns the
+// number of parent -> child pairs whose order rule 3 decides.
+int expectSoundChain(const recognition::DomainTree& tree, const MachiningChain& c, const std::string& part) {
+    SCOPED_TRACE(part);
+    // Every element is machined by some unit or listed with the reason.
+    std::map<int, int> units;
+    for (const MachiningUnit& u : c.units) ++units[u.element];
+    std::set<int> listed;
+    for (const Unmachined& m : c.unmachined) {
+        EXPECT_FALSE(m.reason.empty()) << "element " << m.element;
+        listed.insert(m.element);
+    }
+    for (const auto& e : tree.elements)
+        EXPECT_TRUE(units[e.id] > 0 || listed.count(e.id)) << "element " << e.id << " neither machined nor listed";
+
+    // The order lists every unit once.
+    std::vector<int> sorted = c.order;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted.size(), c.units.size());
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+        if (sorted[i] != static_cast<int>(i)) return ADD_FAILURE() << "order is no permutation", 0;
+    std::map<int, int> pos;
+    for (std::size_t i = 0; i < c.order.size(); ++i) pos[c.order[i]] = static_cast<int>(i);
+
+    // Precedences: step order; rule 1 (larger tool first within a step); rule 2 (outer before
+    // inner with one tool); rule 3 (a parent's unit before its child's with one tool and class).
+    std::map<int, const recognition::DomainElement*> byId;
+    for (const auto& e : tree.elements) byId[e.id] = &e;
+    std::map<std::pair<int, StepCode>, const MachiningUnit*> byElementStep;
+    for (const MachiningUnit& u : c.units) byElementStep[{u.element, u.step}] = &u;
+    const ProcessTemplate& t = c.processTemplate;
+    // The unit of the nearest ancestor with a unit in the same step, lying higher.
+    auto parentUnit = [&](const MachiningUnit& b) -> const MachiningUnit* {
+        for (int p = byId[b.element]->parent; p >= 0; p = byId[p]->parent) {
+            const auto it = byElementStep.find({p, b.step});
+            if (it == byElementStep.end()) continue;
+            return it->second->bottom > b.bottom + 1e-9 ? it->second : nullptr;
+        }
+        return nullptr;
+    };
+    // Rule 3 holds over rule 1: a child cut with a larger tool than an ancestor waits for it.
+    auto underNarrowerParent = [&](const MachiningUnit& a) {
+        for (const MachiningUnit* p = parentUnit(a); p; p = parentUnit(*p))
+            if (p->cutter.diameter < a.cutter.diameter - 1e-9) return true;
+        return false;
+    };
+    int parentPairs = 0;
+    for (const MachiningUnit& a : c.units)
+        for (const MachiningUnit& b : c.units) {
+            if (a.setup != b.setup || a.id == b.id) continue;
+            if (t.rank(a.step) < t.rank(b.step)) EXPECT_LT(pos[a.id], pos[b.id]) << a.id << " before " << b.id;
+            if (a.step != b.step) continue;
+            if (a.cutter.diameter > b.cutter.diameter + 1e-9 && !underNarrowerParent(a))
+                EXPECT_LT(pos[a.id], pos[b.id]) << "rule 1";
+            if (a.tool == b.tool && outer(a) && !outer(b)) EXPECT_LT(pos[a.id], pos[b.id]) << "rule 2";
+        }
+    // Rule 3 whatever the tools: a child's unit starts below material its parent's unit removes.
+    for (const MachiningUnit& b : c.units)
+        if (const MachiningUnit* a = parentUnit(b)) {
+            EXPECT_LT(pos[a->id], pos[b.id]) << "rule 3: unit " << a->id << " (element " << a->element
+                                             << ") before unit " << b.id << " (element " << b.element << ")";
+            ++parentPairs;
+        }
+
+    EXPECT_LE(c.travel.optimised, c.travel.rulesOnly + 1e-9);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << ": " << r.node << ": " << r.message;
+
+    // Geometry in the setup frame: contours counter-clockwise, islands clockwise, heights in order.
+    for (const MachiningUnit& u : c.units) {
+        EXPECT_GT(u.top, u.bottom) << "unit " << u.id;
+        if (u.operation == Operation::Drill || u.operation == Operation::Helix) {
+            EXPECT_EQ(u.holes.size(), 1u);
+            continue;
+        }
+        EXPECT_GT(area(u.contour), 0) << "unit " << u.id;
+        for (const Loop& isl : u.islands) EXPECT_LT(area(isl), 0) << "unit " << u.id;
+        EXPECT_GT(u.stepDown, 0) << "unit " << u.id;
+        EXPECT_GT(u.stepOver, 0) << "unit " << u.id;
+        EXPECT_GT(u.setting.spindleRpm, 0) << "unit " << u.id;
+    }
+    // The JSON carries it all.
+    EXPECT_EQ(toJson(fromJson(toJson(c))), toJson(c));
+    return parentPairs;
+}
+
+recognition::DomainTree recogniseBothSides(const testparts::Panel& panel) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}, {0, 0, -1}};
+    return recognition::recognise(validatedSolid(panel.shape, "panel"), o);
+}
+
+}  // namespace
+
+TEST(Fusing, GeneratedDoubleSidedPanel) {
+    testparts::PanelSpec spec;  // every feature kind, pockets on both faces
+    spec.pocketsX = 4;
+    spec.pocketsY = 3;
+    spec.floorFillet = 2;
+    const auto panel = testparts::makePanel(spec);
+    const auto tree = recogniseBothSides(panel);
+    const auto kb = kbDir().open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    EXPECT_GT(expectSoundChain(tree, c, "generated panel"), 0);  // its ribs and joggles have children
+
+    // Both setups have units, each in its own frame.
+    ASSERT_EQ(c.setups.size(), 2u);
+    for (const ChainSetup& s : c.setups) EXPECT_FALSE(s.processes.empty()) << s.name;
+    EXPECT_DOUBLE_EQ(c.setups[1].w[2], -1);
+
+    std::map<int, const recognition::DomainElement*> byId;
+    for (const auto& e : tree.elements) byId[e.id] = &e;
+    int drilled = 0, milledHoles = 0, rests = 0;
+    for (const MachiningUnit& u : c.units) {
+        const auto& e = *byId[u.element];
+        if (u.operation == Operation::Drill) {
+            // The drill of the hole's own diameter (the generator's are clearance sizes).
+            EXPECT_NEAR(u.cutter.diameter, e.hole->diameter, 0.01) << "unit " << u.id;
+            EXPECT_EQ(u.cutter.type, "drill");
+            ++drilled;
+        }
+        if (u.operation == Operation::Helix) {
+            // Flat-bottomed counterbores: an end mill between half and 0.8 of the hole.
+            EXPECT_FALSE(e.hole->through);
+            EXPECT_GE(u.cutter.diameter, 0.5 * e.hole->diameter - 1e-9);
+            EXPECT_LE(u.cutter.diameter, 0.8 * e.hole->diameter + 1e-9);
+            EXPECT_DOUBLE_EQ(u.cutter.cornerRadius, 0);
+            ++milledHoles;
+        }
+        if (u.operation == Operation::Rest) {
+            // Only where the roughing tool could not follow the corners.
+            ASSERT_TRUE(u.previousCutter.has_value());
+            EXPECT_LT(u.cutter.diameter, u.previousCutter->diameter);
+            EXPECT_TRUE(e.minCornerRadius < 0 || 0.5 * u.previousCutter->diameter + u.radialAllowance > e.minCornerRadius)
+                << "unit " << u.id;
+            ++rests;
+        }
+        // A child's unit starts from its parent's floor.
+        if (u.step == StepCode::Rough && e.parent >= 0 && byId[e.parent]->type != recognition::ElementType::Hole)
+            EXPECT_NEAR(u.top, std::min(e.top, byId[e.parent]->level + 0.5), 1e-9) << "unit " << u.id;
+    }
+    int throughHoles = 0, blindHoles = 0;
+    for (const auto& e : tree.elements)
+        if (e.hole) (e.hole->through ? throughHoles : blindHoles)++;
+    EXPECT_EQ(drilled, throughHoles);  // every through hole size of the generator is in the series
+    EXPECT_EQ(milledHoles, blindHoles);
+    EXPECT_GT(drilled, 0);
+    EXPECT_GT(rests, 0);
+    // Every pocket whose roughing tool is wider than its corners got a rest unit.
+    for (const MachiningUnit& r : c.units) {
+        if (r.step != StepCode::Rough || r.operation != Operation::Pocket) continue;
+        const auto& e = *byId[r.element];
+        if (e.minCornerRadius < 0 || 0.5 * r.cutter.diameter + 0.5 <= e.minCornerRadius + 1e-3) continue;
+        const bool finisherSmaller = std::any_of(c.units.begin(), c.units.end(), [&](const MachiningUnit& f) {
+            return f.element == e.id && f.step == StepCode::FinishWall && f.cutter.diameter < r.cutter.diameter;
+        });
+        if (!finisherSmaller) continue;
+        EXPECT_TRUE(std::any_of(c.units.begin(), c.units.end(),
+                                [&](const MachiningUnit& u) { return u.element == e.id && u.step == StepCode::Corner; }))
+            << "element " << e.id;
+    }
+}
+
+TEST(Fusing, SamplePanel) {
+    const std::string part = AERONC_RESOURCES "/samples/sample_panel.step";
+    const auto tree = recognition::recognise(loadPart(part), {});
+    const auto kb = kbDir().open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    expectSoundChain(tree, c, part);
+    // Its 6.6 and 20 mm through holes are drilled, the 11 mm counterbores milled.
+    std::map<double, std::set<std::string>> toolsByHole;
+    for (const MachiningUnit& u : c.units)
+        for (const HoleTarget& h : u.holes) toolsByHole[std::round(h.diameter * 10) / 10].insert(u.tool);
+    EXPECT_EQ(toolsByHole[6.6], (std::set<std::string>{"DR-6.6"}));
+    EXPECT_EQ(toolsByHole[20.0], (std::set<std::string>{"DR-20"}));
+    EXPECT_EQ(toolsByHole[11.0].size(), 1u);
+    EXPECT_EQ(toolsByHole[11.0].begin()->rfind("EM-F", 0), 0u);
+    // What is left is said: sharp inner corners no end mill finishes, countersinks.
+    int sharp = 0, countersinks = 0;
+    for (const Unmachined& m : c.unmachined) {
+        if (m.step == StepCode::FinishWall && m.reason.find("radius <= 0 mm") != std::string::npos) ++sharp;
+        if (m.reason.find("countersink") != std::string::npos) ++countersinks;
+    }
+    int sharpPockets = 0, countersunk = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type == recognition::ElementType::ClosedPocket && e.minCornerRadius == 0) ++sharpPockets;
+        if (e.hole && e.hole->countersinkDiameter > 0) ++countersunk;
+    }
+    EXPECT_EQ(sharp, sharpPockets);
+    EXPECT_EQ(countersinks, countersunk);
+    EXPECT_GT(c.travel.savedPercent, 0);
+
+    // Floors are finished with flat or bull end mills whose corner fits the floor fillet (the
+    // ball end mills stay in the corners and on the walls), at a step-over whose scallops stay
+    // under 0.01 mm: checked against the scallop of two corner arcs side by side.
+    std::map<int, const recognition::DomainElement*> byId;
+    for (const auto& e : tree.elements) byId[e.id] = &e;
+    int webs = 0;
+    for (const MachiningUnit& u : c.units) {
+        if (u.step != StepCode::Web) continue;
+        ++webs;
+        const auto& e = *byId.at(u.element);
+        EXPECT_NE(u.cutter.type, "ball") << "web unit " << u.id << " (element " << u.element << ")";
+        EXPECT_LE(u.cutter.cornerRadius, std::max(0.0, e.floorFilletRadius) + 1e-3) << "web unit " << u.id;
+        EXPECT_DOUBLE_EQ(u.floorFilletRadius, std::max(0.0, e.floorFilletRadius));
+        const double R = u.cutter.diameter / 2, r = u.cutter.cornerRadius;
+        const double gap = u.stepOver - 2 * (R - r);  // where the corners of two passes overlap
+        const double scallop = gap <= 0 ? 0.0 : r - std::sqrt(std::max(0.0, r * r - gap * gap / 4));
+        EXPECT_LE(scallop, 0.01 + 1e-9) << "web unit " << u.id;
+    }
+    EXPECT_GT(webs, 10);
+}
+
+class NistChain : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(NistChain, EveryElementMachinedOrListed) {
+    const std::string part = std::string(AERONC_SHARED_DATA) + "/nist/" + GetParam();
+    if (!std::filesystem::exists(part)) GTEST_SKIP() << "no " << part;
+    const auto tree = recognition::recognise(loadPart(part), {});
+    const auto kb = kbDir().open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    expectSoundChain(tree, c, part);
+    EXPECT_GT(c.units.size(), 10u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Nist, NistChain,
+                         ::testing::Values("nist_ftc_07_asme1_rd.stp", "nist_ftc_08_asme1_rc.stp",
+                                           "nist_ctc_01_asme1_ap203.stp"),
+                         [](const auto& info) { return info.param.substr(5, 6); });

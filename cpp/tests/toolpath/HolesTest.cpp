@@ -1,0 +1,162 @@
+// Helical hole milling and drilling against their known geometry: the helix and finishing
+// radii, the pitch, the floor, the drilling cycles' heights.
+#include "ErrorOf.h"
+#include "Checks.h"
+
+#include <aeronc/toolpath/Drilling.h>
+#include <aeronc/toolpath/HelicalHole.h>
+
+#include <gtest/gtest.h>
+
+using namespace aeronc::toolpath;
+using namespace aeronc::toolpath::test;
+using aeronc::test::inputErrorOf;
+
+namespace {
+// Signed angle swept from a to b round c, in (-pi, pi].
+double turn(const Point& c, const Point& a, const Point& b) {
+    return std::atan2((a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]),
+                      (a[0] - c[0]) * (b[0] - c[0]) + (a[1] - c[1]) * (b[1] - c[1]));
+}
+}  // namespace
+
+TEST(HelicalHole, HelixAndFinishingCircleHaveTheirRadii) {
+    const Point c{30, -12};
+    HelicalHoleParameters p;
+    p.radialAllowance = 0.3;
+    p.stepDown = 2;
+    p.rampAngleDeg = 5;
+    const Toolpath t = helicalHole({{c, 20, 5, -10, false}}, {12, 0}, p);
+    const double rough = 10 - 6 - 0.3, finish = 10 - 6;
+    std::size_t onRough = 0, onFinish = 0;
+    double lowest = 1e9, turned = 0, pitchWorst = 0;
+    double lastH = 1e9, turnAtLastH = 0;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move &a = t.moves[i - 1], &b = t.moves[i];
+        if (b.kind == Move::Kind::Rapid) continue;
+        const double r = dist({b.u, b.v}, c);
+        lowest = std::min(lowest, b.h);
+        // Everything cut lies on one of the two circles, or on the way in or out.
+        if (std::abs(r - rough) < 1e-9) ++onRough;
+        else if (std::abs(r - finish) < 1e-9) ++onFinish;
+        else EXPECT_TRUE(r < rough + 1e-9) << r;
+        if (std::abs(r - rough) < 1e-9 && std::abs(dist({a.u, a.v}, c) - rough) < 1e-9) {
+            turned += turn(c, {a.u, a.v}, {b.u, b.v});
+            if (b.h < lastH - 1e-12) {  // descending: the fall per turn is the pitch
+                pitchWorst = std::max(pitchWorst, (a.h - b.h) / std::abs(turn(c, {a.u, a.v}, {b.u, b.v})) * 2 * M_PI);
+                lastH = b.h, turnAtLastH = turned;
+            }
+        }
+    }
+    EXPECT_GT(onRough, 100u);
+    EXPECT_GT(onFinish, 40u);
+    EXPECT_EQ(lowest, -10);  // blind: the floor exactly
+    EXPECT_LE(pitchWorst, 2 + 1e-9);
+    EXPECT_LT(turned, 0);  // climb: clockwise
+    // A full turn flat at the floor after the last descent.
+    EXPECT_LE(turned - turnAtLastH, -2 * M_PI + 1e-6);
+    EXPECT_EQ(t.moves.back().kind, Move::Kind::Rapid);
+    EXPECT_DOUBLE_EQ(t.moves.back().h, 5 + p.clearance);
+}
+
+TEST(HelicalHole, ThroughHoleBreaksThroughBeyondTheCornerRadius) {
+    HelicalHoleParameters p;
+    p.breakThrough = 0.7;
+    const Toolpath t = helicalHole({{{0, 0}, 25, 0, -15, true}, {{60, 0}, 25, 0, -15, true}}, {16, 1.5}, p);
+    double lowest = 1e9;
+    for (const Move& m : t.moves) lowest = std::min(lowest, m.h);
+    EXPECT_DOUBLE_EQ(lowest, -15 - 0.7 - 1.5);
+    // Between the holes the tool rises to the clearance plane.
+    bool crossed = false;
+    for (std::size_t i = 1; i < t.moves.size(); ++i)
+        if (t.moves[i - 1].u < 30 && t.moves[i].u > 30) {
+            crossed = true;
+            EXPECT_EQ(t.moves[i].kind, Move::Kind::Rapid);
+            EXPECT_DOUBLE_EQ(t.moves[i].h, p.clearance);
+        }
+    EXPECT_TRUE(crossed);
+}
+
+TEST(HelicalHole, BadInputIsAClearError) {
+    const HelicalHoleParameters p;
+    EXPECT_NE(inputErrorOf([&] { helicalHole({{{0, 0}, 12, 0, -5, false}}, {12, 0}, p); }).find("not larger"),
+              std::string::npos);
+    EXPECT_NE(inputErrorOf([&] { helicalHole({}, {12, 0}, p); }).find("no holes"), std::string::npos);
+    EXPECT_NE(inputErrorOf([&] { helicalHole({{{0, 0}, 20, -5, 0, false}}, {12, 0}, p); }).find("below"),
+              std::string::npos);
+    EXPECT_NE(inputErrorOf([&] { helicalHole({{{NAN, 0}, 20, 0, -5, false}}, {12, 0}, p); }).find("finite"),
+              std::string::npos);
+    HelicalHoleParameters q;
+    q.stepDown = 0;
+    EXPECT_NE(inputErrorOf([&] { helicalHole({{{0, 0}, 20, 0, -5, false}}, {12, 0}, q); }).find("stepDown"),
+              std::string::npos);
+}
+
+TEST(Drilling, TipLengthOfA118DegreePointIsAboutAThirdOfTheDiameter) {
+    EXPECT_NEAR(drillTipLength(10, 118), 0.3 * 10, 0.01);
+    EXPECT_NEAR(drillTipLength(10, 90), 5, 1e-12);
+}
+
+TEST(Drilling, OneCyclePerHoleWithItsHeights) {
+    DrillParameters p;
+    p.peck = 2.5;
+    p.dwell = 0.4;
+    p.clearance = 3;
+    p.breakThrough = 0.5;
+    const std::vector<Hole> holes{{{0, 0}, 6.6, 0, -12, true}, {{25, 10}, 6.6, -4, -9, false}, {{50, 0}, 6.6, 0, -3, false}};
+    const Toolpath t = drilling(holes, {6.6, 0}, p);
+    std::vector<Move> cycles;
+    for (const Move& m : t.moves)
+        if (m.kind == Move::Kind::Drill) cycles.push_back(m);
+    ASSERT_EQ(cycles.size(), 3u);
+    EXPECT_NEAR(cycles[0].h, -12 - 6.6 * 0.3 - 0.5, 0.01);
+    EXPECT_DOUBLE_EQ(cycles[0].h, -12 - drillTipLength(6.6, 118) - 0.5);
+    EXPECT_DOUBLE_EQ(cycles[1].h, -9);  // blind: no tip added
+    EXPECT_DOUBLE_EQ(cycles[0].r, 3);   // each hole's top + clearance
+    EXPECT_DOUBLE_EQ(cycles[1].r, -1);
+    double cut = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_DOUBLE_EQ(cycles[i].u, holes[i].centre[0]);
+        EXPECT_DOUBLE_EQ(cycles[i].v, holes[i].centre[1]);
+        EXPECT_DOUBLE_EQ(cycles[i].q, 2.5);
+        EXPECT_DOUBLE_EQ(cycles[i].dwell, 0.4);
+        cut += cycles[i].r - cycles[i].h;
+    }
+    EXPECT_NEAR(t.cutLength, cut, 1e-9);
+    // Between holes: rapids at the plane above the highest top.
+    for (std::size_t i = 1; i < t.moves.size(); ++i)
+        if (t.moves[i].kind == Move::Kind::Rapid && t.moves[i].u != t.moves[i - 1].u) EXPECT_DOUBLE_EQ(t.moves[i].h, 3);
+}
+
+TEST(Drilling, RetractHeightIsTheRPlane) {
+    DrillParameters p;
+    p.retractHeight = 1;
+    const Toolpath t = drilling({{{0, 0}, 5, 0, -8, false}}, {5, 0}, p);
+    std::size_t n = 0;
+    for (const Move& m : t.moves)
+        if (m.kind == Move::Kind::Drill) {
+            EXPECT_DOUBLE_EQ(m.r, 1);
+            ++n;
+        }
+    EXPECT_EQ(n, 1u);
+}
+
+TEST(Drilling, BadInputIsAClearError) {
+    auto err = [](std::vector<Hole> h, DrillParameters p, Cutter c = {5, 0}) {
+        return inputErrorOf([&] { drilling(h, c, p); });
+    };
+    const std::vector<Hole> one{{{0, 0}, 5, 0, -8, false}};
+    EXPECT_NE(err({}, {}).find("no holes"), std::string::npos);
+    EXPECT_NE(err({{{0, 0}, 5, -8, 0, false}}, {}).find("below top"), std::string::npos);
+    EXPECT_NE(err({{{0, INFINITY}, 5, 0, -8, false}}, {}).find("finite"), std::string::npos);
+    EXPECT_NE(err(one, {}, {0, 0}).find("diameter"), std::string::npos);
+    DrillParameters p;
+    p.peck = -1;
+    EXPECT_NE(err(one, p).find("peck"), std::string::npos);
+    p = {}, p.peck = 1e-6;
+    EXPECT_NE(err(one, p).find("pecks"), std::string::npos);
+    p = {}, p.retractHeight = -1;
+    EXPECT_NE(err(one, p).find("retractHeight"), std::string::npos);
+    p = {}, p.dwell = NAN;
+    EXPECT_NE(err(one, p).find("dwell"), std::string::npos);
+}

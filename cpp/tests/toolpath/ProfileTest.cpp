@@ -1,0 +1,158 @@
+// Profiles: the cutter at R + allowance from the drive on the chosen side, in the climb
+// direction, with leads that stay off the material, at every level.
+#include "ErrorOf.h"
+#include "Checks.h"
+
+#include <aeronc/toolpath/Levels.h>
+#include <aeronc/toolpath/Profile.h>
+
+#include <gtest/gtest.h>
+
+using namespace aeronc::toolpath;
+using namespace aeronc::toolpath::test;
+using aeronc::test::inputErrorOf;
+
+namespace {
+
+// The feed moves at height h as one polyline per visit (broken at rapids and plunges).
+std::vector<std::vector<Point>> passesAt(const Toolpath& t, double h) {
+    std::vector<std::vector<Point>> out;
+    for (std::size_t i = 0; i < t.moves.size(); ++i) {
+        const Move& m = t.moves[i];
+        if (m.h != h || m.kind == Move::Kind::Rapid) continue;
+        if (m.kind == Move::Kind::Plunge || out.empty() || t.moves[i - 1].h != h) out.push_back({});
+        out.back().push_back({m.u, m.v});
+    }
+    return out;
+}
+
+double signedArea(const std::vector<Point>& l) {
+    double a = 0;
+    for (std::size_t i = 0; i + 1 < l.size(); ++i) a += l[i][0] * l[i + 1][1] - l[i + 1][0] * l[i][1];
+    return a / 2;
+}
+
+}  // namespace
+
+TEST(Profile, OutsideOfAClosedLoopIsCutCounterClockwiseAtTheOffset) {
+    const Loop drive = rectangle(0, 0, 60, 40);
+    ProfileParameters p;
+    p.radialAllowance = 0.2;
+    p.stepDown = 5;
+    const Toolpath t = profile({drive, true, {}, {}, 0, -12}, {10, 0}, p);
+    const auto levels = cuttingLevels(0, -12, 5);
+    for (double h : levels) {
+        const auto passes = passesAt(t, h);
+        ASSERT_EQ(passes.size(), 1u) << h;
+        const auto& pass = passes[0];
+        double nearest = 1e9, farthest = 0;
+        for (const Point& q : pass) {
+            EXPECT_FALSE(inside(drive, q));
+            nearest = std::min(nearest, loopDistance(drive, q));
+            farthest = std::max(farthest, loopDistance(drive, q));
+        }
+        EXPECT_NEAR(nearest, 5.2, 1e-4);
+        EXPECT_GT(farthest, 5.2 + 1);      // the leads go off the wall
+        EXPECT_GT(signedArea(pass), 0);    // climb outside: counter-clockwise
+        // Round the whole loop: the path passes every corner at the offset.
+        for (const Point& corner : drive) {
+            double d = 1e9;
+            for (const Point& q : pass) d = std::min(d, dist(q, corner));
+            EXPECT_NEAR(d, 5.2, 0.02);
+        }
+    }
+}
+
+TEST(Profile, InsideOfAClosedLoopIsCutClockwise) {
+    const Loop drive = roundedRectangle(0, 0, 50, 30, 6);
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    p.lead = Lead::Line;
+    const Toolpath t = profile({drive, true, {}, {}, 0, -4}, {10, 0}, p);
+    const auto passes = passesAt(t, -4);
+    ASSERT_EQ(passes.size(), 1u);
+    double nearest = 1e9;
+    for (std::size_t i = 1; i < passes[0].size(); ++i) {
+        EXPECT_TRUE(inside(drive, passes[0][i]));
+        nearest = std::min(nearest, loopSegmentDistance(drive, passes[0][i - 1], passes[0][i]));
+    }
+    EXPECT_NEAR(nearest, 5, 0.011);
+    EXPECT_LT(signedArea(passes[0]), 0);
+}
+
+TEST(Profile, ClockwiseDriveGetsItsLeadsToo) {
+    Loop drive = roundedRectangle(0, 0, 50, 30, 6);
+    std::reverse(drive.begin(), drive.end());
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    const Toolpath t = profile({drive, true, {}, {}, 0, -2}, {10, 0}, p);
+    const auto passes = passesAt(t, -2);
+    ASSERT_EQ(passes.size(), 1u);
+    double farthest = 0;
+    for (const Point& q : passes[0]) {
+        EXPECT_TRUE(inside(drive, q));
+        EXPECT_GE(loopDistance(drive, q), 5 - 0.011);
+        farthest = std::max(farthest, loopDistance(drive, q));
+    }
+    EXPECT_GT(farthest, 5 + 2);  // the arcs lead in from and out to the middle
+    EXPECT_LT(signedArea(passes[0]), 0);
+}
+
+TEST(Profile, LeftAndRightOfAClosedLoopFollowItsOrientation) {
+    const Loop ccw = rectangle(0, 0, 30, 30);
+    ProfileParameters p;
+    p.side = ToolSide::Left;  // inside a counter-clockwise loop
+    const Toolpath t = profile({ccw, true, {}, {}, 0, -1}, {6, 0}, p);
+    for (const auto& pass : passesAt(t, -1))
+        for (const Point& q : pass) EXPECT_TRUE(inside(ccw, q));
+}
+
+TEST(Profile, OpenPolylineIsFollowedOnItsSideWithinTheLimits) {
+    // A wall along v = 0 from u = 0 to 100 with a bend; the material to remove above it.
+    const Loop drive{{0, 0}, {60, 0}, {100, 20}};
+    ProfileParameters p;
+    p.side = ToolSide::Left;
+    const Toolpath t = profile({drive, false, Point{10, -3}, Point{80, 5}, 0, -3}, {8, 0}, p);
+    const auto passes = passesAt(t, -3);
+    ASSERT_EQ(passes.size(), 1u);
+    const auto& pass = passes[0];
+    // Climb with the cutter on the left of the drive: travel against the drive's direction.
+    EXPECT_GT(pass.front()[0], pass.back()[0]);
+    for (const Point& q : pass) {
+        double d = 1e9;
+        for (std::size_t i = 0; i + 1 < drive.size(); ++i) d = std::min(d, pointSegment(q, drive[i], drive[i + 1]));
+        EXPECT_GE(d, 4 - 0.1);
+    }
+    // The offset path itself (leads aside) runs from above the end limit to above the start limit.
+    double minU = 1e9, maxU = -1e9;
+    for (const Point& q : pass)
+        if (q[1] > 3.9) minU = std::min(minU, q[0]), maxU = std::max(maxU, q[0]);
+    EXPECT_LT(minU, 10 + 1e-6);
+    EXPECT_GT(maxU, 60);
+}
+
+TEST(Profile, BadInputIsAClearError) {
+    auto err = [&](ProfileUnit u, ProfileParameters q = {}) { return inputErrorOf([&] { profile(u, {10, 0}, q); }); };
+    ProfileParameters left;
+    left.side = ToolSide::Left;
+    EXPECT_NE(err({{{0, 0}}, false, {}, {}, 0, -5}, left).find("2 distinct"), std::string::npos);
+    EXPECT_NE(err({{{0, 0}, {10, 0}, {10, 10}, {5, -5}}, false, {}, {}, 0, -5}, left).find("crosses"), std::string::npos);
+    EXPECT_NE(err({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}, true, {}, {}, 0, -5}).find("crosses"), std::string::npos);
+    EXPECT_NE(err({rectangle(0, 0, 8, 8), true, {}, {}, 0, -5}, [] {
+                  ProfileParameters q;
+                  q.side = ToolSide::Inside;
+                  return q;
+              }()).find("does not fit"),
+              std::string::npos);
+    EXPECT_NE(err({{{0, 0}, {10, 0}}, false, {}, {}, 0, -5}).find("left or right"), std::string::npos);
+    EXPECT_NE(err({{{0, 0}, {10, 0}}, false, Point{8, 0}, Point{2, 0}, 0, -5}, [] {
+                  ProfileParameters q;
+                  q.side = ToolSide::Right;
+                  return q;
+              }()).find("before the end limit"),
+              std::string::npos);
+    EXPECT_NE(err({rectangle(0, 0, 40, 40), true, {}, {}, -5, 0}).find("below top"), std::string::npos);
+    ProfileParameters q;
+    q.leadRadius = -1;
+    EXPECT_NE(err({rectangle(0, 0, 40, 40), true, {}, {}, 0, -5}, q).find("leadRadius"), std::string::npos);
+}

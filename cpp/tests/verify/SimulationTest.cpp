@@ -1,0 +1,263 @@
+// Simulating programs against a pocketed plate whose truth is known: a correct pocketing path,
+// the same path too low or too close to a wall, allowances, rapids through material, the -Z
+// tool axis, the cutter shapes and drill cycles.
+#include <aeronc/verify/Simulation.h>
+
+#include "Fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace aeronc::verify;
+using namespace aeronc::verify::test;
+
+namespace {
+
+const PocketSpec kPocket{10, 10, 50, 30, 4, 8};  // 40 x 20, corners r 4, floor at 8 in a 20 mm plate
+const double kR = 3;                              // the end mill's radius
+const double kSafe = 25;
+
+Operation pocketing(const std::string& label, const std::vector<Move>& moves, double radial = 0, double axial = 0) {
+    Operation op;
+    op.label = label;
+    op.cutter = Cutter::fromDiameter(2 * kR, 0);
+    op.radialAllowance = radial, op.axialAllowance = axial;
+    op.moves = moves;
+    return op;
+}
+
+Program programFor(const Plate& plate, std::vector<Operation> ops) {
+    Program p;
+    p.cellSize = 0.5;
+    p.hasBlank = true;
+    p.blank = {0, 0, 0, 60, 40, 20};
+    p.operations = std::move(ops);
+    const PocketFaces& f = plate.pockets[0];
+    p.finishedFaces = {f.floor};
+    p.finishedFaces.insert(p.finishedFaces.end(), f.walls.begin(), f.walls.end());
+    p.elements = {{"pocket", p.finishedFaces}};
+    return p;
+}
+
+std::size_t cuttingMoves(const std::vector<Move>& moves) {
+    std::size_t n = 0;
+    for (const auto& m : moves) n += m.kind != MoveKind::Rapid;
+    return n;
+}
+
+const FaceCoverage& faceOf(const SimulationReport& r, int face) {
+    for (const auto& f : r.coverage.faces)
+        if (f.face == face) return f;
+    throw std::runtime_error("face not reported");
+}
+
+}  // namespace
+
+TEST(Simulation, CorrectPocketingLeavesNoGougeAndNothingOnTheFaces) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const auto path = pocketPath(kPocket, kR, 2.4, 8, kSafe);
+    const SimulationReport r = simulate(plate.mesh, programFor(plate, {pocketing("pocket", path)}));
+
+    EXPECT_EQ(r.gouges.moves, 0u);
+    EXPECT_FALSE(r.gouges.worst.has_value());
+    EXPECT_EQ(r.collisions.moves, 0u);
+    EXPECT_EQ(r.inconsistentColumns, 0u);
+    // Down to the cell the stock left is the part.
+    EXPECT_NEAR(r.finalStockVolume, r.partVolume, 1e-6);
+    const double floorArea = 40 * 20 - (4 - M_PI) * 16;
+    EXPECT_NEAR(r.operations[0].removedVolume, floorArea * 12, 0.01 * floorArea * 12);
+    EXPECT_NEAR(r.blankVolume - r.operations[0].removedVolume, r.finalStockVolume, 1e-6);
+
+    const FaceCoverage& floor = faceOf(r, plate.pockets[0].floor);
+    EXPECT_NEAR(floor.floorArea, floorArea, 0.01 * floorArea);
+    EXPECT_DOUBLE_EQ(floor.uncoveredArea, 0);
+    EXPECT_LT(floor.maxLeftover, 1e-9);
+    double wallArea = 0;
+    for (int w : plate.pockets[0].walls) {
+        const FaceCoverage& f = faceOf(r, w);
+        EXPECT_GT(f.wallArea, 0) << w;
+        EXPECT_DOUBLE_EQ(f.uncoveredArea, 0) << w;
+        EXPECT_DOUBLE_EQ(f.maxLeftover, 0) << w;
+        wallArea += f.wallArea;
+    }
+    const double perimeter = 2 * (32 + 12) + 2 * M_PI * 4;
+    EXPECT_NEAR(wallArea, perimeter * 12, 0.01 * perimeter * 12);
+    ASSERT_EQ(r.coverage.elements.size(), 1u);
+    EXPECT_NEAR(r.coverage.elements[0].area, floor.floorArea + wallArea, 1e-6);
+    EXPECT_DOUBLE_EQ(r.coverage.elements[0].uncoveredArea, 0);
+}
+
+TEST(Simulation, PathTooLowGougesTheFloorByThatMuch) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const auto path = pocketPath(kPocket, kR, 2.4, 8 - 0.1, kSafe);
+    const SimulationReport r = simulate(plate.mesh, programFor(plate, {pocketing("pocket", path)}));
+
+    ASSERT_TRUE(r.gouges.worst.has_value());
+    EXPECT_NEAR(r.gouges.worst->depth, 0.1, 1e-9);
+    EXPECT_FALSE(r.gouges.worst->wall);
+    EXPECT_EQ(r.gouges.worst->face, plate.pockets[0].floor);
+    EXPECT_EQ(r.gouges.worst->label, "pocket");
+    EXPECT_NEAR(r.gouges.worst->position[2], 8, 1e-12);
+    EXPECT_EQ(r.gouges.moves, cuttingMoves(path));  // every move at the floor
+    EXPECT_EQ(r.operations[0].gougingMoves, cuttingMoves(path));
+    EXPECT_EQ(r.collisions.moves, 0u);
+    // The leftover map shows the floor 0.1 below where it belongs.
+    const Grid& g = r.leftover.grid;
+    EXPECT_NEAR(r.leftover.top[g.index(60, 40)], -0.1, 1e-6);
+    EXPECT_NEAR(r.leftover.top[g.index(5, 5)], 0, 1e-6);
+}
+
+TEST(Simulation, ToolTooCloseToAWallGougesItSideways) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    // Along the right wall (x = 50) with the tool's side 0.4 beyond it.
+    const double x = 50 - kR + 0.4;
+    const std::vector<Move> path = {move(MoveKind::Rapid, x, 16, kSafe), move(MoveKind::Plunge, x, 16, 8),
+                                    move(MoveKind::Feed, x, 24, 8), move(MoveKind::Rapid, x, 24, kSafe)};
+    const SimulationReport r = simulate(plate.mesh, programFor(plate, {pocketing("wall", path)}));
+
+    ASSERT_TRUE(r.gouges.worst.has_value());
+    EXPECT_TRUE(r.gouges.worst->wall);
+    // Seen at cell centres: the depth is found to within half a cell.
+    EXPECT_LE(r.gouges.worst->depth, 0.4 + 1e-9);
+    EXPECT_GE(r.gouges.worst->depth, 0.4 - 0.25 - 1e-9);
+    EXPECT_EQ(r.gouges.worst->face, plate.pockets[0].walls[2]);  // the right wall
+    EXPECT_EQ(r.gouges.moves, 2u);
+    EXPECT_EQ(r.collisions.moves, 0u);  // the retract rises through what the feed cut
+}
+
+TEST(Simulation, AllowancesAreMaterialLeftNotGouges) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const double ar = 0.5, aa = 0.3;
+    const PocketSpec inner{kPocket.x0 + ar, kPocket.y0 + ar, kPocket.x1 - ar, kPocket.y1 - ar, kPocket.cornerRadius - ar,
+                           kPocket.floorZ};
+    const auto path = pocketPath(inner, kR, 2.4, 8 + aa, kSafe);
+
+    const SimulationReport rough = simulate(plate.mesh, programFor(plate, {pocketing("rough", path, ar, aa)}));
+    EXPECT_EQ(rough.gouges.moves, 0u);
+    const FaceCoverage& floor = faceOf(rough, plate.pockets[0].floor);
+    EXPECT_NEAR(floor.uncoveredArea, floor.floorArea, 1e-9);  // 0.3 left everywhere, above 0.2
+    const FaceCoverage& right = faceOf(rough, plate.pockets[0].walls[2]);
+    EXPECT_NEAR(right.uncoveredArea, right.wallArea, 1e-9);
+    EXPECT_GE(right.maxLeftover, ar - 0.25);
+    EXPECT_LE(right.maxLeftover, ar + 0.25 + 1e-9);
+
+    // Declared allowances larger than the material the path leaves are gouges.
+    const SimulationReport axial = simulate(plate.mesh, programFor(plate, {pocketing("rough", path, ar, 0.5)}));
+    ASSERT_TRUE(axial.gouges.worst.has_value());
+    EXPECT_NEAR(axial.gouges.worst->depth, 0.2, 1e-9);
+    EXPECT_FALSE(axial.gouges.worst->wall);
+    const SimulationReport radial = simulate(plate.mesh, programFor(plate, {pocketing("rough", path, 1.0, aa)}));
+    ASSERT_TRUE(radial.gouges.worst.has_value());
+    EXPECT_TRUE(radial.gouges.worst->wall);
+    EXPECT_LE(radial.gouges.worst->depth, 0.5 + 1e-9);
+    EXPECT_GE(radial.gouges.worst->depth, 0.5 - 0.25 - 1e-9);
+}
+
+TEST(Simulation, RapidThroughMaterialCollides) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const auto path = pocketPath(kPocket, kR, 2.4, 8, kSafe);
+    // Over the top at a safe height, then down into the plate's border without cutting.
+    const std::vector<Move> moves = {move(MoveKind::Rapid, 2, 20, kSafe), move(MoveKind::Rapid, 58, 20, kSafe),
+                                     move(MoveKind::Rapid, 58, 20, 15)};
+    const SimulationReport r =
+        simulate(plate.mesh, programFor(plate, {pocketing("pocket", path), pocketing("crash", moves)}));
+    EXPECT_EQ(r.gouges.moves, 0u);
+    EXPECT_EQ(r.collisions.moves, 1u);
+    ASSERT_TRUE(r.collisions.worst.has_value());
+    EXPECT_EQ(r.collisions.worst->label, "crash");
+    EXPECT_EQ(r.collisions.worst->operation, 1);
+    EXPECT_EQ(r.collisions.worst->move, 2);
+    // 5 mm down into the plate; sideways, the nearest cell centre is 0.25 * sqrt(2) from the axis.
+    EXPECT_NEAR(r.collisions.worst->depth, kR - 0.25 * std::sqrt(2.0), 1e-9);
+    EXPECT_EQ(r.operations[1].collidingMoves, 1u);
+    EXPECT_EQ(r.operations[0].collidingMoves, 0u);
+}
+
+TEST(Simulation, MinusZToolAxisMachinesFromBelow) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const TriangleMesh flipped = mirroredInZ(plate.mesh, 20);
+    for (double offset : {0.0, -0.1}) {
+        auto path = pocketPath(kPocket, kR, 2.4, 8 + offset, kSafe);
+        const SimulationReport up = simulate(plate.mesh, programFor(plate, {pocketing("pocket", path)}));
+        for (auto& m : path) m.z = 20 - m.z;
+        Operation below = pocketing("pocket", path);
+        below.axis = -1;
+        const SimulationReport down = simulate(flipped, programFor(plate, {below}));
+        EXPECT_EQ(down.gouges.moves, up.gouges.moves) << offset;
+        EXPECT_EQ(down.collisions.moves, 0u) << offset;
+        if (offset < 0) {
+            ASSERT_TRUE(down.gouges.worst.has_value());
+            EXPECT_NEAR(down.gouges.worst->depth, 0.1, 1e-9);
+            EXPECT_NEAR(down.gouges.worst->position[2], 12, 1e-12);  // the floor, looking down
+            EXPECT_EQ(down.gouges.worst->face, plate.pockets[0].floor);
+        }
+        EXPECT_NEAR(down.finalStockVolume, up.finalStockVolume, 1e-6) << offset;
+        ASSERT_EQ(down.coverage.faces.size(), up.coverage.faces.size());
+        for (std::size_t k = 0; k < up.coverage.faces.size(); ++k) {
+            EXPECT_NEAR(down.coverage.faces[k].uncoveredArea, up.coverage.faces[k].uncoveredArea, 1e-9);
+            EXPECT_NEAR(down.coverage.faces[k].maxLeftover, up.coverage.faces[k].maxLeftover, 1e-9);
+        }
+    }
+}
+
+TEST(Simulation, CuttersLeaveTheirOwnShape) {
+    // A bare 10 mm slab under a 20 mm blank: what the cutters leave is the stock above 10.
+    const Plate slab = makePlate(60, 40, 10, {});
+    for (double corner : {0.0, 1.0, 3.0}) {
+        const Cutter c = Cutter::fromDiameter(6, corner);
+        Operation op;
+        op.label = "shape";
+        op.cutter = c;
+        op.moves = {move(MoveKind::Rapid, 10.1, 20.1, 25), move(MoveKind::Plunge, 10.1, 20.1, 15),
+                    move(MoveKind::Rapid, 10.1, 20.1, 25), move(MoveKind::Rapid, 30, 20.1, 25),
+                    move(MoveKind::Plunge, 30, 20.1, 16), move(MoveKind::Feed, 45, 20.1, 16),
+                    move(MoveKind::Rapid, 45, 20.1, 25)};
+        Program p;
+        p.hasBlank = true;
+        p.blank = {0, 0, 0, 60, 40, 20};
+        p.operations = {op};
+        const SimulationReport r = simulate(slab.mesh, p);
+        EXPECT_EQ(r.gouges.moves, 0u);
+        EXPECT_EQ(r.collisions.moves, 0u);
+        const Grid& g = r.leftover.grid;
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const double x = g.centreX(i), y = g.centreY(j);
+                double top = 20;
+                const double dPlunge = std::hypot(x - 10.1, y - 20.1);
+                if (dPlunge <= 3) top = std::min(top, 15 + c.height(dPlunge));
+                const double along = std::clamp(x, 30.0, 45.0);
+                const double dLine = std::hypot(x - along, y - 20.1);
+                if (dLine <= 3) top = std::min(top, 16 + c.height(dLine));
+                ASSERT_NEAR(r.leftover.top[g.index(i, j)], top - 10, 1e-5) << corner << " " << x << " " << y;
+            }
+    }
+}
+
+TEST(Simulation, DrillCycleCutsTheHoleAndRetracts) {
+    const Plate slab = makePlate(60, 40, 10, {});
+    Operation op;
+    op.label = "drill";
+    op.cutter = Cutter::fromDiameter(6, 0);
+    Move a;
+    a.kind = MoveKind::DrillCycle, a.x = 20, a.y = 20, a.z = 12, a.retract = 22, a.peck = 2;
+    Move b = a;
+    b.x = 40;
+    op.moves = {a, b};
+    Program p;
+    p.hasBlank = true;
+    p.blank = {0, 0, 0, 60, 40, 20};
+    p.operations = {op};
+    const SimulationReport r = simulate(slab.mesh, p);
+    EXPECT_EQ(r.operations[0].segments, 3u + 4u);  // the first cycle starts at its R plane
+    EXPECT_EQ(r.collisions.moves, 0u);
+    EXPECT_EQ(r.gouges.moves, 0u);
+    std::size_t cells = 0;
+    const Grid& g = r.grid;
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i)
+            for (double hx : {20.0, 40.0}) cells += std::hypot(g.centreX(i) - hx, g.centreY(j) - 20) <= 3;
+    EXPECT_NEAR(r.operations[0].removedVolume, cells * g.cellArea() * 8, 1e-6);
+    EXPECT_NEAR(r.operations[0].removedVolume, 2 * M_PI * 9 * 8, 0.05 * 2 * M_PI * 9 * 8);
+}

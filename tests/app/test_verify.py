@@ -1,0 +1,98 @@
+"""Verification of a program against the part through aeronc._core.simulate, headless: a
+plate with a sharp-cornered pocket made by FreeCAD's Part, machined by a flat end mill. The
+report names the faces by FreeCAD's FaceN, the corners the tool cannot reach stay uncovered,
+a path 0.1 mm too low gouges the floor, and bad input gets a clear VerifyError."""
+import json
+import math
+import unittest
+
+import FreeCAD
+import Part
+
+from aeronc import _core
+
+R = 3.0  # the end mill's radius
+
+
+def _plate():
+    box = Part.makeBox(60, 40, 20)
+    return box.cut(Part.makeBox(40, 20, 12, FreeCAD.Vector(10, 10, 8)))
+
+
+def _pocket_moves(z):
+    """Zig-zag over the tool-centre rectangle [13, 47] x [13, 27], then once round it."""
+    moves = [[0, 13, 13, 25], [2, 13, 13, z]]
+    y, forward = 13.0, True
+    while y <= 27 + 1e-9:
+        a, b = (13, 47) if forward else (47, 13)
+        moves += [[1, a, y, z], [1, b, y, z]]
+        y, forward = y + 2, not forward
+    moves += [[1, 13, 13, z], [1, 47, 13, z], [1, 47, 27, z], [1, 13, 27, z], [1, 13, 13, z], [0, 13, 13, 25]]
+    return moves
+
+
+class VerifyTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.part = _plate()
+        cls.brep = cls.part.exportBrepToString()
+        cls.floor = cls.walls = None
+        cls.walls = []
+        for n, f in enumerate(cls.part.Faces, start=1):
+            b = f.BoundBox
+            inside = b.XMin > 9.99 and b.XMax < 50.01 and b.YMin > 9.99 and b.YMax < 30.01
+            if inside and abs(b.ZMax - 8) < 1e-9:
+                cls.floor = n
+            elif inside and b.ZMin > 7.99 and b.ZMax > 19.99:
+                cls.walls.append(n)
+
+    def simulate(self, z, cell=0.25):
+        ops = {"cellSize": cell, "blank": [0, 0, 0, 60, 40, 20],
+               "ops": [{"label": "pocket", "axis": [0, 0, 1], "cutter": {"diameter": 2 * R, "cornerRadius": 0},
+                        "moves": _pocket_moves(z)}],
+               "finishedFaces": [self.floor] + self.walls,
+               "elements": {"pocket": [self.floor] + self.walls}}
+        return json.loads(_core.simulate(self.brep, json.dumps(ops), json.dumps({"leftoverMap": False})))
+
+    def test_faces_found(self):
+        self.assertIsNotNone(self.floor)
+        self.assertEqual(len(self.walls), 4)
+
+    def test_pocketing_leaves_only_the_corners(self):
+        r = self.simulate(8, cell=0.1)
+        self.assertEqual(r["gouges"]["count"], 0)
+        self.assertEqual(r["collisions"]["count"], 0)
+        floor = next(f for f in r["coverage"]["faces"] if f["face"] == self.floor)
+        self.assertAlmostEqual(floor["floorArea"], 800, delta=8)
+        self.assertAlmostEqual(floor["maxLeftover"], 12, places=6)
+        # A flat end mill leaves R^2 (1 - pi/4) in each sharp corner.
+        corners = 4 * R * R * (1 - math.pi / 4)
+        self.assertAlmostEqual(floor["uncoveredArea"], corners, delta=0.25 * corners)
+        pocket = r["coverage"]["elements"][0]
+        self.assertEqual(pocket["id"], "pocket")
+        self.assertGreater(pocket["uncoveredArea"], floor["uncoveredArea"])  # the walls at the corners
+        self.assertIsNone(r["leftover"])
+
+    def test_too_low_gouges_the_floor(self):
+        r = self.simulate(7.9)
+        worst = r["gouges"]["worst"]
+        self.assertAlmostEqual(worst["depth"], 0.1, places=6)
+        self.assertEqual(worst["kind"], "floor")
+        self.assertEqual(worst["face"], self.floor)
+        self.assertEqual(worst["op"], "pocket")
+
+    def test_bad_input_is_named(self):
+        with self.assertRaisesRegex(_core.VerifyError, "ops"):
+            _core.simulate(self.brep, json.dumps({"cellSize": 0.5}), "")
+        with self.assertRaisesRegex(_core.VerifyError, "not valid JSON"):
+            _core.simulate(self.brep, "{", "")
+        with self.assertRaisesRegex(_core.VerifyError, "deflection"):
+            _core.simulate(self.brep, json.dumps({"ops": []}), json.dumps({"deflection": -1}))
+        with self.assertRaisesRegex(_core.VerifyError, "floorTolerence"):
+            _core.simulate(self.brep, json.dumps({"ops": []}), json.dumps({"floorTolerence": 0.1}))
+        with self.assertRaises(RuntimeError):
+            _core.simulate("not a shape", json.dumps({"ops": []}), "")
+
+
+if __name__ == "__main__":
+    unittest.main()
