@@ -226,3 +226,21 @@ TEST(NcWordRange, ASpeedOrFeedARoundingErrorAboveTheMachineLimitPostsAtTheLimit)
         EXPECT_NE(e.find("operation 'Op', move 2: feed 30030 mm/min exceeds the machine's maximum feed 30000 mm/min"), std::string::npos) << e;
     }
 }
+
+TEST(NcWordRange, AnArcOfAbsurdRadiusIsRefusedNamingTheLine) {
+    // Found by fuzzing: an arc whose centre is 1e110 mm away, in a 5-axis segment the 840D
+    // post linearises, made the chord count infinite, converted to int (undefined; in a
+    // release build one chord, a straight move for a full circle).
+    const std::string text = "LOADTL/3\nSPINDL/8000,CLW\nRAPID\nGOTO/0,0,50,0,0,1\nFEDRAT/600\nGOTO/0,0,-2\n"
+                             "GOTO/20,0,-2\nCIRCLE/20,1e110,-2,0,0,1,10\nGOTO/20,20,-2\n"
+                             "GOTO/10,20,-2,0.2588190451,0,0.9659258263\nFINI\n";
+    std::string e = inputErrorOf([&] { postAptText(text, Dialect::Sinumerik840D); });
+    EXPECT_NE(e.find("APT line 9"), std::string::npos) << e;
+    EXPECT_NE(e.find("the arc (radius 1e+110 mm"), std::string::npos) << e;
+    e = inputErrorOf([&] { postAptText(text, Dialect::LinuxCnc); });
+    EXPECT_NE(e.find("APT line 9"), std::string::npos) << e;
+    // The same arc with its centre 10 mm away posts.
+    std::string sane = text;
+    sane.replace(sane.find("1e110"), 5, "10");
+    for (const Dialect d : kDialects) EXPECT_NO_THROW(postAptText(sane, d));
+}
