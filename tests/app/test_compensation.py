@@ -12,6 +12,8 @@ import unittest
 import FreeCAD
 import Part
 
+import aeronc
+
 from aeronc import _core, compensation, hole_geometry, pathcompat, wing_skin
 from aeronc.objects import compensated_drilling as cd
 from aeronc.objects import measured_hole_set as mhs
@@ -513,6 +515,45 @@ class CompensationTest(unittest.TestCase):
         ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
         self.assertIs(op.MeasuredHoleSet, ms)  # the new measurements are linked and used
         self.assertNotEqual(op.MethodUsed, "none")
+
+    # -- datum holes from the features tree ---------------------------------------------------------
+    def test_datum_holes_from_the_hole_elements_of_the_features_tree(self):
+        # The sample panel's holes: plain, counterbored and countersunk; an element's face lists
+        # are sorted by number, so their first face is not always the drilled wall.
+        from aeronc import makers
+        doc = new_document("TreeHoles")
+        try:
+            part = doc.addObject("Part::Feature", "Panel")
+            part.Shape = Part.read(os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step"))
+            doc.recompute()
+            group = makers.create_machining_features(doc, part)
+            elements = [o for o in doc.Objects if getattr(o, "ElementType", None) == "hole"]
+            self.assertGreaterEqual(len(elements), 6)
+            kinds = {(e.CounterboreDiameter.Value > 0, e.CountersinkDiameter.Value > 0) for e in elements}
+            self.assertEqual(len(kinds), 3, "plain, counterbored and countersunk holes")
+            faces = []
+            for e in elements:
+                linked, name = hole_geometry.element_hole_face(e)
+                self.assertIs(linked, part)
+                h = hole_geometry.hole(part.Shape, name)
+                self.assertAlmostEqual(h["diameter"], e.HoleDiameter.Value, places=6, msg=e.Label)
+                axis = h["axis"]
+                off = h["entry"] - e.HoleLocation
+                self.assertLess((off - axis * off.dot(axis)).Length, 1e-6, e.Label)  # on the element's axis
+                faces.append(name)
+            with self.assertRaises(hole_geometry.HoleError):
+                hole_geometry.element_hole_face(next(o for o in doc.Objects if getattr(o, "ElementType", "") == "closed_pocket"))
+            # Three of them, a countersunk one among them, in the order picked, as the command
+            # defines them.
+            picks = [elements[0], next(e for e in elements if e.CountersinkDiameter.Value > 0), elements[-1]]
+            photo = phs.define_datum_holes(doc, part, [hole_geometry.element_hole_face(e)[1] for e in picks])
+            holes = phs.holes_of(photo)
+            self.assertEqual(len(holes), 3)
+            for h, e in zip(holes, picks):
+                self.assertAlmostEqual(h["diameter"], e.HoleDiameter.Value, places=6)
+            self.assertIsNotNone(group)
+        finally:
+            FreeCAD.closeDocument(doc.Name)
 
     # -- a real part ------------------------------------------------------------------------------
     @unittest.skipUnless(os.path.isfile(os.path.join(SHARED, "nist", "nist_ctc_04_asme1_ap203.stp")),
