@@ -325,6 +325,64 @@ class CompensationTest(unittest.TestCase):
             checked += 1
         self.assertEqual(checked, 48)
 
+    def test_rows_drawn_by_hand(self):
+        # Datum holes in the outer rows only; columns drawn across the rows carry the seed's
+        # interpolation to the middle row, which the rows found automatically leave without one.
+        s = self.skin({"rows": 3})
+        _, bending = _distortions(s.box())[3]
+        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(0, 2)))
+        self.assertTrue(any("no datum hole" in w for w in photo.SpacingWarnings), photo.SpacingWarnings)
+        face = {place: f for f, place in s.place.items()}
+        columns = [[face[(r, k)] for r in range(3)] for k in DATUM_PLACES]
+        undo = s.doc.UndoCount
+        for col in columns:
+            phs.draw_row(photo, col)
+        self.assertEqual(s.doc.UndoCount, undo + 3)
+        self.assertEqual([r.split() for r in photo.DrawnRows], columns)
+        self.assertEqual(phs.drawn_rows(photo), columns)
+        drawn_warnings = [w for w in photo.SpacingWarnings if w.startswith(("row 1 (", "row 2 (", "row 3 ("))]
+        self.assertEqual(drawn_warnings, [])
+        with self.assertRaises(hole_geometry.HoleError):
+            phs.draw_row(photo, [face[(1, 3)]])
+        with self.assertRaises(hole_geometry.HoleError):
+            phs.draw_row(photo, [face[(1, 3)], face[(1, 7)]])  # (1, 7) is in a drawn row
+        self.assertEqual(len(photo.DrawnRows), 3)
+
+        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, bending, decimals=9))
+        job = pathcompat.create_job(s.doc, [s.part])
+        s.doc.recompute()
+        op = cd.create_compensated_drilling(job, photo, ms)
+        mhs.set_method(ms, "seed")
+        dev = {i: d for i, d in zip(ms.HoleIds, ms.Deviations)}
+        datum = {s.place[f.split()[0]]: i for f, i in zip(photo.HoleFaces, photo.HoleIds)}
+        entry = {h["faces"][0]: h["entry"] for h in s.holes}
+
+        def middle_corrections():
+            out = {}
+            for faces, c in zip(op.HoleFaces, op.Corrections):
+                row, k = s.place[faces.split()[0]]
+                if row == 1 and k in DATUM_PLACES:
+                    out[k] = c
+            return out
+
+        got = middle_corrections()
+        self.assertEqual(sorted(got), sorted(DATUM_PLACES))
+        for k in DATUM_PLACES:
+            p0, p1, p2 = (entry[face[(r, k)]] for r in range(3))
+            Si = (p1 - p0).Length
+            S = Si + (p2 - p1).Length
+            expected = dev[datum[(0, k)]] * ((S - Si) / S) + dev[datum[(2, k)]] * (Si / S)
+            self.assertLess((got[k] - expected).Length, 1e-9, k)
+        # Without the drawn rows the middle row takes the nearest datum hole's deviation.
+        phs.clear_drawn_rows(photo)
+        s.doc.recompute()
+        self.assertEqual(len(photo.DrawnRows), 0)
+        self.assertGreater(max((middle_corrections()[k] - got[k]).Length for k in DATUM_PLACES), 1e-3)
+        s.doc.undo()
+        s.doc.recompute()
+        self.assertEqual(phs.drawn_rows(photo), columns)
+        self.assertLess(max((middle_corrections()[k] - got[k]).Length for k in DATUM_PLACES), 1e-9)
+
     # -- the drilling operation ---------------------------------------------------------------
     def test_compensated_drilling_posts_along_the_normals_and_leaves_out_datum_holes(self):
         s = self.skin()

@@ -3,7 +3,7 @@
     HOME=<temp home> QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a freecad tests/gui/test_datum_holes_gui.py
 
 Select holes of a generated wing skin in the 3-D view, right-click, Define as datum (photo)
-hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove in the set's panel and read the spacing checks; write the camera
+hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove in the set's panel, draw a row of holes by hand and read the spacing checks; write the camera
 program; import a measurement file (the deviations in a table and as arrows in the 3-D view);
 choose the method with the leave-one-out errors; make the compensated drilling. Screenshots go
 to env AERONC_ARTIFACTS (default /tmp). Prints "N passed, N failed"; exit 0 when all pass.
@@ -107,6 +107,24 @@ def run():
     pump()
     panel.refresh()
     check("undo puts it back", len(ps.HoleIds) == 9 and "no datum hole" not in panel.checks.text())
+    # A row drawn by hand across the rows, through holes without a datum hole.
+    Gui.Selection.clearSelection()
+    for r in range(3):
+        Gui.Selection.addSelection(part, place[(r, 3)])
+    undo = doc.UndoCount
+    panel.draw_row_button.click()
+    pump()
+    check("Draw row from selection: one drawn row, in the order selected (one undo step)",
+          [r.split() for r in ps.DrawnRows] == [[place[(r, 3)] for r in range(3)]] and doc.UndoCount == undo + 1,
+          (list(ps.DrawnRows), errors))
+    check("the spacing checks see the drawn row without a datum hole",
+          "1 drawn by hand" in panel.checks.text() and "row 1 (3 holes" in panel.checks.text() and
+          "no datum hole" in panel.checks.text(), panel.checks.text())
+    panel.clear_rows_button.click()
+    pump()
+    check("Clear drawn rows: the rows found automatically again", not ps.DrawnRows and
+          "every row of holes (3) a datum hole at both ends" in panel.checks.text(), panel.checks.text())
+    Gui.Selection.clearSelection()
     photo_hole_set_panel.ask_save_file = lambda *a: os.path.join(out, "camera.apt")
     panel.camera_button.click()
     pump()
