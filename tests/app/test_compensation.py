@@ -473,8 +473,12 @@ class CompensationTest(unittest.TestCase):
         s = self.skin()
         _, moved = _distortions(s.box())[3]
         photo, ms, job, op = self.loaded(s, moved)
+        face = {place: f for f, place in s.place.items()}
+        phs.draw_row(photo, [face[(0, 0)], face[(1, 0)], face[(2, 0)]])
+        s.doc.recompute()
         path = temp_fcstd("compensation")
         before = {"ids": list(photo.HoleIds), "measured": [tuple(v) for v in ms.Measured], "file": ms.FileText,
+                  "rows": list(photo.DrawnRows),
                   "path": op.Path.toGCode(), "method": op.MethodUsed, "warnings": list(photo.SpacingWarnings)}
         s.doc.saveAs(path)
         FreeCAD.closeDocument(s.doc.Name)
@@ -485,6 +489,7 @@ class CompensationTest(unittest.TestCase):
             ms2 = next(o for o in doc.Objects if mhs.is_measured_hole_set(o))
             op2 = next(o for o in doc.Objects if cd.is_compensated_drilling(o))
             self.assertEqual(list(photo2.HoleIds), before["ids"])
+            self.assertEqual(list(photo2.DrawnRows), before["rows"])
             self.assertEqual([tuple(v) for v in ms2.Measured], before["measured"])
             self.assertEqual(ms2.FileText, before["file"])
             self.assertIs(ms2.PhotoHoleSet, photo2)
