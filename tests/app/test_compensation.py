@@ -604,8 +604,9 @@ class CompensationTest(unittest.TestCase):
                 off = h["entry"] - e.HoleLocation
                 self.assertLess((off - axis * off.dot(axis)).Length, 1e-6, e.Label)  # on the element's axis
                 faces.append(name)
+            pocket = next(o for o in doc.Objects if getattr(o, "ElementType", "") == "closed_pocket")
             with self.assertRaises(hole_geometry.HoleError):
-                hole_geometry.element_hole_face(next(o for o in doc.Objects if getattr(o, "ElementType", "") == "closed_pocket"))
+                hole_geometry.element_hole_face(pocket)
             # Three of them, a countersunk one among them, in the order picked, as the command
             # defines them.
             picks = [elements[0], next(e for e in elements if e.CountersinkDiameter.Value > 0), elements[-1]]

@@ -3,7 +3,8 @@
     HOME=<temp home> QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a freecad tests/gui/test_datum_holes_gui.py
 
 Select holes of a generated wing skin in the 3-D view, right-click, Define as datum (photo)
-hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove in the set's panel, draw a row of holes by hand and read the spacing checks; write the camera
+hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove
+in the set's panel, draw a row of holes by hand and read the spacing checks; write the camera
 program; import a measurement file (the deviations in a table and as arrows in the 3-D view);
 choose the method with the leave-one-out errors; make the compensated drilling. Screenshots go
 to env AERONC_ARTIFACTS (default /tmp). Prints "N passed, N failed"; exit 0 when all pass.
