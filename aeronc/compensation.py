@@ -141,13 +141,16 @@ def _key(p):
 
 def assign_rows(photo_set, items, field):
     """Give every item (dicts with a position under `field`) the row and station of its hole in
-    the photo-hole set's pattern, so that the seed's method sees the part's rows whichever holes
-    are compensated. A hole that is not in the pattern gets a row of its own."""
+    the photo-hole set's pattern (drawn by hand or found), so that the seed's method sees the
+    part's rows whichever holes are compensated. A hole that is not in the pattern gets a row of
+    its own."""
     from aeronc import _core
     pattern = [(p.x, p.y, p.z) for p in photo_set.PatternPositions] if photo_set is not None else []
     if not pattern:
         return items
-    rows, stations, members = _core.find_rows(pattern)
+    from aeronc.objects import photo_hole_set
+    faces = [f.split()[0] for f in photo_set.PatternFaces]
+    rows, stations, members = photo_hole_set.pattern_rows(photo_set, pattern, faces)
     where = {_key(p): (r, s) for p, r, s in zip(pattern, rows, stations)}
     spare = len(members)
     for it in items:

@@ -254,3 +254,27 @@ def selected_hole_faces(shape, sub_names):
         if main not in out:
             out.append(main)
     return out
+
+
+def element_hole_face(element):
+    """(part, face name) of a hole element of a Machining Features tree: the cylindrical wall
+    of its drilled diameter (HoleDiameter), else its first hole wall. The element's face lists
+    are sorted by number, so their first face can be a floor, a chamfer or a counterbore;
+    raises HoleError when the element has no hole wall."""
+    if getattr(element, "ElementType", None) != "hole":
+        raise HoleError("{} is not a hole element".format(getattr(element, "Label", element)))
+    diameter = float(getattr(element, "HoleDiameter", 0.0))
+    walls = []
+    for prop in ("WallFaces", "Faces"):
+        for part, names in getattr(element, prop, None) or []:
+            shape = part.Shape
+            for n in names:
+                f = shape.getElement(n) if n.startswith("Face") else None
+                if f is not None and _is_cylinder(f) and _is_concave(f) and (part, n) not in walls:
+                    walls.append((part, n))
+    if not walls:
+        raise HoleError("hole element {} has no cylindrical hole wall".format(element.Label))
+    for part, n in walls:
+        if abs(2.0 * part.Shape.getElement(n).Surface.Radius - diameter) <= 1e-3:
+            return part, n
+    return walls[0]

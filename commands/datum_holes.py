@@ -18,16 +18,29 @@ def selected_holes():
     else None."""
     from aeronc import hole_geometry
     part, subs = None, []
-    for s in FreeCADGui.Selection.getSelectionEx():
+    selection = FreeCADGui.Selection.getSelectionEx()
+    # Picking an element in the tree also selects its faces on the part (face_highlight): those
+    # faces (a countersink's cone, a counterbore's floor) stand for the element, not for holes.
+    mirrored = set()
+    for s in selection:
+        if getattr(s.Object, "ElementType", None) == "hole":
+            for linked, names in getattr(s.Object, "Faces", None) or []:
+                mirrored.update((linked.Name, n) for n in names)
+    for s in selection:
         obj = s.Object
-        if getattr(obj, "ElementType", None) == "hole" and getattr(obj, "Faces", None):
-            for linked, names in obj.Faces:
-                if part not in (None, linked):
-                    return None
-                part = linked
-                subs += [n for n in names if n.startswith("Face")][:1]
+        if getattr(obj, "ElementType", None) == "hole":
+            try:
+                linked, name = hole_geometry.element_hole_face(obj)
+            except hole_geometry.HoleError:
+                return None
+            if part not in (None, linked):
+                return None
+            part = linked
+            subs.append(name)
             continue
-        names = list(s.SubElementNames)
+        names = [n for n in s.SubElementNames if (obj.Name, n) not in mirrored]
+        if mirrored and not names and s.SubElementNames:
+            continue
         if not names or not hasattr(obj, "Shape") or part not in (None, obj):
             return None
         part = obj

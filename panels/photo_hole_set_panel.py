@@ -74,6 +74,17 @@ class PhotoHoleSetPanel:
         for b in (self.up_button, self.down_button, self.remove_button, self.surface_button):
             row.addWidget(b)
         lay.addLayout(row)
+        row = QtGui.QHBoxLayout()
+        self.draw_row_button = QtGui.QPushButton("Draw row from selection")
+        self.draw_row_button.setToolTip("A row of holes through the holes selected in the 3-D view, in the order "
+                                        "selected; the seed's method and the spacing checks use it instead of "
+                                        "the rows found automatically")
+        self.clear_rows_button = QtGui.QPushButton("Clear drawn rows")
+        self.draw_row_button.clicked.connect(self.draw_row_from_selection)
+        self.clear_rows_button.clicked.connect(self.clear_drawn_rows)
+        row.addWidget(self.draw_row_button)
+        row.addWidget(self.clear_rows_button)
+        lay.addLayout(row)
         self.checks = QtGui.QLabel("")
         self.checks.setWordWrap(True)
         lay.addWidget(self.checks)
@@ -114,13 +125,16 @@ class PhotoHoleSetPanel:
                 self.table.setItem(r, c, QtGui.QTableWidgetItem(v))
         self.table.resizeColumnsToContents()
         warnings = list(o.SpacingWarnings)
+        drawn = len(phs.drawn_rows(o))
+        self.clear_rows_button.setEnabled(drawn > 0)
+        rows = "{}, {} drawn by hand".format(o.RowCount, drawn) if drawn else str(o.RowCount)
         if warnings:
             self.checks.setText("<b>Spacing checks</b> ({} rows of holes):<br>{}".format(
-                o.RowCount, "<br>".join("\u26a0 " + w for w in warnings)))
+                rows, "<br>".join("\u26a0 " + w for w in warnings)))
             self.checks.setStyleSheet("color: #b00020")
         else:
             self.checks.setText("Spacing checks: every part segment has at least two datum holes and every "
-                                "row of holes ({}) a datum hole at both ends.".format(o.RowCount))
+                                "row of holes ({}) a datum hole at both ends.".format(rows))
             self.checks.setStyleSheet("color: #1b5e20")
 
     def selected_ids(self):
@@ -180,6 +194,18 @@ class PhotoHoleSetPanel:
             if s.Object is self.obj.Source:
                 faces += [n for n in s.SubElementNames if n.startswith("Face")]
         return bool(self._run(lambda: phs.set_surface(self.obj, faces)))
+
+    def draw_row_from_selection(self):
+        from aeronc.objects import photo_hole_set as phs
+        subs = []
+        for s in FreeCADGui.Selection.getSelectionEx():
+            if s.Object is self.obj.Source:
+                subs += list(s.SubElementNames)
+        return bool(self._run(lambda: phs.draw_row(self.obj, subs)))
+
+    def clear_drawn_rows(self):
+        from aeronc.objects import photo_hole_set as phs
+        return bool(self._run(lambda: phs.clear_drawn_rows(self.obj)))
 
     def write_camera_program(self, path=None):
         """Write <name>.apt and <name>.mpf (840D for the set's machine); path: the APT file."""

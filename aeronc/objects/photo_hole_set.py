@@ -12,7 +12,7 @@ warning for every row of holes without a datum hole at one of its ends.
 import FreeCAD
 
 from aeronc import hole_geometry
-from aeronc.objects.base import BaseProxy, add_property, proxy_type
+from aeronc.objects.base import BaseProxy, add_property, declare_property, proxy_type
 from aeronc.objects.transaction import in_transaction
 
 TYPE = "AeroNC::PhotoHoleSet"
@@ -69,6 +69,12 @@ class PhotoHoleSet(BaseProxy):
         add_property(obj, "App::PropertyFloat", "Dwell", g, "Seconds at each datum hole for the picture", 0.5)
         add_property(obj, "App::PropertySpeed", "Feed", g, "Feed from the approach point to the camera position",
                      "3000 mm/min")
+        self.declare(obj)
+
+    def declare(self, obj):
+        declare_property(obj, "App::PropertyStringList", "DrawnRows", "Checks",
+                         "Rows of holes drawn by hand: the first face of each hole, in order along the row "
+                         "(space separated); the other holes' rows are found automatically", read_only=True)
 
     def execute(self, obj):
         holes = pattern_holes(obj)
@@ -320,7 +326,6 @@ def pattern_holes(obj):
 def spacing_checks(obj, holes=None):
     """(warnings, number of rows): at least two datum holes per part segment; a datum hole at
     both ends of every row of holes."""
-    from aeronc import _core
     part = obj.Source
     if part is None or not hasattr(part, "Shape"):
         return ["no source part"], 0
@@ -338,7 +343,8 @@ def spacing_checks(obj, holes=None):
                 s + 1, s + 1, part.Label, n, "" if n == 1 else "s"))
     if not holes:
         return warnings, 0
-    rows, _, members = _core.find_rows([(h["entry"].x, h["entry"].y, h["entry"].z) for h in holes])
+    _, _, members = pattern_rows(obj, [(h["entry"].x, h["entry"].y, h["entry"].z) for h in holes],
+                                 [h["faces"][0] for h in holes])
     for r, m in enumerate(members):
         if len(m) < 2:
             continue
@@ -352,3 +358,73 @@ def spacing_checks(obj, holes=None):
         if ends:
             warnings.append("{}: no datum hole at its {}".format(where, " and ".join(ends)))
     return warnings, len(members)
+
+
+def drawn_rows(obj):
+    """The rows drawn by hand: lists of hole face names (each hole's first face), in order."""
+    return [r.split() for r in getattr(obj, "DrawnRows", [])]
+
+
+def pattern_rows(obj, points, faces):
+    """(row per point, station per point, members per row) of the pattern holes at `points`
+    (part frame) whose first faces are `faces`: the rows drawn by hand first, each in its drawn
+    order with stations along it; the rows of the other holes found automatically."""
+    from aeronc import _core
+    index = {f: i for i, f in enumerate(faces)}
+    rows, stations, members = [None] * len(points), [0.0] * len(points), []
+    for drawn in drawn_rows(obj):
+        m = [index[f] for f in drawn if f in index]
+        if len(m) < 2:
+            continue  # a hole of the row is no longer in the pattern (MaxHoleDiameter changed)
+        s = 0.0
+        for k, i in enumerate(m):
+            if k:
+                s += sum((a - b) ** 2 for a, b in zip(points[i], points[m[k - 1]])) ** 0.5
+            rows[i], stations[i] = len(members), s
+        members.append(m)
+    rest = [i for i in range(len(points)) if rows[i] is None]
+    if rest:
+        r, st, mem = _core.find_rows([points[i] for i in rest])
+        offset = len(members)
+        for k, i in enumerate(rest):
+            rows[i], stations[i] = offset + r[k], st[k]
+        members += [[rest[k] for k in m] for m in mem]
+    return rows, stations, members
+
+
+def draw_row(obj, sub_names):
+    """A row of holes drawn by hand through the holes named by sub_names (faces or circular
+    edges of the part, in order along the row); one undo step. The seed's method and the
+    spacing checks then use it instead of the rows found automatically. Refuses fewer than two
+    holes, a hole that is not in the part's hole pattern and a hole already in a drawn row."""
+    part = obj.Source
+    faces = hole_geometry.selected_hole_faces(part.Shape, sub_names)
+    pattern = {f.split()[0]: f.split() for f in obj.PatternFaces}
+    first = []
+    for f in faces:
+        main = next((k for k, names in pattern.items() if f in names), None)
+        if main is None:
+            raise hole_geometry.HoleError("{} is not a hole of the pattern (holes up to {} mm)".format(
+                f, obj.MaxHoleDiameter.Value))
+        first.append(main)
+    if len(first) < 2:
+        raise hole_geometry.HoleError("a row needs at least two holes")
+    taken = {f: n + 1 for n, r in enumerate(drawn_rows(obj)) for f in r}
+    clash = [f for f in first if f in taken]
+    if clash:
+        raise hole_geometry.HoleError("{} is already in drawn row {}".format(clash[0], taken[clash[0]]))
+
+    def work():
+        obj.DrawnRows = list(obj.DrawnRows) + [" ".join(first)]
+        obj.Document.recompute([obj])
+
+    in_transaction(obj.Document, "Draw a row of holes", work)
+
+
+def clear_drawn_rows(obj):
+    """Forget the rows drawn by hand (all rows found automatically again); one undo step."""
+    def work():
+        obj.DrawnRows = []
+        obj.Document.recompute([obj])
+
+    in_transaction(obj.Document, "Clear the drawn rows", work)

@@ -151,6 +151,13 @@ TEST_F(KnowledgeBaseValuesTest, CuttingDataThresholdsAndMachinesAreChecked) {
     EXPECT_TRUE(has(e, "eta_min") && has(e, "value")) << e;
     e = inputErrorOf([&] { kb.machine("AC-5AX"); });
     EXPECT_TRUE(has(e, "AC-5AX") && has(e, "max_spindle_rpm")) << e;
+    // The lookups that may find nothing say so only when nothing is there.
+    e = inputErrorOf([&] { kb.findCuttingCondition("7050-T7451", "carbide", "roughing", 10.0); });
+    EXPECT_TRUE(has(e, "vc_m_min")) << e;
+    EXPECT_FALSE(kb.findCuttingCondition("7050-T7451", "carbide", "engraving", 10.0).has_value());
+    e = inputErrorOf([&] { kb.findThreshold("eta_min"); });
+    EXPECT_TRUE(has(e, "eta_min")) << e;
+    EXPECT_FALSE(kb.findThreshold("no_such_threshold").has_value());
     // The others still read.
     EXPECT_DOUBLE_EQ(kb.threshold("mu_merge"), 0.7);
 }

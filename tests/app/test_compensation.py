@@ -12,6 +12,8 @@ import unittest
 import FreeCAD
 import Part
 
+import aeronc
+
 from aeronc import _core, compensation, hole_geometry, pathcompat, wing_skin
 from aeronc.objects import compensated_drilling as cd
 from aeronc.objects import measured_hole_set as mhs
@@ -323,6 +325,64 @@ class CompensationTest(unittest.TestCase):
             checked += 1
         self.assertEqual(checked, 48)
 
+    def test_rows_drawn_by_hand(self):
+        # Datum holes in the outer rows only; columns drawn across the rows carry the seed's
+        # interpolation to the middle row, which the rows found automatically leave without one.
+        s = self.skin({"rows": 3})
+        _, bending = _distortions(s.box())[3]
+        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(0, 2)))
+        self.assertTrue(any("no datum hole" in w for w in photo.SpacingWarnings), photo.SpacingWarnings)
+        face = {place: f for f, place in s.place.items()}
+        columns = [[face[(r, k)] for r in range(3)] for k in DATUM_PLACES]
+        undo = s.doc.UndoCount
+        for col in columns:
+            phs.draw_row(photo, col)
+        self.assertEqual(s.doc.UndoCount, undo + 3)
+        self.assertEqual([r.split() for r in photo.DrawnRows], columns)
+        self.assertEqual(phs.drawn_rows(photo), columns)
+        drawn_warnings = [w for w in photo.SpacingWarnings if w.startswith(("row 1 (", "row 2 (", "row 3 ("))]
+        self.assertEqual(drawn_warnings, [])
+        with self.assertRaises(hole_geometry.HoleError):
+            phs.draw_row(photo, [face[(1, 3)]])
+        with self.assertRaises(hole_geometry.HoleError):
+            phs.draw_row(photo, [face[(1, 3)], face[(1, 7)]])  # (1, 7) is in a drawn row
+        self.assertEqual(len(photo.DrawnRows), 3)
+
+        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, bending, decimals=9))
+        job = pathcompat.create_job(s.doc, [s.part])
+        s.doc.recompute()
+        op = cd.create_compensated_drilling(job, photo, ms)
+        mhs.set_method(ms, "seed")
+        dev = {i: d for i, d in zip(ms.HoleIds, ms.Deviations)}
+        datum = {s.place[f.split()[0]]: i for f, i in zip(photo.HoleFaces, photo.HoleIds)}
+        entry = {h["faces"][0]: h["entry"] for h in s.holes}
+
+        def middle_corrections():
+            out = {}
+            for faces, c in zip(op.HoleFaces, op.Corrections):
+                row, k = s.place[faces.split()[0]]
+                if row == 1 and k in DATUM_PLACES:
+                    out[k] = c
+            return out
+
+        got = middle_corrections()
+        self.assertEqual(sorted(got), sorted(DATUM_PLACES))
+        for k in DATUM_PLACES:
+            p0, p1, p2 = (entry[face[(r, k)]] for r in range(3))
+            Si = (p1 - p0).Length
+            S = Si + (p2 - p1).Length
+            expected = dev[datum[(0, k)]] * ((S - Si) / S) + dev[datum[(2, k)]] * (Si / S)
+            self.assertLess((got[k] - expected).Length, 1e-9, k)
+        # Without the drawn rows the middle row takes the nearest datum hole's deviation.
+        phs.clear_drawn_rows(photo)
+        s.doc.recompute()
+        self.assertEqual(len(photo.DrawnRows), 0)
+        self.assertGreater(max((middle_corrections()[k] - got[k]).Length for k in DATUM_PLACES), 1e-3)
+        s.doc.undo()
+        s.doc.recompute()
+        self.assertEqual(phs.drawn_rows(photo), columns)
+        self.assertLess(max((middle_corrections()[k] - got[k]).Length for k in DATUM_PLACES), 1e-9)
+
     # -- the drilling operation ---------------------------------------------------------------
     def test_compensated_drilling_posts_along_the_normals_and_leaves_out_datum_holes(self):
         s = self.skin()
@@ -413,8 +473,12 @@ class CompensationTest(unittest.TestCase):
         s = self.skin()
         _, moved = _distortions(s.box())[3]
         photo, ms, job, op = self.loaded(s, moved)
+        face = {place: f for f, place in s.place.items()}
+        phs.draw_row(photo, [face[(0, 0)], face[(1, 0)], face[(2, 0)]])
+        s.doc.recompute()
         path = temp_fcstd("compensation")
         before = {"ids": list(photo.HoleIds), "measured": [tuple(v) for v in ms.Measured], "file": ms.FileText,
+                  "rows": list(photo.DrawnRows),
                   "path": op.Path.toGCode(), "method": op.MethodUsed, "warnings": list(photo.SpacingWarnings)}
         s.doc.saveAs(path)
         FreeCAD.closeDocument(s.doc.Name)
@@ -425,6 +489,7 @@ class CompensationTest(unittest.TestCase):
             ms2 = next(o for o in doc.Objects if mhs.is_measured_hole_set(o))
             op2 = next(o for o in doc.Objects if cd.is_compensated_drilling(o))
             self.assertEqual(list(photo2.HoleIds), before["ids"])
+            self.assertEqual(list(photo2.DrawnRows), before["rows"])
             self.assertEqual([tuple(v) for v in ms2.Measured], before["measured"])
             self.assertEqual(ms2.FileText, before["file"])
             self.assertIs(ms2.PhotoHoleSet, photo2)
@@ -513,6 +578,46 @@ class CompensationTest(unittest.TestCase):
         ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
         self.assertIs(op.MeasuredHoleSet, ms)  # the new measurements are linked and used
         self.assertNotEqual(op.MethodUsed, "none")
+
+    # -- datum holes from the features tree ---------------------------------------------------------
+    def test_datum_holes_from_the_hole_elements_of_the_features_tree(self):
+        # The sample panel's holes: plain, counterbored and countersunk; an element's face lists
+        # are sorted by number, so their first face is not always the drilled wall.
+        from aeronc import makers
+        doc = new_document("TreeHoles")
+        try:
+            part = doc.addObject("Part::Feature", "Panel")
+            part.Shape = Part.read(os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step"))
+            doc.recompute()
+            group = makers.create_machining_features(doc, part)
+            elements = [o for o in doc.Objects if getattr(o, "ElementType", None) == "hole"]
+            self.assertGreaterEqual(len(elements), 6)
+            kinds = {(e.CounterboreDiameter.Value > 0, e.CountersinkDiameter.Value > 0) for e in elements}
+            self.assertEqual(len(kinds), 3, "plain, counterbored and countersunk holes")
+            faces = []
+            for e in elements:
+                linked, name = hole_geometry.element_hole_face(e)
+                self.assertIs(linked, part)
+                h = hole_geometry.hole(part.Shape, name)
+                self.assertAlmostEqual(h["diameter"], e.HoleDiameter.Value, places=6, msg=e.Label)
+                axis = h["axis"]
+                off = h["entry"] - e.HoleLocation
+                self.assertLess((off - axis * off.dot(axis)).Length, 1e-6, e.Label)  # on the element's axis
+                faces.append(name)
+            pocket = next(o for o in doc.Objects if getattr(o, "ElementType", "") == "closed_pocket")
+            with self.assertRaises(hole_geometry.HoleError):
+                hole_geometry.element_hole_face(pocket)
+            # Three of them, a countersunk one among them, in the order picked, as the command
+            # defines them.
+            picks = [elements[0], next(e for e in elements if e.CountersinkDiameter.Value > 0), elements[-1]]
+            photo = phs.define_datum_holes(doc, part, [hole_geometry.element_hole_face(e)[1] for e in picks])
+            holes = phs.holes_of(photo)
+            self.assertEqual(len(holes), 3)
+            for h, e in zip(holes, picks):
+                self.assertAlmostEqual(h["diameter"], e.HoleDiameter.Value, places=6)
+            self.assertIsNotNone(group)
+        finally:
+            FreeCAD.closeDocument(doc.Name)
 
     # -- a real part ------------------------------------------------------------------------------
     @unittest.skipUnless(os.path.isfile(os.path.join(SHARED, "nist", "nist_ctc_04_asme1_ap203.stp")),

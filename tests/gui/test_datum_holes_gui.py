@@ -3,7 +3,8 @@
     HOME=<temp home> QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a freecad tests/gui/test_datum_holes_gui.py
 
 Select holes of a generated wing skin in the 3-D view, right-click, Define as datum (photo)
-hole; reorder and remove in the set's panel and read the spacing checks; write the camera
+hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove
+in the set's panel, draw a row of holes by hand and read the spacing checks; write the camera
 program; import a measurement file (the deviations in a table and as arrows in the 3-D view);
 choose the method with the leave-one-out errors; make the compensated drilling. Screenshots go
 to env AERONC_ARTIFACTS (default /tmp). Prints "N passed, N failed"; exit 0 when all pass.
@@ -107,6 +108,24 @@ def run():
     pump()
     panel.refresh()
     check("undo puts it back", len(ps.HoleIds) == 9 and "no datum hole" not in panel.checks.text())
+    # A row drawn by hand across the rows, through holes without a datum hole.
+    Gui.Selection.clearSelection()
+    for r in range(3):
+        Gui.Selection.addSelection(part, place[(r, 3)])
+    undo = doc.UndoCount
+    panel.draw_row_button.click()
+    pump()
+    check("Draw row from selection: one drawn row, in the order selected (one undo step)",
+          [r.split() for r in ps.DrawnRows] == [[place[(r, 3)] for r in range(3)]] and doc.UndoCount == undo + 1,
+          (list(ps.DrawnRows), errors))
+    check("the spacing checks see the drawn row without a datum hole",
+          "1 drawn by hand" in panel.checks.text() and "row 1 (3 holes" in panel.checks.text() and
+          "no datum hole" in panel.checks.text(), panel.checks.text())
+    panel.clear_rows_button.click()
+    pump()
+    check("Clear drawn rows: the rows found automatically again", not ps.DrawnRows and
+          "every row of holes (3) a datum hole at both ends" in panel.checks.text(), panel.checks.text())
+    Gui.Selection.clearSelection()
     photo_hole_set_panel.ask_save_file = lambda *a: os.path.join(out, "camera.apt")
     panel.camera_button.click()
     pump()
@@ -167,6 +186,51 @@ def run():
     check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
     pump()
     check("panel closed", not Gui.Control.activeDialog())
+    FreeCAD.closeDocument(doc.Name)
+    tree_nodes()
+
+
+def tree_nodes():
+    """Datum holes defined from hole elements picked in the Machining Features tree."""
+    import aeronc
+    import Part
+    from aeronc import hole_geometry, makers
+    from aeronc.objects import photo_hole_set
+    doc = FreeCAD.newDocument("TreeHoles")
+    part = doc.addObject("Part::Feature", "Panel")
+    part.Shape = Part.read(os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step"))
+    doc.recompute()
+    makers.create_machining_features(doc, part)
+    pump()
+    holes = [o for o in doc.Objects if getattr(o, "ElementType", None) == "hole"]
+    pocket = next(o for o in doc.Objects if getattr(o, "ElementType", None) == "closed_pocket")
+    cmd = Gui.Command.get("AeroNC_DefineDatumHoles")
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(holes[0])
+    Gui.Selection.addSelection(pocket)
+    pump()
+    check("tree: inactive with a pocket node among the holes", not cmd.isActive())
+    # A countersunk hole among them: its node's first face is the cone (the command once stayed
+    # inactive on it).
+    picks = [holes[0], next(e for e in holes if e.CountersinkDiameter.Value > 0), holes[-1]]
+    Gui.Selection.clearSelection()
+    for e in picks:
+        Gui.Selection.addSelection(e)
+    pump()
+    from aeronc.commands import datum_holes
+    check("tree: Define as datum hole active on hole nodes", cmd.isActive(),
+          (datum_holes.selected_holes(), Gui.Control.activeDialog(), Gui.ActiveDocument,
+           [(s.Object.Name, s.SubElementNames) for s in Gui.Selection.getSelectionEx()]))
+    check("tree: context menu offers it", "Define as datum (photo) hole" in tree_context_menu())
+    Gui.runCommand("AeroNC_DefineDatumHoles")
+    pump()
+    sets = [o for o in doc.Objects if photo_hole_set.is_photo_hole_set(o)]
+    expected = [hole_geometry.hole_faces(part.Shape, hole_geometry.element_hole_face(e)[1])[0] for e in picks]
+    check("tree: one photo-hole set with the picked holes in order", len(sets) == 1 and
+          [f.split()[0] for f in sets[0].HoleFaces] == expected, (sets and list(sets[0].HoleFaces), expected))
+    check("tree: each datum hole of its element's drilled diameter", len(sets) == 1 and
+          all(abs(d - e.HoleDiameter.Value) < 1e-6 for d, e in zip(sets[0].Diameters, picks)),
+          sets and (list(sets[0].Diameters), [e.HoleDiameter.Value for e in picks]))
     FreeCAD.closeDocument(doc.Name)
 
 

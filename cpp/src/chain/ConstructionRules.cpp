@@ -150,7 +150,9 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
     // Validity and removal, element by element along the order.
     std::map<int, std::vector<const MachiningUnit*>> byElement;
     for (const MachiningUnit* u : ordered) byElement[u->element].push_back(u);
-    for (const auto& [id, list] : byElement) {
+    for (const auto& entry : byElement) {
+        const int id = entry.first;  // a plain name: lambdas cannot capture structured bindings before C++20
+        const auto& list = entry.second;
         const MachiningUnit* prev = nullptr;
         for (const MachiningUnit* u : list) {
             if (holeOp(u->operation)) continue;

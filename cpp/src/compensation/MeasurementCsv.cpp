@@ -45,8 +45,11 @@ double number(const std::string& text, const char* column, int line) {
     errno = 0;
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || errno == ERANGE)
+    if (end != text.c_str() + text.size())
         throw compensationError(where(line) + column + " '" + text + "' is not a number");
+    // An underflow (1e-320) is read as the tiny number it is; an overflow is no measurement.
+    if (errno == ERANGE && std::abs(v) > 1.0)
+        throw compensationError(where(line) + column + " '" + text + "' is out of range");
     if (std::isnan(v)) throw compensationError(where(line) + column + " is NaN (the camera found no hole?)");
     if (!std::isfinite(v)) throw compensationError(where(line) + column + " is not finite");
     return v;

@@ -69,7 +69,7 @@ ThinPlateSpline::ThinPlateSpline(const std::vector<Vec3>& points, const std::vec
     const Eigen::MatrixXd w = Eigen::PartialPivLU<Eigen::MatrixXd>(a).solve(rhs);
     if (!w.allFinite()) throw compensationError("thin-plate spline: the datum holes give a singular system");
     for (Eigen::Index i = 0; i < n; ++i) weights_.push_back(w.row(i).transpose());
-    weightColumns_ = w.topRows(n).transpose();
+    halfWeights_ = 0.5 * w.topRows(n);
     nodeU_.resize(n);
     nodeV_.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) nodeU_[i] = nodes_[static_cast<size_t>(i)].x(), nodeV_[i] = nodes_[static_cast<size_t>(i)].y();
@@ -97,13 +97,17 @@ void ThinPlateSpline::addAt(const std::vector<Vec3>& points, std::vector<Vec3>& 
         for (Eigen::Index j = 0; j < count; ++j) q.col(j) = planar(points[start + static_cast<size_t>(j)]);
         for (Eigen::Index j = 0; j < count; ++j)
             k.col(j) = (nodeU_ - q(0, j)).square() + (nodeV_ - q(1, j)).square();
-        // r^2 log r = 0.5 r^2 log r^2; at a node (r = 0) the product is 0 x finite = 0.
+        // r^2 log r = 0.5 r^2 log r^2 (the 0.5 is in halfWeights_); at a node (r = 0) the
+        // product is 0 x finite = 0.
         auto block = k.leftCols(count);
-        block = 0.5 * block * block.max(1e-300).log();
-        const Eigen::Matrix3Xd v = weightColumns_ * block.matrix();
+        block *= block.max(1e-300).log();
+        // Three dot products per point over contiguous columns: a general matrix product with
+        // three rows spends more on packing than on arithmetic.
         for (Eigen::Index j = 0; j < count; ++j) {
             const auto i = start + static_cast<size_t>(j);
-            out[i] += v.col(j) + constant_ + q(0, j) * alongU_ + q(1, j) * alongV_;
+            const auto kj = block.col(j).matrix();
+            out[i] += Vec3(halfWeights_.col(0).dot(kj), halfWeights_.col(1).dot(kj), halfWeights_.col(2).dot(kj)) +
+                      constant_ + q(0, j) * alongU_ + q(1, j) * alongV_;
         }
     }
 }

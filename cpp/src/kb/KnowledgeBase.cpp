@@ -463,20 +463,55 @@ void KnowledgeBase::insertTools(const std::vector<Tool>& tools, const std::vecto
     tx.commit();
 }
 
-double KnowledgeBase::threshold(const std::string& name) const {
+std::optional<double> KnowledgeBase::findThreshold(const std::string& name) const {
     Statement s(db_.get(), path_, "SELECT value FROM threshold WHERE name = ?");
     s.bind(1, name);
-    if (!s.step("reading a threshold"))
-        notFound(db_.get(), path_,
-                 "knowledge base " + quoted(path_) + ": unknown threshold " + quoted(name) + " (known: " +
-                     joined(names(db_.get(), path_, "SELECT name FROM threshold ORDER BY name")) + ")");
+    if (!s.step("reading a threshold")) {
+        checkIntact(db_.get(), path_);
+        return std::nullopt;
+    }
     s.about("threshold " + quoted(name));
     return s.real(0);
+}
+
+double KnowledgeBase::threshold(const std::string& name) const {
+    if (const auto v = findThreshold(name)) return *v;
+    throw inputError("knowledge base " + quoted(path_) + ": unknown threshold " + quoted(name) + " (known: " +
+                     joined(names(db_.get(), path_, "SELECT name FROM threshold ORDER BY name")) + ")");
 }
 
 CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMaterial,
                                                  const std::string& toolMaterial, const std::string& operation,
                                                  std::optional<double> toolDiameter) const {
+    if (auto c = findCuttingCondition(workpieceMaterial, toolMaterial, operation, toolDiameter)) return *c;
+    sqlite3* db = db_.get();
+    Statement ranged(db, path_,
+                     "SELECT count(*) FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
+                     "AND operation = ?");
+    ranged.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
+    ranged.step();
+    if (ranged.integer(0) > 0) {
+        std::ostringstream d;
+        if (toolDiameter) d << "a " << *toolDiameter << " mm tool";
+        else d << "a tool of unknown diameter (the rows are by diameter range)";
+        throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " + quoted(toolMaterial) +
+                         " tools and operation " + quoted(operation) + " covers " + d.str());
+    }
+    Statement ops(db, path_,
+                  "SELECT operation FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
+                  "ORDER BY operation");
+    ops.bind(1, workpieceMaterial).bind(2, toolMaterial);
+    std::vector<std::string> known;
+    while (ops.step()) known.push_back(ops.text(0));
+    throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " + quoted(toolMaterial) +
+                     " tools and operation " + quoted(operation) + " (operations known for this pair: " +
+                     (known.empty() ? std::string("none") : joined(known)) + ")");
+}
+
+std::optional<CuttingCondition> KnowledgeBase::findCuttingCondition(const std::string& workpieceMaterial,
+                                                                    const std::string& toolMaterial,
+                                                                    const std::string& operation,
+                                                                    std::optional<double> toolDiameter) const {
     sqlite3* db = db_.get();
     {
         Statement s(db, path_, "SELECT 1 FROM workpiece_material WHERE name = ?");
@@ -503,29 +538,8 @@ CuttingCondition KnowledgeBase::cuttingCondition(const std::string& workpieceMat
                 "ORDER BY (d_min IS NULL AND d_max IS NULL), d_min DESC LIMIT 1");
     s.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation).bind(4, toolDiameter);
     if (!s.step("reading cutting conditions")) {
-        Statement ranged(db, path_,
-                         "SELECT count(*) FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
-                         "AND operation = ?");
-        ranged.bind(1, workpieceMaterial).bind(2, toolMaterial).bind(3, operation);
-        ranged.step();
         checkIntact(db, path_);
-        if (ranged.integer(0) > 0) {
-            std::ostringstream d;
-            if (toolDiameter) d << "a " << *toolDiameter << " mm tool";
-            else d << "a tool of unknown diameter (the rows are by diameter range)";
-            throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " +
-                             quoted(toolMaterial) + " tools and operation " + quoted(operation) + " covers " +
-                             d.str());
-        }
-        Statement ops(db, path_,
-                      "SELECT operation FROM cutting_condition WHERE workpiece_material = ? AND tool_material = ? "
-                      "ORDER BY operation");
-        ops.bind(1, workpieceMaterial).bind(2, toolMaterial);
-        std::vector<std::string> known;
-        while (ops.step()) known.push_back(ops.text(0));
-        throw inputError("no cutting condition for " + quoted(workpieceMaterial) + " with " + quoted(toolMaterial) +
-                         " tools and operation " + quoted(operation) + " (operations known for this pair: " +
-                         (known.empty() ? std::string("none") : joined(known)) + ")");
+        return std::nullopt;
     }
     s.about("cutting condition " + quoted(workpieceMaterial) + "/" + quoted(toolMaterial) + "/" + quoted(operation));
     CuttingCondition c;

@@ -61,11 +61,9 @@ nlohmann::json optimiseParameters(const KnowledgeBase& kb, const nlohmann::json&
     j["tool_life"] = {{"C_v", cc.taylorC}, {"m", cc.taylorM}, {"source", from}};
     j["cut"] = {{"a_p_mm", cc.ap}};
     j["economics"] = {{"t_c_min", m.toolChangeS / 60.0}};
-    try {
-        j["quality"] = {{"ra_max_um", kb.threshold("ra_max_um")}, {"source", "knowledge base: threshold ra_max_um"}};
-    } catch (const Error&) {
-        // An older or edited knowledge base without it: the parameter file must say.
-    }
+    // An older or edited knowledge base may lack it: the parameter file must say then.
+    if (const auto ra = kb.findThreshold("ra_max_um"))
+        j["quality"] = {{"ra_max_um", *ra}, {"source", "knowledge base: threshold ra_max_um"}};
     if (tool) {
         j["cutter"] = {{"id", tool->id},
                        {"diameter_mm", tool->diameter},

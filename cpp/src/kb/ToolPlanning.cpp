@@ -41,11 +41,7 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
     PlanSettings s;
     s.etaMin = kb.threshold("eta_min");
     s.muMerge = kb.threshold("mu_merge");
-    double delta = kDefaultDelta;
-    try {
-        delta = kb.threshold("layer_delta_mm");
-    } catch (const Error&) {
-    }
+    const double delta = kb.findThreshold("layer_delta_mm").value_or(kDefaultDelta);
 
     // Cutting data per (tool material, operation, diameter); absent: the tool does not suit the part.
     std::map<std::tuple<std::string, std::string, double>, std::optional<CuttingCondition>> cache;
@@ -54,12 +50,8 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
         auto key = std::make_tuple(tool.material, op, tool.diameter);
         auto it = cache.find(key);
         if (it == cache.end()) {
-            std::optional<CuttingCondition> c;
-            try {
-                c = kb.cuttingCondition(material, tool.material, op, tool.diameter);
-            } catch (const Error&) {
-            }
-            it = cache.emplace(key, c).first;
+            // No row: the tool does not suit; a bad row or file is an error, not a silent skip.
+            it = cache.emplace(key, kb.findCuttingCondition(material, tool.material, op, tool.diameter)).first;
         }
         return it->second;
     };
@@ -77,11 +69,7 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
     };
     ToolPlan plan = toolselect::planTools(tree, tools, s);
 
-    double plungeRatio = 0.3;
-    try {
-        plungeRatio = kb.threshold("plunge_feed_ratio");
-    } catch (const Error&) {
-    }
+    const double plungeRatio = kb.findThreshold("plunge_feed_ratio").value_or(0.3);
     std::set<std::pair<int, std::string>> used;
     for (const ElementChoice& c : plan.elements) {
         if (c.finishingTool >= 0) used.insert({c.finishingTool, "finishing"});

@@ -10,6 +10,8 @@ namespace aeronc::kinematics {
 namespace {
 
 constexpr double kSameAxis = 1e-9;  // rad: tool axes closer than this are the same axis
+// Chords of one linearised arc: a full circle of 10 km radius at 0.001 mm takes about 220,000.
+constexpr double kMaxArcChords = 1e6;
 
 
 // Same axis (unit vectors) within kSameAxis, without the arctangent: this runs for every move.
@@ -234,7 +236,15 @@ private:
         const double rise = (r.tip - tip_).dot(r.axis);
         const double tol = std::min(options_.chordTolerance, radius);
         const double maxStep = 2 * std::acos(1 - tol / radius);
-        const int n = std::max(1, static_cast<int>(std::ceil(std::abs(t) / maxStep - 1e-9)));
+        // An absurd radius (1e110 mm) makes the step 0 and the count infinite; an int cannot hold it.
+        const double chords = std::ceil(std::abs(t) / maxStep - 1e-9);
+        if (!(chords <= kMaxArcChords)) {
+            char b[200];
+            std::snprintf(b, sizeof b, "the arc (radius %g mm, %g degrees) needs more than %g chords within the chord "
+                          "tolerance %g mm", radius, std::abs(t) * 180 / kPi, kMaxArcChords, options_.chordTolerance);
+            throw inputError(b);
+        }
+        const int n = std::max(1, static_cast<int>(chords));
         const double length = std::hypot(radius * std::abs(t), rise) / n;
         for (int k = 1; k <= n; ++k) {
             const double f = static_cast<double>(k) / n;

@@ -97,6 +97,7 @@ public:
             ClRecord sp = base(ClKind::Spindle, op, 0);
             sp.rpm = s.rpm;
             sp.spindleDir = s.rpm > 0 ? s.spindleDir : 0;
+            sp.text = s.label;  // a message about this speed names the tool controller
             pendingTool_.push_back(sp);
             return;
         }

@@ -170,12 +170,13 @@ TEST(ConstructionRules, ExistenceFailsWithoutAMustStepOrWithAMustNotStep) {
 
 TEST(ConstructionRules, ValidityFailsWhenDiametersOrAllowancesGrow) {
     MachiningChain c = smallChain();
-    MachiningUnit& ss0 = c.units[static_cast<std::size_t>(unitOf(c, 0, StepCode::SemiWall).id)];
-    ss0.radialAllowance = 0.8;  // after the corner unit at 0.5
+    // Ids, not references: checkChain's result replaces c and its units.
+    const int ss0 = unitOf(c, 0, StepCode::SemiWall).id;
+    c.units[static_cast<std::size_t>(ss0)].radialAllowance = 0.8;  // after the corner unit at 0.5
     c = checkChain(c);
     auto f = failures(c, "validity");
     ASSERT_EQ(f.size(), 1u);
-    EXPECT_NE(f[0].node.find("step ss / unit " + std::to_string(ss0.id)), std::string::npos) << f[0].node;
+    EXPECT_NE(f[0].node.find("step ss / unit " + std::to_string(ss0)), std::string::npos) << f[0].node;
     EXPECT_NE(f[0].message.find("larger radial allowance (0.8 mm)"), std::string::npos) << f[0].message;
 
     // A wider tool after a narrower one (F8 finishing after F10 is fine, F10 after F8 is not).
@@ -197,13 +198,13 @@ TEST(ConstructionRules, RemovalFailsForAUnitThatCutsNothing) {
     // A finishing step after a roughing step with the same tool and allowances removes nothing.
     MachiningChain c = smallChain();
     c.units[static_cast<std::size_t>(unitOf(c, 1, StepCode::Web).id)].enabled = false;
-    MachiningUnit& ss1 = c.units[static_cast<std::size_t>(unitOf(c, 1, StepCode::SemiWall).id)];
-    ss1.radialAllowance = 1.0;
-    ss1.axialAllowance = 0.5;
+    const int ss1 = unitOf(c, 1, StepCode::SemiWall).id;  // an id: c is replaced below
+    c.units[static_cast<std::size_t>(ss1)].radialAllowance = 1.0;
+    c.units[static_cast<std::size_t>(ss1)].axialAllowance = 0.5;
     c = checkChain(c);
     auto f = failures(c, "removal");
     ASSERT_EQ(f.size(), 1u);
-    EXPECT_NE(f[0].node.find("step ss / unit " + std::to_string(ss1.id) + " (element 1)"), std::string::npos) << f[0].node;
+    EXPECT_NE(f[0].node.find("step ss / unit " + std::to_string(ss1) + " (element 1)"), std::string::npos) << f[0].node;
     EXPECT_NE(f[0].message.find("removes no material: unit " + std::to_string(unitOf(c, 1, StepCode::Rough).id) +
                                 " (step r, F10) already cut element 1"),
               std::string::npos)

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 using namespace aeronc::compensation;
@@ -82,6 +83,14 @@ TEST(MeasurementCsv, FormatVariantsAreRead) {
     EXPECT_EQ(readMeasurementCsv("B,1,2,3").size(), 1u);  // no header, no newline at the end
 }
 
+TEST(MeasurementCsv, ANumberTooSmallForADoubleIsReadAsWhatItIs) {
+    // It was refused as "not a number"; 1e-320 mm is a measurement of no deviation.
+    const auto r = readMeasurementCsv("A1,1e-320,-4.9e-324,60\n");
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_LT(std::abs(r[0].u), 1e-300);
+    EXPECT_LT(std::abs(r[0].v), 1e-300);
+}
+
 TEST(MeasurementCsv, MalformedFilesAreRefusedNamingTheLine) {
     struct Case {
         const char* text;
@@ -100,7 +109,8 @@ TEST(MeasurementCsv, MalformedFilesAreRefusedNamingTheLine) {
         {"A1,nan,0.2,60\n", "u is NaN"},
         {"A1,0.1,0.2,NaN\n", "height is NaN"},
         {"A1,0.1,inf,60\n", "not finite"},
-        {"A1,0.1,0.2,1e999\n", "not a number"},
+        {"A1,0.1,0.2,1e999\n", "line 1: height '1e999' is out of range"},
+        {"A1,-1e400,0.2,60\n", "line 1: u '-1e400' is out of range"},
         {"A1,0.1,0.2,-60\n", "height must be positive"},
         {"hole,x,y,z\nA1,0.1,0.2,60\n", "expected 'u'"},
         {"A1,0.1,0.2,60\nA2,0,0,60\nA1,0,0,60\n", "hole A1 is measured twice (lines 1 and 3)"},

@@ -191,3 +191,56 @@ TEST(NcWordRange, AWorkOffsetIsOneGCodeNeverABlockOfOtherWords) {
     EXPECT_NE(nc.find("\nG55\n"), std::string::npos) << nc;
     EXPECT_EQ(nc.find("X1\n"), std::string::npos) << nc;
 }
+
+TEST(NcWordRange, ASpeedOrFeedARoundingErrorAboveTheMachineLimitPostsAtTheLimit) {
+    // The optimiser and the knowledge base cap speeds and feeds at the machine's limits
+    // (AC-5AX: 18000 r/min, 30000 mm/min); after unit conversions the value can sit a rounding
+    // error above. That is the limit; 0.1 % above is not.
+    char above[64];
+    for (const double factor : {1.0, 1.0 + 2.220446e-16, 1.0 + 1e-12, 1.0 + 9e-10}) {
+        std::snprintf(above, sizeof above, "SPINDL/%.17g,CLW\nFEDRAT/%.17g\n", 18000.0 * factor, 30000.0 * factor);
+        for (const Dialect d : kDialects) {
+            const std::string nc = postAptText("LOADTL/1\n" + std::string(above) + "GOTO/0,0,50\nFINI\n", d);
+            EXPECT_NE(nc.find("S18000 M3"), std::string::npos) << factor << "\n" << nc;
+            EXPECT_NE(nc.find("F30000\n"), std::string::npos) << factor << "\n" << nc;
+        }
+        // The same from FreeCAD's Path: the tool controller's speed, a feed of 500 mm/s.
+        std::snprintf(above, sizeof above, "G1 X1 Y0 Z50 F%.17g\n", 500.0 * factor);
+        for (const Dialect d : kDialects) {
+            const std::string nc =
+                postFreeCad(job(std::string("G0 X0 Y0 Z50\n") + above, 18000.0 * factor), machine("AC-5AX"), options(d), {}).text;
+            EXPECT_NE(nc.find("S18000 M3"), std::string::npos) << factor << "\n" << nc;
+            EXPECT_NE(nc.find("F30000\n"), std::string::npos) << factor << "\n" << nc;
+        }
+    }
+    expectRefused(apt("SPINDL/18018,CLW\n"), "APT line 2: spindle speed 18018 r/min exceeds the machine's maximum spindle speed 18000", "r/min");
+    expectRefused("LOADTL/1\nFEDRAT/30030\nGOTO/0,0,50\nFINI\n", "APT line 3: feed 30030 mm/min exceeds the machine's maximum feed 30000", "mm/min");
+    for (const Dialect d : kDialects) {
+        std::string e = inputErrorOf([&] { postFreeCad(job("G0 X0 Y0 Z50\n", 18018), machine("AC-5AX"), options(d), {}); });
+        // Named by its tool controller (it was "operation 'Op', move 0", a move that does not exist).
+        EXPECT_NE(e.find("tool controller 'TC: 10 mm end mill' of operation 'Op': spindle speed 18018 r/min exceeds the "
+                         "machine's maximum spindle speed 18000"),
+                  std::string::npos)
+            << e;
+        e = inputErrorOf([&] { postFreeCad(job("G0 X0 Y0 Z50\nG1 X1 Y0 Z50 F500.5\n"), machine("AC-5AX"), options(d), {}); });
+        EXPECT_NE(e.find("operation 'Op', move 2: feed 30030 mm/min exceeds the machine's maximum feed 30000 mm/min"), std::string::npos) << e;
+    }
+}
+
+TEST(NcWordRange, AnArcOfAbsurdRadiusIsRefusedNamingTheLine) {
+    // Found by fuzzing: an arc whose centre is 1e110 mm away, in a 5-axis segment the 840D
+    // post linearises, made the chord count infinite, converted to int (undefined; in a
+    // release build one chord, a straight move for a full circle).
+    const std::string text = "LOADTL/3\nSPINDL/8000,CLW\nRAPID\nGOTO/0,0,50,0,0,1\nFEDRAT/600\nGOTO/0,0,-2\n"
+                             "GOTO/20,0,-2\nCIRCLE/20,1e110,-2,0,0,1,10\nGOTO/20,20,-2\n"
+                             "GOTO/10,20,-2,0.2588190451,0,0.9659258263\nFINI\n";
+    std::string e = inputErrorOf([&] { postAptText(text, Dialect::Sinumerik840D); });
+    EXPECT_NE(e.find("APT line 9"), std::string::npos) << e;
+    EXPECT_NE(e.find("the arc (radius 1e+110 mm"), std::string::npos) << e;
+    e = inputErrorOf([&] { postAptText(text, Dialect::LinuxCnc); });
+    EXPECT_NE(e.find("APT line 9"), std::string::npos) << e;
+    // The same arc with its centre 10 mm away posts.
+    std::string sane = text;
+    sane.replace(sane.find("1e110"), 5, "10");
+    for (const Dialect d : kDialects) EXPECT_NO_THROW(postAptText(sane, d));
+}

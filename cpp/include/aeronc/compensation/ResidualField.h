@@ -36,7 +36,7 @@ private:
     std::vector<Eigen::Vector2d> nodes_;
     Eigen::ArrayXd nodeU_, nodeV_;
     std::vector<Vec3> weights_;  // kernel weight per datum hole
-    Eigen::Matrix3Xd weightColumns_;
+    Eigen::MatrixX3d halfWeights_;  // half the kernel weights, a column per coordinate
     Vec3 constant_, alongU_, alongV_;  // the affine part
 };
 

@@ -103,12 +103,20 @@ public:
 
     // A rule threshold such as "eta_min" or "mu_merge"; throws inputError if unknown.
     double threshold(const std::string& name) const;
+    // The same; empty when the knowledge base has no such threshold. A value that is not a
+    // finite number, or a damaged file, is still an error.
+    std::optional<double> findThreshold(const std::string& name) const;
     // The cutting data for a tool of `toolDiameter` (mm): a row whose diameter range holds it
     // wins over a row without a range. Without a diameter only rows without a range count.
     // Throws inputError for an unknown workpiece or tool material, or a missing combination.
     CuttingCondition cuttingCondition(const std::string& workpieceMaterial, const std::string& toolMaterial,
                                       const std::string& operation,
                                       std::optional<double> toolDiameter = std::nullopt) const;
+    // The same; empty when no row covers the combination. Unknown materials, values out of
+    // range and a damaged file are still errors.
+    std::optional<CuttingCondition> findCuttingCondition(const std::string& workpieceMaterial,
+                                                         const std::string& toolMaterial, const std::string& operation,
+                                                         std::optional<double> toolDiameter = std::nullopt) const;
     Machine machine(const std::string& name) const;
     std::vector<std::string> workpieceMaterials() const;
     std::vector<std::string> machineNames() const;

@@ -43,7 +43,8 @@ struct ClRecord {
     CycleKind cycle = CycleKind::Drill;
     double retract = 0.0, clearance = 0.0, peck = 0.0;
 
-    std::string text;        // Comment, Operation label, WorkOffset ("G54"), Coolant ("flood", "mist", "off")
+    std::string text;        // Comment, Operation label, WorkOffset ("G54"), Coolant ("flood", "mist", "off"),
+                             // LoadTool and Spindle from a tool controller: its label
     ClTool tool;             // LoadTool
     double rpm = 0.0;        // Spindle
     int spindleDir = 0;      // Spindle: +1 clockwise (M3), -1 counter-clockwise (M4), 0 stop
