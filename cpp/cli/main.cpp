@@ -10,11 +10,15 @@
 //                   [--resources DIR]
 //   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
 //                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
+//   aeronc impeller PART [--json OUT]
+//   aeronc impeller-part OUT.(step|brep) [--spec JSON] [--truth TRUTH.json]
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
+#include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/kb/ProcessTemplates.h>
@@ -22,6 +26,7 @@
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/ImpellerGenerator.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
@@ -65,7 +70,11 @@ const char* kUsage =
     "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
     "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
     "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
-    "  --time-limit S (recognise, select-tools PART): give up reading and recognising the part after S seconds\n";
+    "  aeronc impeller PART [--json OUT] [--time-limit S]\n"
+    "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"
+    "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
+    "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"
+    "  --time-limit S (recognise, select-tools PART, impeller): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -181,6 +190,52 @@ int panelCmd(int argc, char** argv) {
     const auto panel = aeronc::testparts::makePanel(spec);
     aeronc::writeStep(panel.shape, out);
     if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(panel));
+    return 0;
+}
+
+int impellerCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller needs a part file");
+    const std::string part = argv[2];
+    std::string jsonOut;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--json") jsonOut = next();
+        else return false;
+        return true;
+    });
+    aeronc::impeller::ImpellerFeatures f;
+    aeronc::impeller::ImpellerDimensions d;
+    aeronc::runCatchingOcctFaults(
+        [&] {
+            const TopoDS_Shape solid = aeronc::loadPart(part);
+            f = aeronc::impeller::recogniseImpeller(solid);
+            d = aeronc::impeller::measureImpeller(solid, f);
+        },
+        part);
+    const std::string text = aeronc::impeller::impellerToJson(f, d);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+    std::cerr << part << ": " << f.faceCount << " faces, " << f.bladeCount << " main and " << f.splitterCount
+              << " splitter blades; bore " << d.boreDiameter << " x " << d.boreDepth << " mm, channel "
+              << d.minChannelWidth << " mm, fillet " << d.filletRadius << " mm, blade height " << d.bladeHeight
+              << " mm\n";
+    return 0;
+}
+
+int impellerPartCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller-part needs an output path (.step or .brep)");
+    const std::string out = argv[2];
+    std::string spec, truth;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--spec") spec = next();
+        else if (a == "--truth") truth = next();
+        else return false;
+        return true;
+    });
+    const auto imp = aeronc::testparts::makeImpeller(aeronc::testparts::impellerSpecFromJson(spec));
+    const std::string ext = std::filesystem::path(out).extension().string();
+    if (ext == ".brep") aeronc::writeBrep(imp.shape, out);
+    else aeronc::writeStep(imp.shape, out);
+    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(imp.truth));
     return 0;
 }
 
@@ -424,6 +479,8 @@ int runCommand(const std::string& cmd, int argc, char** argv) {
         if (cmd == "select-tools") return selectToolsCmd(argc, argv);
         if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
         if (cmd == "chain") return chainCmd(argc, argv);
+        if (cmd == "impeller") return impellerCmd(argc, argv);
+        if (cmd == "impeller-part") return impellerPartCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {
@@ -484,7 +541,7 @@ int main(int argc, char** argv) {
         return argc < 2 ? 2 : 0;
     }
     const std::string cmd = argv[1];
-    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools") && argc > 2 &&
+    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools" || cmd == "impeller") && argc > 2 &&
                            std::string(argv[2]) != "--tree";
     if (!readsPart) return runCommand(cmd, argc, argv);
     // --time-limit SECONDS belongs to the child process, not to the command.

@@ -499,4 +499,48 @@ std::string truthToJson(const ImpellerTruth& t) {
     return doc.dump(1);
 }
 
+ImpellerSpec impellerSpecFromJson(const std::string& text) {
+    ImpellerSpec s;
+    if (text.empty()) return s;
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        throw inputError(std::string("impeller spec: not valid JSON: ") + e.what());
+    }
+    if (!j.is_object()) throw inputError("impeller spec: expected a JSON object");
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        const std::string& k = it.key();
+        const auto& v = it.value();
+        auto number = [&](double& field) {
+            if (!v.is_number()) throw inputError("impeller spec: " + k + " must be a number");
+            field = v.get<double>();
+        };
+        auto integer = [&](int& field) {
+            if (!v.is_number_integer()) throw inputError("impeller spec: " + k + " must be a whole number");
+            field = v.get<int>();
+        };
+        if (k == "bladeCount") integer(s.bladeCount);
+        else if (k == "omitSplitter") integer(s.omitSplitter);
+        else if (k == "splitters") {
+            if (!v.is_boolean()) throw inputError("impeller spec: splitters must be true or false");
+            s.splitters = v.get<bool>();
+        } else if (k == "boreDiameter") number(s.boreDiameter);
+        else if (k == "noseRadius") number(s.noseRadius);
+        else if (k == "noseHeight") number(s.noseHeight);
+        else if (k == "outerRadius") number(s.outerRadius);
+        else if (k == "rimHeight") number(s.rimHeight);
+        else if (k == "bladeHeight") number(s.bladeHeight);
+        else if (k == "bladeThickness") number(s.bladeThickness);
+        else if (k == "leadingRadius") number(s.leadingRadius);
+        else if (k == "trailingRadius") number(s.trailingRadius);
+        else if (k == "splitterStart") number(s.splitterStart);
+        else if (k == "wrapDeg") number(s.wrapDeg);
+        else if (k == "leanDeg") number(s.leanDeg);
+        else if (k == "filletRadius") number(s.filletRadius);
+        else throw inputError("impeller spec: unknown key " + k);
+    }
+    return s;
+}
+
 }  // namespace aeronc::testparts

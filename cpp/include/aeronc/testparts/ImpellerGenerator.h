@@ -60,4 +60,8 @@ Impeller makeImpeller(const ImpellerSpec& spec);
 
 std::string truthToJson(const ImpellerTruth& truth);
 
+// A spec from JSON text whose keys are the field names above (missing keys keep their default);
+// "" is the default spec. Throws aeronc::inputError for unknown keys and values of the wrong type.
+ImpellerSpec impellerSpecFromJson(const std::string& text);
+
 }  // namespace aeronc::testparts

@@ -1,0 +1,59 @@
+"""App-side wrapper of the C++ impeller core: recognition by rules and dimension analysis
+(impeller paper, docs/impeller.md), and the generated test impeller.
+
+The shape crosses to `aeronc._core` as BREP text, unchanged, so the face numbers in the result
+are the source's FaceN. Every failure becomes `RecognitionError` with the core's message (not an
+impeller, unequal blade groups, missing hub, ...).
+"""
+import json
+
+from aeronc.errors import RecognitionError, from_core
+from aeronc.recognition import _core, check_solid, shape_of
+
+
+def recognise(source):
+    """Recognise and measure the impeller in a Part shape or a document object.
+
+    Returns the core's JSON as a dict: axis, bladeCount, splitterCount, hub, bore, holes, planes,
+    turned, blades (each: kind, pressure, suction, leading, trailing, walls, fillets, shroud,
+    angleDeg), closestPair and dimensions (boreDiameter, boreDepth, minChannelWidth,
+    channelBlades, filletRadius, bladeHeight, splitterHeight, outerRadius, axialLength), in mm.
+    """
+    shape, label = shape_of(source)
+    check_solid(shape, label)
+    core = _core()
+    with from_core(RecognitionError, label):
+        return json.loads(core.recognise_impeller(shape.exportBrepToString()))
+
+
+def make_test_impeller(spec=None):
+    """A generated impeller: (Part shape, truth dict). spec: ImpellerSpec fields as a dict
+    (bladeCount, splitters, filletRadius, ...); unknown keys are refused."""
+    import Part
+    core = _core()
+    with from_core(RecognitionError, "generated impeller"):
+        brep, truth = core.make_impeller(json.dumps(spec or {}))
+    shape = Part.Shape()
+    shape.importBrepFromString(brep)
+    return shape, json.loads(truth)
+
+
+def face_roles(result):
+    """{FaceN: role} of a recognition result: hub, bore, hole, plane, turned, and per blade
+    "main 3 pressure", "splitter 3 fillet", ... (blade numbers from 0 in angular order)."""
+    roles = {result["hub"]: "hub"}
+    if result.get("bore"):
+        roles[result["bore"]] = "bore"
+    for key, name in (("holes", "hole"), ("planes", "plane"), ("turned", "turned")):
+        for f in result.get(key, []):
+            roles[f] = name
+    for i, b in enumerate(result["blades"]):
+        tag = "{} {}".format(b["kind"], i)
+        for f in b["walls"]:
+            roles[f] = tag + " wall"
+        for key in ("pressure", "suction", "leading", "trailing", "shroud"):
+            if b.get(key):
+                roles[b[key]] = "{} {}".format(tag, key)
+        for f in b["fillets"]:
+            roles[f] = tag + " fillet"
+    return roles
