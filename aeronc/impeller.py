@@ -26,6 +26,29 @@ def recognise(source):
         return json.loads(core.recognise_impeller(shape.exportBrepToString()))
 
 
+def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
+    """Recognition, dimensions, blank and process route of an impeller: (result dict, blank
+    shape). The result is `recognise`'s with "blank" (allowance, axial stations and radii of the
+    revolved outer profile, along the axis from its point) and "route" (steps: position,
+    operation, strategy, faces, tool with its id, type, diameter, taper, reach, and the limits it
+    met; skipped: rules that do not apply) added. kb_path: the knowledge base (default: the
+    user's, made from the shipped SQL when missing)."""
+    import Part
+    from aeronc import knowledge_base
+    shape, label = shape_of(source)
+    check_solid(shape, label)
+    if not allowance >= 0:
+        raise RecognitionError("{}: the blank allowance must be zero or more, not {}".format(label, allowance))
+    core = _core()
+    with from_core(RecognitionError, label):
+        text, blank_brep = core.impeller_program_data(
+            shape.exportBrepToString(), float(allowance), kb_path or knowledge_base.user_kb_path(),
+            knowledge_base.sql_folder(), route)
+    blank = Part.Shape()
+    blank.importBrepFromString(blank_brep)
+    return json.loads(text), blank
+
+
 def make_test_impeller(spec=None):
     """A generated impeller: (Part shape, truth dict). spec: ImpellerSpec fields as a dict
     (bladeCount, splitters, filletRadius, ...); unknown keys are refused."""

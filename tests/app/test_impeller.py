@@ -48,6 +48,25 @@ class ImpellerRecognitionTest(unittest.TestCase):
         roles = impeller.face_roles(self.result)
         self.assertEqual(sorted(roles), list(range(1, len(self.shape.Faces) + 1)))
 
+    def test_blank_and_route(self):
+        import os
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            result, blank = impeller.program_data(self.shape, 3.0, kb_path=os.path.join(d, "kb.sqlite"))
+        self.assertTrue(blank.isValid())
+        # The blank holds the part and is the outer profile grown by the allowance.
+        self.assertLess(self.shape.cut(blank).Volume, 1e-6 * self.shape.Volume)
+        self.assertGreater(blank.Volume, self.shape.Volume)
+        box, part_box = blank.optimalBoundingBox(False, False), self.shape.optimalBoundingBox(False, False)
+        self.assertAlmostEqual(box.ZLength, part_box.ZLength + 6.0, delta=1e-2)
+        self.assertAlmostEqual(box.XLength / 2, 60.0 + 3.0 + 0.02, delta=1e-2)
+        ops = [s["operation"] for s in result["route"]["steps"]]
+        self.assertEqual(ops[:2], ["turn", "face"])
+        self.assertIn("rough_channels", ops)
+        rough = result["route"]["steps"][ops.index("rough_channels")]
+        self.assertEqual(rough["tool"]["type"], "ball")
+        self.assertLessEqual(rough["tool"]["diameter"], result["dimensions"]["minChannelWidth"])
+
     def test_not_an_impeller(self):
         with self.assertRaisesRegex(RecognitionError, "not an impeller: no rotational pattern"):
             impeller.recognise(Part.makeBox(10, 20, 30))
