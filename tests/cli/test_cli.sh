@@ -118,6 +118,17 @@ assert abs(r["dimensions"]["filletRadius"] - t["filletRadius"]) < 1e-3' "$tmp/im
 else
   failed=$((failed + 1)); echo "FAIL impeller recognised as generated"
 fi
+# The whole impeller program on that part (one channel, a few stations): checked and posted.
+if "$cli" impeller-program "$tmp/imp.brep" --kb "$tmp/kb.sqlite" --out "$tmp/prog" --stations 3 --channels 1 2>/dev/null &&
+   grep -q "TRAORI" "$tmp/prog/IMPELLER.mpf" && grep -q "GOTO/" "$tmp/prog/IMPELLER.apt" &&
+   python3 -c 'import json, sys
+t = json.load(open(sys.argv[1]))["toolpaths"]
+assert t["maxGougeMm"] <= 0.01 and t["holderCollisions"] == 0 and t["positionsChecked"] > 0, t' "$tmp/prog/impeller.json"; then
+  passed=$((passed + 1)); echo "ok   impeller program checked and posted"
+else
+  failed=$((failed + 1)); echo "FAIL impeller program checked and posted"
+fi
+expect_error "impeller-program without --kb" "needs --kb and --out" "$cli" impeller-program "$tmp/imp.brep" --out "$tmp/prog"
 expect_error "impeller of a panel" "not an impeller: no rotational pattern" "$cli" impeller "$tmp/p.step"
 expect_error "impeller-part unknown key" "unknown key blades" "$cli" impeller-part "$tmp/x.step" --spec '{"blades": 3}'
 expect_error "impeller-part bad JSON" "not valid JSON" "$cli" impeller-part "$tmp/x.step" --spec '{blades'

@@ -52,7 +52,7 @@ std::vector<impeller::CuttingTool> impellerTools(const KnowledgeBase& kb) {
         if (t.type == "other") continue;
         impeller::CuttingTool c;
         c.id = t.id, c.type = t.type, c.material = t.material, c.diameter = t.diameter;
-        c.reach = t.reach, c.fluteLength = t.fluteLength, c.flutes = t.flutes;
+        c.reach = t.reach, c.fluteLength = t.fluteLength, c.flutes = t.flutes, c.shankDiameter = t.diameter;
         out.push_back(c);
     }
     const Table t = kb.table("tapered_ball_tool");
@@ -67,6 +67,7 @@ std::vector<impeller::CuttingTool> impellerTools(const KnowledgeBase& kb) {
         c.reach = col.number(r, "reach");
         c.fluteLength = col.number(r, "flute_length");
         c.flutes = static_cast<int>(col.number(r, "flutes"));
+        c.shankDiameter = col.number(r, "shank_diameter");
         out.push_back(c);
     }
     return out;

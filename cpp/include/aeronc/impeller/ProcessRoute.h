@@ -29,6 +29,7 @@ struct CuttingTool {
     double diameter = 0;     // tip (ball) diameter of a tapered ball
     double taperDeg = 0;     // half angle of a tapered ball
     double reach = 0, fluteLength = 0;
+    double shankDiameter = 0;  // above the flutes (a plain end mill's is its diameter)
     int flutes = 0;
     // Diameter at height h above the ball's centre (a tapered ball widens, the others do not).
     double diameterAt(double h) const;
