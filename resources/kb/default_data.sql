@@ -221,9 +221,6 @@ INSERT INTO sequencing_rule (template, priority, rule, parameters, description)
 
 -- Impeller programming (docs/impeller.md). The same rows are seeded by the migration from
 -- schema version 3 (KnowledgeBase.cpp).
--- Long-neck ball end mills for root fillets of 1.5 mm and more, reaching down a blade's height.
-INSERT OR IGNORE INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost) VALUES
-  ('EM-BALL3-L', 'ball', 'carbide', 3, 1.5, 2, 6, 75, 30, 34);
 INSERT OR IGNORE INTO tapered_ball_tool (id, tool_material, tip_diameter, taper_deg, flutes, flute_length, shank_diameter, reach, cost) VALUES
   ('TB-2-1',  'carbide', 2, 1.0, 3, 16, 6, 40, 48),
   ('TB-2-3',  'carbide', 2, 3.0, 3, 16, 6, 40, 52),

@@ -263,8 +263,7 @@ INSERT OR IGNORE INTO threshold (name, value, description) VALUES
     ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area');
 )sql"},
     // Version 3 -> 4: impeller programming: tapered ball end mills and the impeller rule
-    // library (route steps with their tool rules), seeded with the shipped rows. The user's
-    // tool table is left as it is (the shipped long-neck ball is not added).
+    // library (route steps with their tool rules), seeded with the shipped rows.
     {3, R"sql(
 -- Tapered ball end mills for the blades and the hub of impellers: a ball tip of tip_diameter on
 -- a cone of half angle taper_deg; the diameter at a height h above the tip's centre is

@@ -166,11 +166,12 @@ TEST(ImpellerRoute, FollowsTheDimensions) {
     };
     ImpellerDimensions narrow = r.dims;
     narrow.minChannelWidth = 5.5;
-    narrow.filletRadius = 1.6;
+    narrow.filletRadius = 1.2;
+    narrow.bladeHeight = narrow.splitterHeight = 8;  // the shipped 2 mm ball reaches 10 mm
     const auto wide = planRoute(r.features, r.dims, rules, tools);
     const auto tight = planRoute(r.features, narrow, rules, tools);
     EXPECT_LT(toolOf(tight, "rough_channels").diameter, toolOf(wide, "rough_channels").diameter);
-    EXPECT_LE(toolOf(tight, "finish_fillets").diameter, 3.2);
+    EXPECT_LE(toolOf(tight, "finish_fillets").diameter, 2.4);
     EXPECT_LT(toolOf(tight, "finish_fillets").diameter, toolOf(wide, "finish_fillets").diameter);
     EXPECT_LE(toolOf(tight, "finish_blades").diameterAt(narrow.bladeHeight + 0.5), 5.0);
 
