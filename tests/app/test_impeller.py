@@ -8,7 +8,7 @@ import Part
 from aeronc import impeller
 from aeronc.errors import RecognitionError
 
-SPEC = {"bladeCount": 5, "filletRadius": 1.5}
+SPEC = {"bladeCount": 5, "filletRadius": 2.0, "bladeHeight": 11.0}
 
 
 class ImpellerRecognitionTest(unittest.TestCase):
