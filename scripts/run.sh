@@ -5,6 +5,7 @@
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
+#   scripts/run.sh impeller  a generated 2 x 9 impeller programmed -> out/impeller/ (docs/impeller.md)
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
@@ -44,6 +45,12 @@ case "${1:-}" in
     mkdir -p "$out"
     HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$ROOT/scripts/post_sample.py"
     ;;
+  impeller)
+    out=$ROOT/out/impeller
+    mkdir -p "$out"
+    "$BUILD/cpp/aeronc" impeller-part "$out/impeller.step" --truth "$out/truth.json"
+    "$BUILD/cpp/aeronc" impeller-program "$out/impeller.step" --kb "$out/kb.sqlite" --out "$out"
+    ;;
   test)
     ctest --test-dir "$BUILD" --output-on-failure
     ;;
@@ -54,7 +61,7 @@ case "${1:-}" in
     cmake --install "$BUILD" --component addon  # without the tests
     ;;
   *)
-    echo "usage: scripts/run.sh demo|post|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|post|impeller|test|bench|install" >&2
     exit 2
     ;;
 esac

@@ -10,11 +10,22 @@
 //                   [--resources DIR]
 //   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
 //                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
+//   aeronc impeller PART [--json OUT]
+//   aeronc impeller-part OUT.(step|brep) [--spec JSON] [--truth TRUTH.json]
+//   aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]
+//                           [--resources DIR]
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/core/TextFile.h>
+#include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/kb/ImpellerRoute.h>
+#include <aeronc/kinematics/MachineModel.h>
+#include <aeronc/post/Apt.h>
+#include <aeronc/post/Post.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/kb/ProcessTemplates.h>
@@ -22,6 +33,7 @@
 #include <aeronc/optimise/Report.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/ImpellerGenerator.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
@@ -32,6 +44,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -65,7 +78,15 @@ const char* kUsage =
     "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
     "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
     "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
-    "  --time-limit S (recognise, select-tools PART): give up reading and recognising the part after S seconds\n";
+    "  aeronc impeller PART [--json OUT] [--time-limit S]\n"
+    "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"
+    "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
+    "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"
+    "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]\n"
+    "                          [--resources DIR]\n"
+    "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, APT and the\n"
+    "       840D program for the AC-5AX machine under TRAORI, in DIR; docs/impeller.md)\n"
+    "  --time-limit S (recognise, select-tools PART, impeller): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -182,6 +203,152 @@ int panelCmd(int argc, char** argv) {
     const auto panel = aeronc::testparts::makePanel(spec);
     aeronc::writeStep(panel.shape, out);
     if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(panel));
+    return 0;
+}
+
+std::filesystem::path kbResources(const std::string& given, const char* argv0);
+
+int impellerCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller needs a part file");
+    const std::string part = argv[2];
+    std::string jsonOut;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--json") jsonOut = next();
+        else return false;
+        return true;
+    });
+    aeronc::impeller::ImpellerFeatures f;
+    aeronc::impeller::ImpellerDimensions d;
+    aeronc::runCatchingOcctFaults(
+        [&] {
+            const TopoDS_Shape solid = aeronc::loadPart(part);
+            f = aeronc::impeller::recogniseImpeller(solid);
+            d = aeronc::impeller::measureImpeller(solid, f);
+        },
+        part);
+    const std::string text = aeronc::impeller::impellerToJson(f, d);
+    if (jsonOut.empty()) std::cout << text << "\n";
+    else writeText(jsonOut, text);
+    std::cerr << part << ": " << f.faceCount << " faces, " << f.bladeCount << " main and " << f.splitterCount
+              << " splitter blades; bore " << d.boreDiameter << " x " << d.boreDepth << " mm, channel "
+              << d.minChannelWidth << " mm, fillet " << d.filletRadius << " mm, blade height " << d.bladeHeight
+              << " mm\n";
+    return 0;
+}
+
+// Spindle speed and feed of a cutter from the knowledge base's cutting data, capped at the machine's.
+void cuttingData(const aeronc::kb::KnowledgeBase& kb, const std::string& material, const std::string& operation,
+                 const aeronc::impeller::CuttingTool& t, aeronc::impellerpath::CutterShape& c) {
+    const auto cc = kb.cuttingCondition(material, t.material, operation, t.diameter);
+    const auto m = kb.machine("AC-5AX");
+    c.rpm = std::min(1000 * cc.vc / (3.14159265358979323846 * t.diameter), m.maxSpindleRpm);
+    c.feed = std::min(cc.fz * std::max(t.flutes, 1) * c.rpm, m.maxFeedMmMin);
+}
+
+int impellerProgramCmd(int argc, char** argv) {
+    using namespace aeronc;
+    if (argc < 3) throw inputError("impeller-program needs a part file");
+    const std::string part = argv[2];
+    std::string kbPath, out, resources, material = "7050-T7451";
+    impellerpath::PathOptions opt;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--kb") kbPath = next();
+        else if (a == "--out") out = next();
+        else if (a == "--resources") resources = next();
+        else if (a == "--material") material = next();
+        else if (a == "--stations") opt.stations = std::stoi(next());
+        else if (a == "--channels") opt.channels = std::stoi(next());
+        else return false;
+        return true;
+    });
+    if (kbPath.empty() || out.empty()) throw inputError("impeller-program needs --kb and --out");
+    if (opt.stations < 2 || opt.stations > 200) throw inputError("--stations wants 2 to 200");
+    const auto kbDir = kbResources(resources, argv[0]);
+    const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return kbDir.string(); });
+    const auto machine = kinematics::loadMachineFile((kbDir / ".." / "machines" / "AC-5AX.json").string());
+    std::filesystem::create_directories(out);
+    using Clock = std::chrono::steady_clock;
+    auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    TopoDS_Shape solid;
+    impeller::ImpellerFeatures f;
+    impeller::ImpellerDimensions d;
+    impeller::ProcessRoute route;
+    impellerpath::ImpellerProgram prog;
+    impellerpath::CheckResult again;
+    impellerpath::CutterShape rougher, finisher;
+    double tRecognise = 0, tPaths = 0, tCheck = 0;
+    std::string apt;
+    runCatchingOcctFaults(
+        [&] {
+            solid = loadPart(part);
+            auto t0 = Clock::now();
+            f = impeller::recogniseImpeller(solid);
+            d = impeller::measureImpeller(solid, f);
+            tRecognise = secs(t0);
+            route = kb::planImpellerRoute(kb, f, d);
+            int number = 0;
+            for (const auto& s : route.steps) {
+                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades")) continue;
+                auto& c = s.operation == "rough_channels" ? rougher : finisher;
+                c.id = s.tool->id, c.number = ++number, c.tipRadius = s.tool->diameter / 2;
+                c.taperDeg = s.tool->taperDeg, c.fluteLength = s.tool->fluteLength, c.reach = s.tool->reach;
+                c.shankRadius = s.tool->shankDiameter / 2;
+                cuttingData(kb, material, s.operation == "rough_channels" ? "roughing" : "finishing", *s.tool, c);
+                if (s.operation == "rough_channels") opt.roughAllowance = s.allowance;
+            }
+            if (rougher.id.empty() || finisher.id.empty())
+                throw inputError("the impeller route has no channel roughing or no blade finishing step");
+            t0 = Clock::now();
+            prog = impellerpath::impellerToolpaths(solid, f, d, rougher, finisher, opt);
+            tPaths = secs(t0);
+            apt = post::writeApt(impellerpath::toClProgram(prog, "IMPELLER"));
+            t0 = Clock::now();
+            again = impellerpath::checkProgram(solid, f, impellerpath::movesOf(post::readApt(apt), {rougher, finisher}));
+            tCheck = secs(t0);
+        },
+        part);
+    post::NcOptions nc;
+    nc.programName = "IMPELLER";
+    const auto posted = post::postApt(apt, machine, nc, {});
+    auto doc = nlohmann::json::parse(impeller::impellerToJson(f, d));
+    doc["route"] = nlohmann::json::parse(impeller::routeToJson(route));
+    size_t moves = 0;
+    for (const auto& op : prog.operations) moves += op.moves.size();
+    doc["toolpaths"] = {{"moves", moves},
+                        {"positionsChecked", again.positions},
+                        {"maxGougeMm", again.maxGouge},
+                        {"holderCollisions", again.holderCollisions},
+                        {"tilted", prog.check.tilted},
+                        {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
+                        {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
+                        {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
+    const std::filesystem::path dir(out);
+    writeText((dir / "impeller.json").string(), doc.dump(1));
+    writeText((dir / "IMPELLER.apt").string(), apt);
+    writeText((dir / "IMPELLER.mpf").string(), posted.text);
+    std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
+              << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
+              << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
+              << " holder collisions, " << prog.check.tilted << " tilted; " << posted.lines << " lines of 840D in "
+              << (dir / "IMPELLER.mpf").string() << "\n";
+    return again.maxGouge <= 0.01 && again.holderCollisions == 0 ? 0 : 1;
+}
+
+int impellerPartCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller-part needs an output path (.step or .brep)");
+    const std::string out = argv[2];
+    std::string spec, truth;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--spec") spec = next();
+        else if (a == "--truth") truth = next();
+        else return false;
+        return true;
+    });
+    const auto imp = aeronc::testparts::makeImpeller(aeronc::testparts::impellerSpecFromJson(spec));
+    const std::string ext = std::filesystem::path(out).extension().string();
+    if (ext == ".brep") aeronc::writeBrep(imp.shape, out);
+    else aeronc::writeStep(imp.shape, out);
+    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(imp.truth));
     return 0;
 }
 
@@ -425,6 +592,9 @@ int runCommand(const std::string& cmd, int argc, char** argv) {
         if (cmd == "select-tools") return selectToolsCmd(argc, argv);
         if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
         if (cmd == "chain") return chainCmd(argc, argv);
+        if (cmd == "impeller") return impellerCmd(argc, argv);
+        if (cmd == "impeller-part") return impellerPartCmd(argc, argv);
+        if (cmd == "impeller-program") return impellerProgramCmd(argc, argv);
         std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
         return 2;
     } catch (const aeronc::Error& e) {
@@ -485,7 +655,7 @@ int main(int argc, char** argv) {
         return argc < 2 ? 2 : 0;
     }
     const std::string cmd = argv[1];
-    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools") && argc > 2 &&
+    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools" || cmd == "impeller") && argc > 2 &&
                            std::string(argv[2]) != "--tree";
     if (!readsPart) return runCommand(cmd, argc, argv);
     // --time-limit SECONDS belongs to the child process, not to the command.

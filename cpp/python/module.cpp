@@ -61,6 +61,7 @@ void bindToolpath(py::module_& m);  // toolpath_bindings.cpp: toolpaths of machi
 void bindCompensation(py::module_& m);  // compensation_bindings.cpp: datum holes and compensation
 void bindChain(py::module_& m);     // chain_bindings.cpp
 void bindVerify(py::module_& m);    // verify_bindings.cpp: simulation of a program against the part
+void bindImpeller(py::module_& m);  // impeller_bindings.cpp: impeller recognition, test impellers
 
 PYBIND11_MODULE(_core, m) {
     m.doc() = "AeroNC core: machining-feature recognition and test parts";
@@ -161,4 +162,5 @@ PYBIND11_MODULE(_core, m) {
     bindToolpath(m);
     bindCompensation(m);
     bindVerify(m);
+    bindImpeller(m);
 }

@@ -595,3 +595,32 @@ TEST_F(KnowledgeBaseTest, MigratesVersionTwoKeepingUserRows) {
         }
     }
 }
+
+// Version 3 had no impeller tables: the migration adds them with the shipped rule library and
+// tapered balls, keeping the user's rows (here a tool of the user's and an edited threshold).
+TEST_F(KnowledgeBaseTest, MigratesVersionThreeAddingTheImpellerTables) {
+    const fs::path p = file();
+    { openDefault(p); }
+    rawExec(p, R"sql(
+        DROP TABLE impeller_route_step;
+        DROP TABLE tapered_ball_tool;
+        UPDATE schema_version SET version = 3;
+        INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach)
+            VALUES ('SHOP-BALL-5', 'ball', 'carbide', 5, 2.5, 2, 10, 30);
+        UPDATE threshold SET value = 0.75 WHERE name = 'eta_min';
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    EXPECT_TRUE(fs::exists(p.string() + ".v3.bak"));
+    EXPECT_EQ(kb.tools().size(), kShippedTools + 1);
+    EXPECT_DOUBLE_EQ(kb.threshold("eta_min"), 0.75);
+    // The same rows as a new file has.
+    const fs::path fresh = dir_ / "fresh.sqlite";
+    KnowledgeBase shipped = openDefault(fresh);
+    for (const char* table : {"impeller_route_step", "tapered_ball_tool"}) {
+        SCOPED_TRACE(table);
+        const auto migrated = kb.table(table), made = shipped.table(table);
+        EXPECT_FALSE(made.rows.empty());
+        EXPECT_EQ(migrated.rows, made.rows);
+    }
+}

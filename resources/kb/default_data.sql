@@ -218,3 +218,23 @@ INSERT INTO sequencing_rule (template, priority, rule, parameters, description)
   UNION ALL SELECT name, 3, 'higher_z_first', '', 'rule 3: of two topologically related units, the higher Z first' FROM process_template
   UNION ALL SELECT name, 4, 'feature_type_order', 'order=open_pocket,closed_pocket,flange,opening,hole', 'rule 4: by feature type (slot on a wall, pocket, flange, rib)' FROM process_template
   UNION ALL SELECT name, 5, 'centre_out', '', 'rule 5: otherwise for low distortion, symmetric, from the centre out' FROM process_template;
+
+-- Impeller programming (docs/impeller.md). The same rows are seeded by the migration from
+-- schema version 3 (KnowledgeBase.cpp).
+INSERT OR IGNORE INTO tapered_ball_tool (id, tool_material, tip_diameter, taper_deg, flutes, flute_length, shank_diameter, reach, cost) VALUES
+  ('TB-2-1',  'carbide', 2, 1.0, 3, 16, 6, 40, 48),
+  ('TB-2-3',  'carbide', 2, 3.0, 3, 16, 6, 40, 52),
+  ('TB-3-2',  'carbide', 3, 2.0, 3, 20, 6, 45, 55),
+  ('TB-4-1',  'carbide', 4, 1.0, 4, 20, 8, 50, 60),
+  ('TB-4-2',  'carbide', 4, 2.0, 4, 25, 8, 50, 64),
+  ('TB-4-3',  'carbide', 4, 3.0, 4, 25, 10, 50, 70),
+  ('TB-6-1.5','carbide', 6, 1.5, 4, 30, 10, 60, 78);
+INSERT OR IGNORE INTO impeller_route_step (route, position, operation, tool_rule, strategy, allowance, clearance, description) VALUES
+  ('impeller', 1, 'turn',           'none',                    'outer diameter',  0.0, 0.0, 'turn the outer diameter and the faces of revolution (lathe, before the 5-axis setup)'),
+  ('impeller', 2, 'face',           'face_mill',               'planes',          0.0, 0.0, 'face the planes'),
+  ('impeller', 3, 'drill',          'drill_in_bore',           'through',         0.5, 0.0, 'drill the bore, leaving stock for boring'),
+  ('impeller', 4, 'bore',           'end_mill_in_bore',        'helical',         0.0, 0.0, 'bore the centre hole to size'),
+  ('impeller', 5, 'rough_channels', 'ball_in_channel',         'layers',          0.5, 0.5, 'rough each channel between adjacent blades in layers from the shroud down to the hub'),
+  ('impeller', 6, 'finish_blades',  'tapered_ball_in_channel', 'flank',           0.0, 0.5, 'finish the blade walls, the tool axis along the rulings'),
+  ('impeller', 7, 'finish_hub',     'tapered_ball_in_channel', 'interpolated',    0.0, 0.5, 'finish the hub, the tool axis interpolated between the two blades'),
+  ('impeller', 8, 'finish_fillets', 'ball_in_fillet',          'along the root',  0.0, 0.2, 'finish the root fillets with a ball that fits them');

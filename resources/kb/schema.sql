@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 3.
+-- AeroNC machining knowledge base, schema version 4.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
@@ -13,7 +13,7 @@ PRAGMA foreign_keys = ON;
 CREATE TABLE schema_version (
     version INTEGER NOT NULL
 );
-INSERT INTO schema_version (version) VALUES (3);
+INSERT INTO schema_version (version) VALUES (4);
 
 -- Resource facts -----------------------------------------------------------------------
 
@@ -193,4 +193,54 @@ CREATE TABLE sequencing_rule (
     enabled     INTEGER NOT NULL DEFAULT 1 CHECK (enabled IN (0, 1)),
     description TEXT,
     UNIQUE (template, priority)
+);
+
+-- Impeller programming (impeller paper §2, docs/impeller.md) ---------------------------------
+
+-- Tapered ball end mills for the blades and the hub of impellers: a ball tip of tip_diameter on
+-- a cone of half angle taper_deg; the diameter at a height h above the tip's centre is
+-- tip_diameter + 2 h tan(taper_deg).
+CREATE TABLE tapered_ball_tool (
+    id             TEXT PRIMARY KEY NOT NULL,
+    tool_material  TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    tip_diameter   REAL NOT NULL CHECK (tip_diameter > 0),
+    taper_deg      REAL NOT NULL CHECK (taper_deg > 0 AND taper_deg < 15),
+    flutes         INTEGER NOT NULL CHECK (flutes > 0),
+    flute_length   REAL NOT NULL CHECK (flute_length > 0),
+    shank_diameter REAL NOT NULL CHECK (shank_diameter >= tip_diameter),
+    reach          REAL NOT NULL CHECK (reach >= flute_length),
+    cost           REAL CHECK (cost IS NULL OR cost >= 0)
+);
+
+-- The impeller rule library: a route is its steps in order. A step applies when the part has
+-- the features its operation machines (planes, turned faces, a bore, blades, splitters' channels,
+-- the hub, root fillets). tool_rule says how its tool is chosen from the measured dimensions:
+--   face_mill                the largest face mill
+--   none                     no milling tool (the step is done on the lathe)
+--   drill_in_bore            the largest drill at most the bore diameter - 2 x allowance, reaching
+--                            through the bore
+--   end_mill_in_bore         the largest flat end mill at most 0.8 x the bore diameter, reaching
+--                            through it (helical interpolation)
+--   ball_in_channel          the largest ball end mill at most the minimum channel width
+--                            - 2 x allowance - clearance, reaching the blade height + clearance
+--   tapered_ball_in_channel  the tapered ball whose tip radius is at most the root fillet radius
+--                            and whose diameter at the blade height + clearance is at most the
+--                            channel width - clearance; the largest tip, then the largest taper
+--   ball_in_fillet           the largest ball end mill whose radius is at most the root fillet
+--                            radius, reaching the blade height + clearance
+-- allowance is the stock the step leaves (mm); clearance the gap kept to the walls (mm).
+CREATE TABLE impeller_route_step (
+    id          INTEGER PRIMARY KEY,
+    route       TEXT NOT NULL,
+    position    INTEGER NOT NULL CHECK (position > 0),
+    operation   TEXT NOT NULL CHECK (operation IN ('face', 'turn', 'drill', 'bore', 'rough_channels',
+                                                   'finish_blades', 'finish_hub', 'finish_fillets')),
+    tool_rule   TEXT NOT NULL CHECK (tool_rule IN ('face_mill', 'none', 'drill_in_bore', 'end_mill_in_bore',
+                                                   'ball_in_channel', 'tapered_ball_in_channel',
+                                                   'ball_in_fillet')),
+    strategy    TEXT NOT NULL DEFAULT '',         -- 'layers', 'flank', 'point', 'interpolated', ...
+    allowance   REAL NOT NULL DEFAULT 0 CHECK (allowance >= 0),
+    clearance   REAL NOT NULL DEFAULT 0 CHECK (clearance >= 0),
+    description TEXT,
+    UNIQUE (route, position)
 );

@@ -106,5 +106,33 @@ sed 's/"diameter_mm": 125/"diameter_mm": 0/' "$opt" > "$tmp/flat.json"
 expect_error "optimise non-physical" "cutter diameter d_0 must be positive" "$cli" optimise "$tmp/flat.json"
 expect_error "optimise bad method" "nlopt, ga or both" "$cli" optimise "$opt" --method simplex
 
+# Impellers: a generated one is recognised as its truth says; no impeller, a bad spec refused.
+"$cli" impeller-part "$tmp/imp.brep" --spec '{"bladeCount": 4, "splitters": false}' --truth "$tmp/imp_truth.json" 2>/dev/null
+if "$cli" impeller "$tmp/imp.brep" --json "$tmp/imp.json" 2>/dev/null &&
+   python3 -c 'import json, sys
+r, t = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert (r["hub"], r["bore"], r["bladeCount"], r["splitterCount"]) == (t["hub"], t["bore"], 4, 0)
+assert sorted(b["shroud"] for b in r["blades"]) == sorted(b["shroud"] for b in t["blades"])
+assert abs(r["dimensions"]["filletRadius"] - t["filletRadius"]) < 1e-3' "$tmp/imp.json" "$tmp/imp_truth.json"; then
+  passed=$((passed + 1)); echo "ok   impeller recognised as generated"
+else
+  failed=$((failed + 1)); echo "FAIL impeller recognised as generated"
+fi
+# The whole impeller program on that part (one channel, a few stations): checked and posted.
+if "$cli" impeller-program "$tmp/imp.brep" --kb "$tmp/kb.sqlite" --out "$tmp/prog" --stations 3 --channels 1 2>/dev/null &&
+   grep -q "TRAORI" "$tmp/prog/IMPELLER.mpf" && grep -q "GOTO/" "$tmp/prog/IMPELLER.apt" &&
+   python3 -c 'import json, sys
+t = json.load(open(sys.argv[1]))["toolpaths"]
+assert t["maxGougeMm"] <= 0.01 and t["holderCollisions"] == 0 and t["positionsChecked"] > 0, t' "$tmp/prog/impeller.json"; then
+  passed=$((passed + 1)); echo "ok   impeller program checked and posted"
+else
+  failed=$((failed + 1)); echo "FAIL impeller program checked and posted"
+fi
+expect_error "impeller-program without --kb" "needs --kb and --out" "$cli" impeller-program "$tmp/imp.brep" --out "$tmp/prog"
+expect_error "impeller of a panel" "not an impeller: no rotational pattern" "$cli" impeller "$tmp/p.step"
+expect_error "impeller-part unknown key" "unknown key blades" "$cli" impeller-part "$tmp/x.step" --spec '{"blades": 3}'
+expect_error "impeller-part bad JSON" "not valid JSON" "$cli" impeller-part "$tmp/x.step" --spec '{blades'
+expect_error "impeller-part impossible" "blade count must be 3 to 40" "$cli" impeller-part "$tmp/x.step" --spec '{"bladeCount": 2}'
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -65,7 +65,8 @@ void bindCell(Statement& s, int i, const Cell& v, const TableColumn& c, const st
 const std::vector<std::string>& KnowledgeBase::editableTables() {
     static const std::vector<std::string> t = {"tool", "cutting_condition", "machine", "workpiece_material",
                                                "tool_material", "threshold", "part_family", "step_order",
-                                               "process_template", "template_step", "sequencing_rule"};
+                                               "process_template", "template_step", "sequencing_rule",
+                                               "tapered_ball_tool", "impeller_route_step"};
     return t;
 }
 

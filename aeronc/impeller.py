@@ -1,0 +1,82 @@
+"""App-side wrapper of the C++ impeller core: recognition by rules and dimension analysis
+(impeller paper, docs/impeller.md), and the generated test impeller.
+
+The shape crosses to `aeronc._core` as BREP text, unchanged, so the face numbers in the result
+are the source's FaceN. Every failure becomes `RecognitionError` with the core's message (not an
+impeller, unequal blade groups, missing hub, ...).
+"""
+import json
+
+from aeronc.errors import RecognitionError, from_core
+from aeronc.recognition import _core, check_solid, shape_of
+
+
+def recognise(source):
+    """Recognise and measure the impeller in a Part shape or a document object.
+
+    Returns the core's JSON as a dict: axis, bladeCount, splitterCount, hub, bore, holes, planes,
+    turned, blades (each: kind, pressure, suction, leading, trailing, walls, fillets, shroud,
+    angleDeg), closestPair and dimensions (boreDiameter, boreDepth, minChannelWidth,
+    channelBlades, filletRadius, bladeHeight, splitterHeight, outerRadius, axialLength), in mm.
+    """
+    shape, label = shape_of(source)
+    check_solid(shape, label)
+    core = _core()
+    with from_core(RecognitionError, label):
+        return json.loads(core.recognise_impeller(shape.exportBrepToString()))
+
+
+def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
+    """Recognition, dimensions, blank and process route of an impeller: (result dict, blank
+    shape). The result is `recognise`'s with "blank" (allowance, axial stations and radii of the
+    revolved outer profile, along the axis from its point) and "route" (steps: position,
+    operation, strategy, faces, tool with its id, type, diameter, taper, reach, and the limits it
+    met; skipped: rules that do not apply) added. kb_path: the knowledge base (default: the
+    user's, made from the shipped SQL when missing)."""
+    import Part
+    from aeronc import knowledge_base
+    shape, label = shape_of(source)
+    check_solid(shape, label)
+    if not allowance >= 0:
+        raise RecognitionError("{}: the blank allowance must be zero or more, not {}".format(label, allowance))
+    core = _core()
+    with from_core(RecognitionError, label):
+        text, blank_brep = core.impeller_program_data(
+            shape.exportBrepToString(), float(allowance), kb_path or knowledge_base.user_kb_path(),
+            knowledge_base.sql_folder(), route)
+    blank = Part.Shape()
+    blank.importBrepFromString(blank_brep)
+    return json.loads(text), blank
+
+
+def make_test_impeller(spec=None):
+    """A generated impeller: (Part shape, truth dict). spec: ImpellerSpec fields as a dict
+    (bladeCount, splitters, filletRadius, ...); unknown keys are refused."""
+    import Part
+    core = _core()
+    with from_core(RecognitionError, "generated impeller"):
+        brep, truth = core.make_impeller(json.dumps(spec or {}))
+    shape = Part.Shape()
+    shape.importBrepFromString(brep)
+    return shape, json.loads(truth)
+
+
+def face_roles(result):
+    """{FaceN: role} of a recognition result: hub, bore, hole, plane, turned, and per blade
+    "main 3 pressure", "splitter 3 fillet", ... (blade numbers from 0 in angular order)."""
+    roles = {result["hub"]: "hub"}
+    if result.get("bore"):
+        roles[result["bore"]] = "bore"
+    for key, name in (("holes", "hole"), ("planes", "plane"), ("turned", "turned")):
+        for f in result.get(key, []):
+            roles[f] = name
+    for i, b in enumerate(result["blades"]):
+        tag = "{} {}".format(b["kind"], i)
+        for f in b["walls"]:
+            roles[f] = tag + " wall"
+        for key in ("pressure", "suction", "leading", "trailing", "shroud"):
+            if b.get(key):
+                roles[b[key]] = "{} {}".format(tag, key)
+        for f in b["fillets"]:
+            roles[f] = tag + " fillet"
+    return roles

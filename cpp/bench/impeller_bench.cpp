@@ -1,0 +1,84 @@
+// Impeller figures: generating the test part, recognising it (target: 2 x 9 blades in under
+// 1 s) and measuring its dimensions, for 2 x 5, 2 x 7 and 2 x 9 blades. Wall-clock and processor
+// time (recognition integrates face areas on two threads, so processor time can exceed the wall
+// clock); the median of five runs. Then the 5-axis toolpaths of the 2 x 9 impeller (every
+// channel, 24 stations a pass) with the route's tools, once: generation and check time.
+// Usage: aeronc_impeller_bench [--blades 9] [--no-paths]
+#include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/testparts/ImpellerGenerator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secs(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+double cpu() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+void run(int blades) {
+    aeronc::testparts::ImpellerSpec spec;
+    spec.bladeCount = blades;
+    auto t0 = Clock::now();
+    const auto imp = aeronc::testparts::makeImpeller(spec);
+    const double gen = secs(t0);
+    std::vector<double> wall, proc, measure;
+    aeronc::impeller::ImpellerFeatures f;
+    for (int i = 0; i < 5; ++i) {
+        const double c0 = cpu();
+        t0 = Clock::now();
+        f = aeronc::impeller::recogniseImpeller(imp.shape);
+        wall.push_back(secs(t0));
+        proc.push_back(cpu() - c0);
+        t0 = Clock::now();
+        aeronc::impeller::measureImpeller(imp.shape, f);
+        measure.push_back(secs(t0));
+    }
+    std::printf("%2d x 2 blades  %4d faces  generate %6.2f s  recognise %6.3f s (cpu %6.3f s)  measure %6.3f s\n",
+                blades, f.faceCount, gen, median(wall), median(proc), median(measure));
+}
+
+// The tools the default route picks for the 2 x 9 impeller (tests/impeller check the choice).
+void paths() {
+    const auto imp = aeronc::testparts::makeImpeller({});
+    const auto f = aeronc::impeller::recogniseImpeller(imp.shape);
+    const auto d = aeronc::impeller::measureImpeller(imp.shape, f);
+    aeronc::impellerpath::CutterShape rough{"EM-BALL8", 1, 4, 0, 16, 4, 25, 18000, 2160};
+    aeronc::impellerpath::CutterShape finish{"TB-4-3", 2, 2, 3, 25, 5, 50, 18000, 4320};
+    const double c0 = cpu();
+    const auto t0 = Clock::now();
+    const auto p = aeronc::impellerpath::impellerToolpaths(imp.shape, f, d, rough, finish);
+    size_t moves = 0;
+    for (const auto& op : p.operations) moves += op.moves.size();
+    std::printf("toolpaths 2 x 9 blades: %zu moves (%d positions of 2 channel kinds checked) in %.1f s (cpu %.1f s); "
+                "deepest gouge %.4f mm, %d holder collisions, %d tilted\n",
+                moves, p.check.positions, secs(t0), cpu() - c0, p.check.maxGouge, p.check.holderCollisions,
+                p.check.tilted);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<int> sizes{5, 7, 9};
+    bool withPaths = true;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--blades") == 0 && i + 1 < argc) sizes = {std::stoi(argv[++i])};
+        else if (std::strcmp(argv[i], "--no-paths") == 0) withPaths = false;
+    }
+    std::printf("impeller recognition (target: 2 x 9 blades under 1 s)\n");
+    for (int n : sizes) run(n);
+    if (withPaths) paths();
+    return 0;
+}

@@ -1,0 +1,103 @@
+#pragma once
+// One channel of an impeller: the space between the pressure side of blade A and the suction
+// side of the next blade B, over the hub and under the shroud, in cylindrical coordinates about
+// the impeller's axis; and the distance queries that check a cutter in it.
+#include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/ImpellerToolpaths.h>
+
+#include <Bnd_Box.hxx>
+#include <Geom_Surface.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Ax3.hxx>
+
+#include <vector>
+
+namespace aeronc::impellerpath {
+
+using kinematics::Vec3;
+
+class Frame {
+public:
+    Frame(const impeller::ImpellerFeatures& f);
+    Vec3 at(double r, double theta, double z) const;
+    double radius(const Vec3& p) const;
+    double theta(const Vec3& p) const;
+    double axial(const Vec3& p) const;
+    Vec3 z() const { return z_; }
+    // p turned about the axis by `angle`.
+    Vec3 turned(const Vec3& p, double angle) const;
+    Vec3 turnedVector(const Vec3& v, double angle) const;
+
+private:
+    Vec3 o_, x_, y_, z_;
+};
+
+// Faces a cutter must not cut into, with their bounding boxes for quick rejection; and the hub,
+// measured to its whole surface of revolution (the hub face carries every blade's root loop, so
+// a distance to the face itself would measure to all those edges; its surface runs on under the
+// fillets and blades, inside the material, so it is never nearer to a point in a channel than
+// the face is).
+class Obstacles {
+public:
+    Obstacles(std::vector<TopoDS_Face> faces, Handle(Geom_Surface) hub);
+    // Distance from p to the faces and the hub, up to `limit` (beyond it, `limit`); `nearest`,
+    // when given, gets the nearest point found (p itself when nothing is within the limit).
+    double distance(const Vec3& p, double limit, Vec3* nearest = nullptr) const;
+
+private:
+    std::vector<TopoDS_Face> faces_;
+    std::vector<Bnd_Box> boxes_;
+    Handle(Geom_Surface) hub_;
+};
+
+// A wall face and what the paths ask of it.
+struct Wall {
+    TopoDS_Face face;
+    Handle(Geom_Surface) surface;
+    std::vector<Vec3> samples;  // points of the face on a parameter grid, for first guesses
+    double rMin = 0, rMax = 0;
+};
+
+class Channel {
+public:
+    Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA);
+
+    const Frame& frame() const { return frame_; }
+    double rMin() const { return rMin_; }
+    double rMax() const { return rMax_; }
+    double hubZ(double r) const;
+    double shroudZ(double r) const;
+    // Angle of the wall at radius r and height z (A: pressure side of the first blade, B: the
+    // suction side of the next), near `guess`.
+    double wallTheta(bool b, double r, double z, double guess) const;
+    double guessTheta(bool b, double r) const;
+    // Upward ruling direction of a wall near point p, and its unit normal into the channel.
+    void wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, double* u = nullptr, double* v = nullptr) const;
+    const Wall& wall(bool b) const { return b ? b_ : a_; }
+    Vec3 hubNormal(const Vec3& p) const;
+
+    // The two blades' faces and the hub.
+    const Obstacles& obstacles() const { return obstacles_; }
+
+private:
+    Frame frame_;
+    Wall a_, b_;
+    TopoDS_Face hub_;
+    Handle(Geom_Surface) hubSurface_, shroudSurface_;
+    Obstacles obstacles_;
+    double rMin_ = 0, rMax_ = 0;
+};
+
+// How far the cutter at (centre, axis) cuts into the channel's walls and hub (> 0: a gouge, mm)
+// and whether its shank or holder touches them.
+struct Clearance {
+    double gouge = -1e300;
+    bool holder = false;
+    Vec3 away = Vec3::Zero();  // unit: from the nearest obstacle point towards the deepest sample
+};
+// `stock`: distance the cutter must keep beyond its own radius (roughing's allowance).
+Clearance clearance(const Obstacles& o, const CutterShape& cutter, const Vec3& centre, const Vec3& axis,
+                    double stock = 0);
+
+}  // namespace aeronc::impellerpath

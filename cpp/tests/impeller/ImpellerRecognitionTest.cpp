@@ -1,0 +1,192 @@
+// Impeller recognition and dimension analysis against the generator's truth, on several
+// parameter sets, a moved part, and parts that are not impellers (generated and real).
+#include <aeronc/brep/PartIO.h>
+#include <aeronc/core/Error.h>
+#include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/testparts/ImpellerGenerator.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Bnd_Box.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "ErrorOf.h"
+
+using namespace aeronc;
+using namespace aeronc::impeller;
+using testparts::ImpellerSpec;
+
+namespace {
+
+constexpr double kDimTol = 1e-3;  // mm, the bound for measured against generated sizes
+
+std::set<int> asSet(const std::vector<int>& v) { return {v.begin(), v.end()}; }
+
+void expectMatchesTruth(const ImpellerFeatures& f, const ImpellerDimensions& d, const testparts::ImpellerTruth& t,
+                        bool splitters) {
+    EXPECT_EQ(f.bladeCount, t.bladeCount);
+    EXPECT_EQ(f.splitterCount, splitters ? t.bladeCount : 0);
+    EXPECT_EQ(f.hub, t.hub);
+    EXPECT_EQ(f.bore, t.bore);
+    EXPECT_EQ(asSet(f.planes), asSet(t.planes));
+    EXPECT_EQ(f.turned, std::vector<int>{t.rim});
+    EXPECT_TRUE(f.holes.empty());
+    ASSERT_EQ(f.blades.size(), t.blades.size());
+    std::map<int, const testparts::BladeTruth*> byShroud;
+    for (const auto& b : t.blades) byShroud[b.shroud] = &b;
+    for (const auto& b : f.blades) {
+        SCOPED_TRACE("blade with shroud face " + std::to_string(b.shroud));
+        ASSERT_TRUE(byShroud.count(b.shroud));
+        const auto& tb = *byShroud[b.shroud];
+        EXPECT_EQ(b.splitter, tb.splitter);
+        EXPECT_EQ(b.pressure, tb.pressure);
+        EXPECT_EQ(b.suction, tb.suction);
+        EXPECT_EQ(b.leading, tb.leading);
+        EXPECT_EQ(b.trailing, tb.trailing);
+        EXPECT_EQ(asSet(b.walls), (std::set<int>{tb.pressure, tb.suction, tb.leading, tb.trailing}));
+        EXPECT_EQ(asSet(b.fillets), asSet(tb.fillets));
+        byShroud.erase(b.shroud);
+    }
+    // Angular order: main and splitter alternate, and the closest shroud pair is adjacent.
+    const int n = static_cast<int>(f.blades.size());
+    for (int i = 0; i < n; ++i) {
+        EXPECT_EQ(f.blades[i].splitter, splitters && i % 2 == 1);
+        if (i > 0) EXPECT_GT(f.blades[i].angleDeg, f.blades[i - 1].angleDeg);
+    }
+    EXPECT_EQ((f.closestPair[0] + 1) % n, f.closestPair[1]);
+
+    EXPECT_NEAR(d.boreDiameter, t.boreDiameter, kDimTol);
+    EXPECT_NEAR(d.boreDepth, t.boreDepth, kDimTol);
+    EXPECT_NEAR(d.filletRadius, t.filletRadius, kDimTol);
+    EXPECT_NEAR(d.bladeHeight, t.bladeHeight, kDimTol);
+    if (splitters) EXPECT_NEAR(d.splitterHeight, t.bladeHeight, kDimTol);
+    EXPECT_NEAR(d.minChannelWidth, t.minChannelWidth, kDimTol);
+    EXPECT_EQ((d.channelBlades[0] + 1) % n, d.channelBlades[1]);
+}
+
+void checkSpec(const ImpellerSpec& spec) {
+    const auto imp = testparts::makeImpeller(spec);
+    const auto f = recogniseImpeller(imp.shape);
+    const auto d = measureImpeller(imp.shape, f);
+    EXPECT_NEAR(f.axisDirection[2], 1, 1e-9);
+    EXPECT_NEAR(d.outerRadius, spec.outerRadius, kDimTol);
+    Bnd_Box box;  // tight box of the exact geometry: the part's extent along Z
+    BRepBndLib::AddOptimal(imp.shape, box, false, false);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    EXPECT_NEAR(d.axialLength, z1 - z0, 1e-2);
+    expectMatchesTruth(f, d, imp.truth, spec.splitters);
+    const auto json = nlohmann::json::parse(impellerToJson(f, d));
+    EXPECT_EQ(json["blades"].size(), imp.truth.blades.size());
+    EXPECT_EQ(json["hub"], imp.truth.hub);
+    EXPECT_DOUBLE_EQ(json["dimensions"]["filletRadius"].get<double>(), d.filletRadius);
+}
+
+ImpellerSpec smallSpec() {
+    ImpellerSpec s;
+    s.bladeCount = 5;
+    return s;
+}
+
+}  // namespace
+
+TEST(ImpellerRecognition, DefaultNineAndNine) { checkSpec(ImpellerSpec{}); }
+
+TEST(ImpellerRecognition, SevenBladesWithoutSplitters) {
+    ImpellerSpec s;
+    s.bladeCount = 7;
+    s.splitters = false;
+    s.wrapDeg = 12, s.leanDeg = 5, s.filletRadius = 1.5, s.bladeThickness = 2.5;
+    s.boreDiameter = 16, s.bladeHeight = 10;
+    checkSpec(s);
+}
+
+TEST(ImpellerRecognition, SixAndSixWrappedAndLeaning) {
+    ImpellerSpec s;
+    s.bladeCount = 6;
+    s.wrapDeg = 15, s.leanDeg = 6, s.filletRadius = 1.8;
+    s.boreDiameter = 24, s.bladeHeight = 14, s.splitterStart = 0.35;
+    checkSpec(s);
+}
+
+// The same part turned and moved: the same faces and sizes, the axis moved with it.
+TEST(ImpellerRecognition, MovedPart) {
+    const auto imp = testparts::makeImpeller(smallSpec());
+    gp_Trsf turn, shift;
+    turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 0.5)), 0.7);
+    shift.SetTranslation(gp_Vec(15, -40, 120));
+    const gp_Trsf move = shift * turn;
+    const TopoDS_Shape moved = BRepBuilderAPI_Transform(imp.shape, move, true).Shape();
+    const auto f = recogniseImpeller(moved);
+    const auto d = measureImpeller(moved, f);
+    expectMatchesTruth(f, d, imp.truth, true);
+    const gp_Dir z = gp_Dir(0, 0, 1).Transformed(move);
+    EXPECT_NEAR(f.axisDirection[0], z.X(), 1e-9);
+    EXPECT_NEAR(f.axisDirection[1], z.Y(), 1e-9);
+    EXPECT_NEAR(f.axisDirection[2], z.Z(), 1e-9);
+}
+
+TEST(ImpellerRecognition, UnequalBladeGroups) {
+    ImpellerSpec s = smallSpec();
+    s.omitSplitter = 2;
+    const auto imp = testparts::makeImpeller(s);
+    const std::string msg = test::inputErrorOf([&] { recogniseImpeller(imp.shape); });
+    EXPECT_EQ(msg.rfind("unequal blade groups:", 0), 0u) << msg;
+    EXPECT_NE(msg.find("a blade is missing or differs"), std::string::npos) << msg;
+}
+
+TEST(ImpellerRecognition, MissingHub) {
+    ImpellerSpec s = smallSpec();
+    s.filletRadius = 0;  // blades standing on the hub with sharp roots: nothing tangent to the hub
+    const auto imp = testparts::makeImpeller(s);
+    const std::string msg = test::inputErrorOf([&] { recogniseImpeller(imp.shape); });
+    EXPECT_EQ(msg.rfind("missing hub:", 0), 0u) << msg;
+}
+
+TEST(ImpellerRecognition, NotAnImpeller) {
+    // A panel: many faces of equal area, none repeated about an axis.
+    const auto panel = testparts::makePanel(testparts::PanelSpec{});
+    std::string msg = test::inputErrorOf([&] { recogniseImpeller(panel.shape); });
+    EXPECT_EQ(msg.rfind("not an impeller: no rotational pattern", 0), 0u) << msg;
+    // A plain disc with a bore: of revolution, but no pattern.
+    BRepBuilderAPI_MakePolygon profile(gp_Pnt(10, 0, 0), gp_Pnt(50, 0, 0), gp_Pnt(50, 0, 20), gp_Pnt(10, 0, 20), true);
+    const TopoDS_Shape disc = BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeFace(profile.Wire()).Face(),
+                                                    gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)))
+                                  .Shape();
+    msg = test::inputErrorOf([&] { recogniseImpeller(disc); });
+    EXPECT_EQ(msg.rfind("not an impeller: no rotational pattern", 0), 0u) << msg;
+    msg = test::inputErrorOf([&] { recogniseImpeller(TopoDS_Shape()); });
+    EXPECT_EQ(msg.rfind("not an impeller", 0), 0u) << msg;
+}
+
+// The real parts are no impellers: each is refused with one of the three reasons, none crashes.
+TEST(ImpellerRecognition, RealPartsAreRefused) {
+    int parts = 0;
+    for (const char* sub : {"nist", "real"}) {
+        for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(AERONC_SHARED_DATA) / sub)) {
+            const auto ext = e.path().extension().string();
+            if (ext != ".stp" && ext != ".step") continue;
+            SCOPED_TRACE(e.path().string());
+            const TopoDS_Shape part = loadPart(e.path().string());
+            const std::string msg = test::inputErrorOf([&] { recogniseImpeller(part); });
+            const bool known = msg.rfind("not an impeller", 0) == 0 || msg.rfind("unequal blade groups", 0) == 0 ||
+                               msg.rfind("missing hub", 0) == 0;
+            EXPECT_TRUE(known) << msg;
+            ++parts;
+        }
+    }
+    EXPECT_GE(parts, 10);
+}

@@ -1,0 +1,136 @@
+// 5-axis toolpaths of a generated 2 x 9 impeller with the tools its route chooses: no gouge
+// deeper than 0.01 mm into the blades or the hub and no holder collision, checked on the
+// generated moves and again on the program written as APT and read back; roughing keeps its
+// allowance; the program posts for the AC cradle 840D machine under TRAORI.
+#include <aeronc/core/Error.h>
+#include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/kb/ImpellerRoute.h>
+#include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kinematics/MachineModel.h>
+#include <aeronc/post/Apt.h>
+#include <aeronc/post/Post.h>
+#include <aeronc/testparts/ImpellerGenerator.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "ErrorOf.h"
+
+using namespace aeronc;
+using namespace aeronc::impellerpath;
+
+namespace {
+
+constexpr double kGougeLimit = 0.01;  // mm, the bound
+
+CutterShape cutterOf(const impeller::CuttingTool& t, int number, double shankRadius) {
+    CutterShape c;
+    c.id = t.id;
+    c.number = number;
+    c.tipRadius = t.diameter / 2;
+    c.taperDeg = t.taperDeg;
+    c.fluteLength = t.fluteLength;
+    c.reach = t.reach;
+    c.shankRadius = shankRadius;
+    c.rpm = 12000;
+    c.feed = 1200;
+    return c;
+}
+
+struct Programmed {
+    testparts::Impeller part = testparts::makeImpeller(testparts::ImpellerSpec{});
+    impeller::ImpellerFeatures features = impeller::recogniseImpeller(part.shape);
+    impeller::ImpellerDimensions dims = impeller::measureImpeller(part.shape, features);
+    CutterShape rougher, finisher;
+    Programmed() {
+        const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_paths.sqlite";
+        std::filesystem::remove(path);
+        const auto kb =
+            kb::KnowledgeBase::openWithSqlFolder(path.string(), [] { return std::string(AERONC_RESOURCES) + "/kb"; });
+        const auto route = kb::planImpellerRoute(kb, features, dims);
+        for (const auto& s : route.steps) {
+            // Shank: the tool's own diameter for a ball; the tapered ball's is in its table (8 to 10 mm).
+            if (s.operation == "rough_channels") rougher = cutterOf(*s.tool, 1, s.tool->diameter / 2);
+            if (s.operation == "finish_blades") finisher = cutterOf(*s.tool, 2, 4.0);
+        }
+    }
+};
+
+PathOptions quick() {
+    PathOptions o;
+    o.stations = 6;
+    o.channels = 2;  // one channel of each kind: main to splitter, splitter to main
+    return o;
+}
+
+}  // namespace
+
+TEST(ImpellerToolpaths, NoGougeNoCollisionPostedUnderTraori) {
+    Programmed s;
+    ASSERT_EQ(s.rougher.id.rfind("EM-BALL", 0), 0u) << s.rougher.id;
+    ASSERT_GT(s.finisher.taperDeg, 0);
+    const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, s.rougher, s.finisher, quick());
+    ASSERT_EQ(prog.operations.size(), 3u);
+    for (const auto& op : prog.operations) {
+        SCOPED_TRACE(op.name);
+        int cutting = 0;
+        for (const auto& m : op.moves) {
+            EXPECT_NEAR(m.axis.norm(), 1, 1e-9);
+            EXPECT_GT(m.axis.dot(kinematics::Vec3::UnitZ()), 0.5);  // reachable from above
+            cutting += !m.rapid;
+        }
+        EXPECT_GT(cutting, 10);
+    }
+    EXPECT_GT(prog.check.positions, 100);
+    EXPECT_LE(prog.check.maxGouge, kGougeLimit) << prog.check.worstAt[0] << " " << prog.check.worstAt[1] << " "
+                                                 << prog.check.worstAt[2];
+    EXPECT_EQ(prog.check.holderCollisions, 0);
+
+    // Written as APT, read back, checked again.
+    const std::string apt = post::writeApt(toClProgram(prog, "IMPELLER"));
+    const auto reread = movesOf(post::readApt(apt), std::vector<CutterShape>{s.rougher, s.finisher});
+    ASSERT_EQ(reread.size(), 3u);
+    const auto again = checkProgram(s.part.shape, s.features, reread);
+    EXPECT_EQ(again.positions, prog.check.positions);
+    EXPECT_LE(again.maxGouge, kGougeLimit);
+    EXPECT_EQ(again.holderCollisions, 0);
+    // Roughing leaves its allowance: a ball grown by it (less 0.01 mm) touches nothing.
+    CutterShape grown = s.rougher;
+    grown.tipRadius += quick().roughAllowance - 0.01;
+    grown.fluteLength += quick().roughAllowance;
+    grown.shankRadius = grown.tipRadius;
+    EXPECT_LE(checkProgram(s.part.shape, s.features, {{grown, reread[0].second}}).maxGouge, 0.0);
+
+    // Posted for the AC cradle machine with the 840D: TRAORI around the simultaneous moves.
+    const auto machine = kinematics::loadMachineFile(std::string(AERONC_MACHINES) + "/AC-5AX.json");
+    post::NcOptions nc;
+    nc.programName = "IMPELLER";
+    const auto posted = post::postApt(apt, machine, nc, {});
+    EXPECT_NE(posted.text.find("TRAORI"), std::string::npos);
+    EXPECT_NE(posted.text.find("TRAFOOF"), std::string::npos);
+    EXPECT_NE(posted.text.find("M30"), std::string::npos);
+    EXPECT_GE(posted.moves, reread[0].second.size() + reread[1].second.size() + reread[2].second.size());
+}
+
+// A cutter whose holder is too fat for the channel is reported, not hidden; a roughing ball
+// wider than the channel is refused.
+TEST(ImpellerToolpaths, CollisionsReportedAndTooWideRefused) {
+    Programmed s;
+    CutterShape fat = s.finisher;
+    fat.fluteLength = 6;
+    fat.shankRadius = 9;
+    PathOptions o = quick();
+    o.channels = 1;
+    o.stations = 4;
+    o.maxTiltDeg = 4;
+    const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, s.rougher, fat, o);
+    EXPECT_GT(prog.check.holderCollisions, 0);
+
+    CutterShape wide = s.rougher;
+    wide.tipRadius = wide.shankRadius = s.dims.minChannelWidth / 2;
+    const std::string msg = test::inputErrorOf([&] { impellerToolpaths(s.part.shape, s.features, s.dims, wide, s.finisher, o); });
+    EXPECT_NE(msg.find("wider than the narrowest channel"), std::string::npos) << msg;
+}

@@ -1,0 +1,82 @@
+"""Impeller recognition through FreeCAD: a generated impeller crosses to the core as FreeCAD's
+BREP text, and the roles come back as FaceN of the FreeCAD shape, as the generator's truth says;
+parts that are no impellers are refused with the reason."""
+import unittest
+
+import Part
+
+from aeronc import impeller
+from aeronc.errors import RecognitionError
+
+SPEC = {"bladeCount": 5, "filletRadius": 2.0, "bladeHeight": 11.0}
+
+
+class ImpellerRecognitionTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.shape, cls.truth = impeller.make_test_impeller(SPEC)
+        cls.result = impeller.recognise(cls.shape)
+
+    def test_roles_match_truth(self):
+        r, t = self.result, self.truth
+        self.assertEqual(len(self.shape.Faces), r["faceCount"])
+        self.assertEqual((r["bladeCount"], r["splitterCount"]), (5, 5))
+        self.assertEqual((r["hub"], r["bore"]), (t["hub"], t["bore"]))
+        self.assertEqual(sorted(r["planes"]), sorted(t["planes"]))
+        truth_by_shroud = {b["shroud"]: b for b in t["blades"]}
+        for b in r["blades"]:
+            tb = truth_by_shroud.pop(b["shroud"])
+            self.assertEqual(b["kind"] == "splitter", tb["splitter"])
+            for key in ("pressure", "suction", "leading", "trailing"):
+                self.assertEqual(b[key], tb[key], key)
+            self.assertEqual(sorted(b["fillets"]), sorted(tb["fillets"]))
+        self.assertEqual(truth_by_shroud, {})
+
+    def test_faces_are_freecad_face_numbers(self):
+        # The bore is FaceN's cylinder of the bore's radius, the hub the face of the most edges.
+        bore = self.shape.Faces[self.result["bore"] - 1]
+        self.assertAlmostEqual(bore.Surface.Radius, 10.0, places=9)
+        hub = self.shape.Faces[self.result["hub"] - 1]
+        self.assertEqual(max(len(f.Edges) for f in self.shape.Faces), len(hub.Edges))
+
+    def test_dimensions_match_truth(self):
+        d, t = self.result["dimensions"], self.truth
+        for key in ("boreDiameter", "boreDepth", "filletRadius", "bladeHeight", "minChannelWidth"):
+            self.assertAlmostEqual(d[key], t[key], delta=1e-3, msg=key)
+
+    def test_roles_cover_every_face(self):
+        roles = impeller.face_roles(self.result)
+        self.assertEqual(sorted(roles), list(range(1, len(self.shape.Faces) + 1)))
+
+    def test_blank_and_route(self):
+        import os
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            result, blank = impeller.program_data(self.shape, 3.0, kb_path=os.path.join(d, "kb.sqlite"))
+        self.assertTrue(blank.isValid())
+        # The blank holds the part and is the outer profile grown by the allowance.
+        self.assertLess(self.shape.cut(blank).Volume, 1e-6 * self.shape.Volume)
+        self.assertGreater(blank.Volume, self.shape.Volume)
+        # (A revolved polygon: planes and cylinders, so its bounding box is tight.)
+        box = blank.BoundBox
+        self.assertAlmostEqual(box.ZLength, result["dimensions"]["axialLength"] + 6.0, delta=1e-2)
+        self.assertAlmostEqual(box.XLength / 2, 60.0 + 3.0 + 0.02, delta=1e-2)
+        self.assertAlmostEqual(max(result["blank"]["radius"]), 60.0 + 3.0 + 0.02, delta=1e-6)
+        ops = [s["operation"] for s in result["route"]["steps"]]
+        self.assertEqual(ops[:2], ["turn", "face"])
+        self.assertIn("rough_channels", ops)
+        rough = result["route"]["steps"][ops.index("rough_channels")]
+        self.assertEqual(rough["tool"]["type"], "ball")
+        self.assertLessEqual(rough["tool"]["diameter"], result["dimensions"]["minChannelWidth"])
+
+    def test_not_an_impeller(self):
+        with self.assertRaisesRegex(RecognitionError, "not an impeller: no rotational pattern"):
+            impeller.recognise(Part.makeBox(10, 20, 30))
+
+    def test_not_a_solid(self):
+        with self.assertRaisesRegex(RecognitionError, "not a solid"):
+            impeller.recognise(Part.makeBox(10, 20, 30).Faces[0])
+
+    def test_bad_spec(self):
+        with self.assertRaisesRegex(RecognitionError, "unknown key blades"):
+            impeller.make_test_impeller({"blades": 4})
