@@ -44,7 +44,9 @@ public:
 
     DomainTree run() {
         axes_ = principalAxes(faces_, tol_);
-        edgeChamfers_ = findEdgeChamfers(faces_, tol_, axes_);
+        EdgeCuts cuts = findEdgeChamfers(faces_, tol_, axes_);
+        edgeChamfers_ = std::move(cuts.chamfers);
+        edgeStepWalls_ = std::move(cuts.stepWalls);
         chains_ = findHoleChains(faces_, tol_);
         for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
         if (opt_.directions.empty()) {
@@ -85,6 +87,7 @@ private:
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
     std::vector<Vec3> axes_;     // principal axes
     std::vector<bool> edgeChamfers_;  // per face: a chamfer on an edge of the blank
+    std::vector<bool> edgeStepWalls_;  // per face: the slanted wall of a blind step across an edge
     RegionWidths widths_;
     std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
     std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
@@ -137,6 +140,7 @@ private:
     void runAuto() {
         SetupDirectionSearch search(faces_, tol_);
         search.setAside(edgeChamfers_);
+        search.setAside(edgeStepWalls_);
         for (int round = 0; round < 12; ++round) {
             const std::optional<Vec3> d = search.next(claimed_);
             if (!d) break;
