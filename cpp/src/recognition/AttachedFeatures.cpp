@@ -64,19 +64,10 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
             for (int n : faces[w - 1].neighbours) {
                 if (inLoops.count(n + 1) || seen.count(n)) continue;
                 const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
-                if (s.att != Attitude::Inclined) continue;
-                // A chamfer bevels the wall into a face square to the axis (the top, the floor,
-                // the face an opening leaves by); a slanted face between walls only is the
-                // wall of another feature crossing this one.
-                bool bevel = false;
-                for (int m : faces[n].neighbours) {
-                    const FaceInSetup& ms = fs[static_cast<std::size_t>(m)];
-                    bevel = bevel || ((ms.att == Attitude::Up || ms.att == Attitude::Down) &&
-                                      (std::fabs(ms.h - s.hi) <= tol || std::fabs(ms.h - s.lo) <= tol));
+                if (s.att == Attitude::Inclined) {
+                    seen.insert(n);
+                    e.chamferFaces.push_back(n + 1);
                 }
-                if (!bevel) continue;
-                seen.insert(n);
-                e.chamferFaces.push_back(n + 1);
             }
         }
         if (!e.chamferFaces.empty()) {
