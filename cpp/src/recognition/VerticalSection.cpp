@@ -2,6 +2,7 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dAPI_InterCurveCurve.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
@@ -22,41 +23,30 @@ namespace {
 double dotp(const gp_XYZ& a, const Vec3& b) { return a.X() * b[0] + a.Y() * b[1] + a.Z() * b[2]; }
 }  // namespace
 
-bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
-                         BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out) {
-    BRepAdaptor_Surface s(face, false);  // already carries the face's location
-    // The section in (u, v): the points where a*u + b*v = c.
-    double a = 0, b = 0, c = 0;
-    bool cylinder = false;
+namespace {
+
+// A straight line a*u + b*v = c of the face's parameter space where the plane cuts the
+// surface; along it the surface runs straight (rulings, planes) or round an axis parallel to
+// the setup's (arc: a circle of that radius, sampled to the chord tolerance).
+struct IsoLine {
+    double a, b, c;
+    bool arc = false;
     double radius = 0;
-    if (s.GetType() == GeomAbs_Plane) {
-        const gp_Ax3 pos = s.Plane().Position();
-        a = dotp(pos.XDirection().XYZ(), frame.w);
-        b = dotp(pos.YDirection().XYZ(), frame.w);
-        c = h - dotp(pos.Location().XYZ(), frame.w);
-        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1 - 1e-6) return false;  // (nearly) parallel to the slice
-    } else if (s.GetType() == GeomAbs_Cone) {
-        // P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z: height is linear in v.
-        const gp_Cone cone = s.Cone();
-        const gp_Ax3 pos = cone.Position();
-        const double k = dotp(pos.Direction().XYZ(), frame.w);
-        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
-        b = k * std::cos(cone.SemiAngle());
-        c = h - dotp(pos.Location().XYZ(), frame.w);
-        cylinder = true;
-        radius = std::fabs(cone.RefRadius() + (c / b) * std::sin(cone.SemiAngle()));
-    } else if (s.GetType() == GeomAbs_Cylinder) {
-        const gp_Ax3 pos = s.Cylinder().Position();
-        const double k = dotp(pos.Direction().XYZ(), frame.w);
-        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
-        b = k;
-        c = h - dotp(pos.Location().XYZ(), frame.w);
-        cylinder = true;
-        radius = s.Cylinder().Radius();
-    } else {
-        return false;
-    }
+};
+
+// The values x + 2*pi*k inside [lo, hi] (a periodic parameter put into the face's range).
+void periodicIn(double x, double lo, double hi, std::vector<double>& out) {
+    const double eps = 1e-9;
+    x += 2 * M_PI * std::ceil((lo - eps - x) / (2 * M_PI));
+    for (; x <= hi + eps; x += 2 * M_PI) out.push_back(x);
+}
+
+// Where the section crosses the face along one iso-line: appends the pieces inside the face
+// to out; false when OCCT must decide (the line runs along a boundary curve).
+bool sectionAlong(const IsoLine& L, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
+                  BRepTopAdaptor_FClass2d& cls, const BRepAdaptor_Surface& s, const SetupFrame& frame,
+                  double chordTol, std::vector<std::vector<P2>>& out) {
+    const double a = L.a, b = L.b, c = L.c;
     const double n = std::hypot(a, b);
     if (n < 1e-12) return false;
     // Line through the point closest to the origin, along (-b, a): parameter t along it.
@@ -128,10 +118,10 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
         const double t0 = ts[k], t1 = ts[k + 1];
         if (cls.Perform(uv(0.5 * (t0 + t1))) != TopAbs_IN) continue;
         std::vector<P2> pts;
-        if (cylinder) {
+        if (L.arc) {
             // t runs along u (the angle) up to the sign of the direction.
             const double span = std::fabs(t1 - t0) * std::fabs(dir.X());
-            const double step = radius > chordTol ? 2 * std::acos(1 - chordTol / radius) : span;
+            const double step = L.radius > chordTol ? 2 * std::acos(1 - chordTol / L.radius) : span;
             const int m = std::max(1, static_cast<int>(std::ceil(span / std::max(step, 1e-6))));
             for (int i = 0; i <= m; ++i) pts.push_back(at(t0 + (t1 - t0) * i / m));
         } else {
@@ -139,6 +129,79 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
         }
         out.push_back(std::move(pts));
     }
+    return true;
+}
+
+}  // namespace
+
+bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
+                         BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame, double h, double chordTol,
+                         std::vector<std::vector<P2>>& out) {
+    BRepAdaptor_Surface s(face, false);  // already carries the face's location
+    std::vector<IsoLine> lines;
+    // The face's parameter range, for the periodic parameters of round surfaces.
+    auto range = [&](bool u, double& lo, double& hi) {
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        lo = u ? u0 : v0, hi = u ? u1 : v1;
+    };
+    if (s.GetType() == GeomAbs_Plane) {
+        const gp_Ax3 pos = s.Plane().Position();
+        if (std::fabs(dotp(pos.Direction().XYZ(), frame.w)) > 1 - 1e-6) return false;  // (nearly) parallel to the slice
+        lines.push_back({dotp(pos.XDirection().XYZ(), frame.w), dotp(pos.YDirection().XYZ(), frame.w),
+                         h - dotp(pos.Location().XYZ(), frame.w)});
+    } else if (s.GetType() == GeomAbs_Cone) {
+        // P(u, v) = O + (R + v sin a)(cos u X + sin u Y) + v cos a Z: height is linear in v.
+        const gp_Cone cone = s.Cone();
+        const gp_Ax3 pos = cone.Position();
+        const double k = dotp(pos.Direction().XYZ(), frame.w);
+        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
+        const double b = k * std::cos(cone.SemiAngle()), c = h - dotp(pos.Location().XYZ(), frame.w);
+        lines.push_back({0, b, c, true, std::fabs(cone.RefRadius() + (c / b) * std::sin(cone.SemiAngle()))});
+    } else if (s.GetType() == GeomAbs_Cylinder) {
+        const gp_Ax3 pos = s.Cylinder().Position();
+        const double r = s.Cylinder().Radius();
+        const double k = dotp(pos.Direction().XYZ(), frame.w);
+        const double c = h - dotp(pos.Location().XYZ(), frame.w);
+        if (std::fabs(std::fabs(k) - 1) <= 1e-9) {
+            lines.push_back({0, k, c, true, r});
+        } else if (std::fabs(k) <= 1e-9) {
+            // Axis square to the setup's (a floor fillet, a cross hole): the height is
+            // r cos(u - phi), so the plane cuts along the rulings u = phi +- acos(c / r).
+            const double phi = std::atan2(dotp(pos.YDirection().XYZ(), frame.w), dotp(pos.XDirection().XYZ(), frame.w));
+            const double q = c / r;
+            if (std::fabs(q) >= 1) return true;  // above or below it, or touching along a ruling
+            double lo, hi;
+            range(true, lo, hi);
+            std::vector<double> us;
+            for (double u : {phi + std::acos(q), phi - std::acos(q)}) periodicIn(u, lo, hi, us);
+            for (double u : us) lines.push_back({1, 0, u});
+        } else {
+            return false;
+        }
+    } else if (s.GetType() == GeomAbs_Torus || s.GetType() == GeomAbs_Sphere) {
+        // About an axis parallel to the setup's: the height is r sin v (plus the centre's), so
+        // the plane cuts along the circles v = asin(c / r) and pi - asin(c / r).
+        const bool torus = s.GetType() == GeomAbs_Torus;
+        const gp_Ax3 pos = torus ? s.Torus().Position() : s.Sphere().Position();
+        const double r = torus ? s.Torus().MinorRadius() : s.Sphere().Radius();
+        const double R = torus ? s.Torus().MajorRadius() : 0;
+        const double k = dotp(pos.Direction().XYZ(), frame.w);
+        if (std::fabs(std::fabs(k) - 1) > 1e-9) return false;
+        const double q = (h - dotp(pos.Location().XYZ(), frame.w)) / (k * r);
+        if (std::fabs(q) >= 1) return true;
+        double lo, hi;
+        range(false, lo, hi);
+        std::vector<double> vs;
+        for (double v : {std::asin(q), M_PI - std::asin(q)}) periodicIn(v, lo, hi, vs);
+        for (double v : vs) lines.push_back({0, 1, v, true, std::fabs(R + r * std::cos(v))});
+    } else {
+        return false;
+    }
+    std::vector<std::vector<P2>> pieces;
+    for (const IsoLine& L : lines)
+        if (!sectionAlong(L, boundaryUV, cls, s, frame, chordTol, pieces)) return false;
+    for (auto& p : pieces) out.push_back(std::move(p));
     return true;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Fast section of a face with the plane h = const, done in the face's parameter space where
-// the section is a straight line: planes not parallel to the slice, cylinders and cones
-// about the setup axis. Other faces go through OCCT's general section.
+// the section is straight lines: planes not parallel to the slice, cylinders and cones about
+// the setup axis, cylinders square to it (along their rulings), tori and spheres about it
+// (along their circles). Other faces are meshed (MeshSection) or go through OCCT's section.
 #include <aeronc/recognition/SetupFrame.h>
 
 #include <BRepTopAdaptor_FClass2d.hxx>
