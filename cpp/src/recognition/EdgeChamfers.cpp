@@ -11,6 +11,7 @@ EdgeCuts findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, con
     EdgeCuts out;
     out.chamfers.assign(static_cast<std::size_t>(faces.size()), false);
     out.stepWalls = out.chamfers;
+    out.boxSides = out.chamfers;
     // Three axes, one of each ± pair.
     std::vector<Vec3> frame;
     for (const Vec3& a : axes) {
@@ -32,6 +33,12 @@ EdgeCuts findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, con
     for (int i = 0; i < faces.size(); ++i) {
         const FaceInfo& f = faces[i];
         if (f.kind != SurfaceKind::Plane) continue;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& a = frame[static_cast<std::size_t>(k)];
+            const double c = dot(f.normal, a), h = dot(f.planePoint, a);
+            if (c >= tol.parallelCos) out.boxSides[static_cast<std::size_t>(i)] = std::fabs(h - hi[static_cast<std::size_t>(k)]) <= lin;
+            if (c <= -tol.parallelCos) out.boxSides[static_cast<std::size_t>(i)] = std::fabs(h - lo[static_cast<std::size_t>(k)]) <= lin;
+        }
         // Square to one axis, slanted to the other two.
         int along = -1, slanted = 0;
         for (int k = 0; k < 3; ++k) {

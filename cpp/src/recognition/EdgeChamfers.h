@@ -14,6 +14,7 @@ namespace aeronc::recognition {
 struct EdgeCuts {
     std::vector<bool> chamfers;   // per face: a chamfer on an edge of the blank
     std::vector<bool> stepWalls;  // per face: the slanted wall of a blind step across an edge
+    std::vector<bool> boxSides;   // per face: a plane on a side of the part's box (the blank's own)
 };
 
 // axes: the part's principal axes (± pairs, as principalAxes gives them).

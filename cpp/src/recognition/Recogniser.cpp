@@ -40,6 +40,7 @@ public:
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
         claimed_.assign(static_cast<std::size_t>(faces_.size()), false);
+        chamferOf_.assign(static_cast<std::size_t>(faces_.size()), -1);
     }
 
     DomainTree run() {
@@ -47,6 +48,7 @@ public:
         EdgeCuts cuts = findEdgeChamfers(faces_, tol_, axes_);
         edgeChamfers_ = std::move(cuts.chamfers);
         edgeStepWalls_ = std::move(cuts.stepWalls);
+        boxSides_ = std::move(cuts.boxSides);
         chains_ = findHoleChains(faces_, tol_);
         for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
         if (opt_.directions.empty()) {
@@ -84,10 +86,12 @@ private:
     MeshSection meshes_;
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
+    std::vector<int> chamferOf_;  // per face: the element whose chamfer it is (not in claimed_), or -1
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
     std::vector<Vec3> axes_;     // principal axes
     std::vector<bool> edgeChamfers_;  // per face: a chamfer on an edge of the blank
     std::vector<bool> edgeStepWalls_;  // per face: the slanted wall of a blind step across an edge
+    std::vector<bool> boxSides_;  // per face: on a side of the part's box
     RegionWidths widths_;
     std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
     std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
@@ -142,7 +146,10 @@ private:
         search.setAside(edgeChamfers_);
         search.setAside(edgeStepWalls_);
         for (int round = 0; round < 12; ++round) {
-            const std::optional<Vec3> d = search.next(claimed_);
+            // A chamfer calls for no direction of its own.
+            std::vector<bool> machined = claimed_;
+            for (std::size_t i = 0; i < machined.size(); ++i) machined[i] = machined[i] || chamferOf_[i] >= 0;
+            const std::optional<Vec3> d = search.next(machined);
             if (!d) break;
             progressBase_ = std::min(0.9, 0.45 * round);
             progressSpan_ = round == 0 ? 0.45 : 0.1;
@@ -194,7 +201,7 @@ private:
         }
         progress(1.0, "linking " + setup.name);
         linkPocketTree(made, tol_.linear);
-        attachElementFeatures(made, view);
+        attachElementFeatures(made, view, boxSides_);
         recogniseHoles(made, view);
         addChainHoles(made, view, chains_, chainTaken_, claimed_);
         recogniseCounterbores(made, view);
@@ -205,7 +212,7 @@ private:
         for (std::size_t i = 0; i < reserved.size(); ++i) reserved[i] = reserved[i] || edgeChamfers_[i];
         releaseReservedFaces(made, reserved);
 
-        claimFaces(made, setup, claimed_, tree_);
+        claimFaces(made, setup, claimed_, chamferOf_, tree_);
         tree_.setups.push_back(std::move(setup));
     }
 };
