@@ -10,8 +10,7 @@
 namespace aeronc::recognition {
 
 AxisRays::AxisRays(const FaceCatalogue& faces, const SetupFrame& frame)
-    : faces_(faces), frame_(frame), lo_(faces.size()), hi_(faces.size()), h0_(faces.size()), h1_(faces.size()),
-      hit_(faces.size()) {
+    : faces_(faces), frame_(frame), lo_(faces.size()), hi_(faces.size()), h0_(faces.size()), h1_(faces.size()) {
     P2 all0{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
     P2 all1{-all0.x, -all0.y};
     for (int i = 0; i < faces.size(); ++i) {
@@ -87,11 +86,10 @@ double AxisRays::cast(const Vec3& p, bool up, bool any) {
             if (faces_.classifyUV(i, u, v) != TopAbs_OUT) best = t;
             continue;
         }
-        auto& x = hit_[static_cast<std::size_t>(i)];
-        if (!x) x = std::make_unique<IntCurvesFace_Intersector>(f.face, 1e-7);
-        x->Perform(ray, 0, best);
-        for (int k = 1; k <= x->NbPnt(); ++k)
-            if (x->State(k) != TopAbs_OUT) best = std::min(best, x->WParameter(k));
+        IntCurvesFace_Intersector& x = faces_.intersector(i);
+        x.Perform(ray, 0, best);
+        for (int k = 1; k <= x.NbPnt(); ++k)
+            if (x.State(k) != TopAbs_OUT) best = std::min(best, x.WParameter(k));
     }
     return best;
 }

@@ -232,6 +232,17 @@ BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
     return *c;
 }
 
+IntCurvesFace_Intersector& FaceCatalogue::intersector(int i) const {
+    std::lock_guard<std::recursive_mutex> lock(cache_);
+    const std::size_t w = static_cast<std::size_t>(workerSlot());
+    if (intersectors_.size() <= w) intersectors_.resize(w + 1);
+    auto& mine = intersectors_[w];
+    if (mine.empty()) mine.resize(faces_.size());
+    auto& x = mine[static_cast<std::size_t>(i)];
+    if (!x) x = std::make_unique<IntCurvesFace_Intersector>(faces_[static_cast<std::size_t>(i)].face, 1e-7);
+    return *x;
+}
+
 bool FaceCatalogue::WirePolygon::contains(double u, double v) const {
     if (u < u0 || u > u1 || v < v0 || v > v1) return false;
     bool in = false;

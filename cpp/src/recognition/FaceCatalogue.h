@@ -8,6 +8,7 @@
 #include <gp_Pln.hxx>
 #include <TopoDS_Shape.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <IntCurvesFace_Intersector.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
 #include <memory>
 #include <mutex>
@@ -64,6 +65,9 @@ public:
     // Classifier of points in face i's parameter space, built once per face and worker (a
     // classifier keeps a cursor into its sequences, so threads cannot share one).
     BRepTopAdaptor_FClass2d& classifier(int i) const;
+    // Intersector of lines with face i, built once per face and worker, whatever the line's
+    // direction: the setups and the direction search share it.
+    IntCurvesFace_Intersector& intersector(int i) const;
     // Where a point of face i's parameter space lies: IN, OUT or ON. Faces with many
     // edges (a panel's top face with its pockets) use an index of their wires as polygons,
     // the rest OCCT's classifier.
@@ -81,6 +85,7 @@ private:
     std::vector<std::vector<Vec3>> edgePoints_;  // per face: points along its boundary
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::vector<std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>> classifiers_;  // by worker
+    mutable std::vector<std::vector<std::unique_ptr<IntCurvesFace_Intersector>>> intersectors_;  // by worker
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
     struct WirePolygon {
         std::vector<std::pair<double, double>> pts;

@@ -44,6 +44,7 @@ public:
     }
 
     DomainTree run() {
+        const auto t0 = std::chrono::steady_clock::now();
         axes_ = principalAxes(faces_, tol_);
         EdgeCuts cuts = findEdgeChamfers(faces_, tol_, axes_);
         edgeChamfers_ = std::move(cuts.chamfers);
@@ -51,6 +52,7 @@ public:
         boxSides_ = std::move(cuts.boxSides);
         chains_ = findHoleChains(faces_, tol_);
         for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
+        trace("axes, edge chamfers, hole chains", t0);
         if (opt_.directions.empty()) {
             reserveChainFaces({});
             runAuto();
@@ -66,6 +68,7 @@ public:
                 runSetup(dirs[k]);
             }
         }
+        const auto tr = std::chrono::steady_clock::now();
         assignFaceRoles(tree_, faces_, tol_);
         // The blank's edge chamfers no element took are chamfers of the part itself.
         std::vector<bool> accounted = onBlank_;
@@ -76,6 +79,8 @@ public:
                 accounted[i] = true;
             }
         reportUnclaimedFaces(tree_, accounted);
+        trace("face roles", tr);
+        trace("recognition", t0);
         return std::move(tree_);
     }
 
@@ -133,6 +138,12 @@ private:
             }
         }
         return out;
+    }
+
+    static void trace(const char* what, std::chrono::steady_clock::time_point since) {
+        if (std::getenv("AERONC_TRACE"))
+            std::fprintf(stderr, "%s: %.3f s\n", what,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count());
     }
 
     void progress(double f, const std::string& stage) {
@@ -200,6 +211,7 @@ private:
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
         progress(1.0, "linking " + setup.name);
+        const auto tl = std::chrono::steady_clock::now();
         linkPocketTree(made, tol_.linear);
         attachElementFeatures(made, view, boxSides_);
         recogniseHoles(made, view);
@@ -213,6 +225,7 @@ private:
         releaseReservedFaces(made, reserved);
 
         claimFaces(made, setup, claimed_, chamferOf_, tree_);
+        trace(("  tree, attached features, holes, widths, claims " + setup.name).c_str(), tl);
         tree_.setups.push_back(std::move(setup));
     }
 };
