@@ -11,7 +11,13 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -160,6 +166,43 @@ TEST(Recognition, FastSectionOfRoundFacesAgreesWithGeneralSection) {
     EXPECT_EQ(fast.faceRoles, general.faceRoles);
     EXPECT_EQ(fast.faceElement, general.faceElement);
     EXPECT_EQ(fast.warnings, general.warnings);  // no section chain left open
+}
+
+// Faces written as B-splines, as many CAD systems export swept walls: a pocket whose wall is
+// a spline swept along Z, held as a B-spline surface, is cut along its iso-curves and gives
+// the elements and roles of OCCT's section.
+TEST(Recognition, FastSectionOfRuledSplinesAgreesWithGeneralSection) {
+    TColgp_Array1OfPnt pts(1, 7);
+    const double xy[7][2] = {{20, 20}, {60, 12}, {90, 30}, {85, 60}, {50, 70}, {25, 55}, {20, 20}};
+    for (int k = 0; k < 7; ++k) pts.SetValue(k + 1, gp_Pnt(xy[k][0], xy[k][1], -1));
+    const Handle(Geom_BSplineCurve) outline = GeomAPI_PointsToBSpline(pts, 3, 3, GeomAbs_C2, 1e-6).Curve();
+    const TopoDS_Face lid = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(outline)).Wire());
+    // Through the block with B-spline walls, then closed from below by a plate: floor at 12.
+    const TopoDS_Shape tool = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakePrism(lid, gp_Vec(0, 0, 32)).Shape()).Shape();
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(110, 90, 30).Shape(), tool);
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(5, 5, 0), 95, 75, 12).Shape()).Shape();
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 22), 10, 102, 10).Shape());  // a step along one side
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    int splines = 0;
+    for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next())
+        splines += BRepAdaptor_Surface(TopoDS::Face(e.Current())).GetType() == GeomAbs_BSplineSurface;
+    ASSERT_GE(splines, 1);
+    const RecogniseOptions o = along({{0, 0, 1}, {1, 0, 0}});
+    const DomainTree fast = recognise(solid, o);
+    setenv("AERONC_GENERAL_SECTION", "1", 1);
+    const DomainTree general = recognise(solid, o);
+    unsetenv("AERONC_GENERAL_SECTION");
+    ASSERT_GE(fast.elements.size(), 2u);  // the pocket and the step
+    ASSERT_EQ(fast.elements.size(), general.elements.size());
+    for (std::size_t k = 0; k < fast.elements.size(); ++k) {
+        EXPECT_EQ(fast.elements[k].type, general.elements[k].type) << k;
+        EXPECT_NEAR(fast.elements[k].level, general.elements[k].level, 1e-9) << k;
+        // Both outlines are polylines within the 0.01 mm chord tolerance of a 200 mm spline.
+        EXPECT_NEAR(fast.elements[k].area, general.elements[k].area, 2.0) << k;
+        EXPECT_EQ(fast.elements[k].contourFaces, general.elements[k].contourFaces) << k;
+    }
+    EXPECT_EQ(fast.faceRoles, general.faceRoles);
+    EXPECT_EQ(fast.warnings, general.warnings);
 }
 
 TEST(Recognition, StepAtEdgeIsOpenPocket) {

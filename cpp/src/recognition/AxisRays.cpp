@@ -39,6 +39,7 @@ AxisRays::AxisRays(const FaceCatalogue& faces, const SetupFrame& frame)
         // A ray along the axis never crosses a cylinder about a parallel axis.
         const FaceInfo& f = faces[i];
         if (f.kind == SurfaceKind::Cylinder && std::fabs(dot(f.axisDir, frame.w)) >= 1 - 1e-12) continue;
+        if (f.ruled && std::fabs(dot(f.ruled->extrusion, frame.w)) >= 1 - 1e-12) continue;  // nor an extrusion along it
         const P2& a = lo_[static_cast<std::size_t>(i)];
         const P2& b = hi_[static_cast<std::size_t>(i)];
         const long long x0 = static_cast<long long>(std::floor(a.x / cell_)), x1 = static_cast<long long>(std::floor(b.x / cell_));

@@ -31,6 +31,28 @@
 namespace aeronc::recognition {
 namespace {
 Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+std::shared_ptr<const RuledSpline> ruledSpline(const TopoDS_Face& face) {
+    const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    if (b.IsNull()) return nullptr;
+    auto r = std::make_shared<RuledSpline>();
+    r->surface = b;
+    if (b->VDegree() == 1 && b->NbVPoles() == 2) r->linearInV = true;
+    else if (b->UDegree() == 1 && b->NbUPoles() == 2) r->linearInV = false;
+    else return nullptr;
+    const int n = r->linearInV ? b->NbUPoles() : b->NbVPoles();
+    auto pole = [&](int i, int row) { return r->linearInV ? b->Pole(i, row) : b->Pole(row, i); };
+    auto weight = [&](int i, int row) { return r->linearInV ? b->Weight(i, row) : b->Weight(row, i); };
+    const gp_XYZ d0 = pole(1, 2).XYZ() - pole(1, 1).XYZ();
+    bool extruded = d0.Modulus() > 1e-9;
+    for (int i = 1; i <= n; ++i) {
+        if (std::fabs(weight(i, 1) - weight(i, 2)) > 1e-12 * std::fabs(weight(i, 1))) return nullptr;
+        const gp_XYZ d = pole(i, 2).XYZ() - pole(i, 1).XYZ();
+        extruded = extruded && (d - d0).Modulus() <= 1e-9 * (1 + d0.Modulus());
+    }
+    if (extruded) r->extrusion = v3(d0 / d0.Modulus());
+    return r;
+}
 }  // namespace
 
 FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
@@ -87,6 +109,10 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
             case GeomAbs_Sphere:
                 f.kind = SurfaceKind::Sphere;
                 f.radius = s.Sphere().Radius();
+                break;
+            case GeomAbs_BSplineSurface:
+                f.kind = SurfaceKind::Other;
+                f.ruled = ruledSpline(f.face);
                 break;
             default:
                 f.kind = SurfaceKind::Other;

@@ -10,6 +10,7 @@
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <IntCurvesFace_Intersector.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -17,6 +18,14 @@
 namespace aeronc::recognition {
 
 enum class SurfaceKind { Plane, Cylinder, Cone, Torus, Sphere, Other };
+
+// A B-spline face of degree 1 in one parameter with two rows of poles (equal weights
+// pairwise): the extrusions and ruled faces CAD systems write for swept profiles and fillets.
+struct RuledSpline {
+    Handle(Geom_BSplineSurface) surface;  // with the face's location applied
+    bool linearInV = true;    // the rows are curves along u at the two ends of v
+    Vec3 extrusion{0, 0, 0};  // unit, when every pole pair differs by the same vector
+};
 
 struct FaceInfo {
     TopoDS_Face face;
@@ -31,6 +40,7 @@ struct FaceInfo {
     bool concave = false;    // cylinder / cone: outward normal points towards the axis
     Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};
     std::vector<int> neighbours;  // 0-based indices of faces sharing an edge
+    std::shared_ptr<const RuledSpline> ruled;  // B-spline linear in one parameter, else null
     mutable double area = -1;     // computed on demand
 };
 

@@ -78,7 +78,7 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
     for (int i : candidates) {
         std::vector<std::vector<P2>> polys;
         if (!onlyOcct && (sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h,
-                                              chordTol, polys) ||
+                                              chordTol, polys, faces[i].ruled.get()) ||
                           (meshes && meshes->section(i, frame, h, polys)))) {
             for (auto& pl : polys) {
                 Piece piece;

@@ -3,6 +3,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRepTools.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2dAPI_InterCurveCurve.hxx>
 #include <Geom2dAdaptor_Curve.hxx>
@@ -32,6 +35,8 @@ struct IsoLine {
     double a, b, c;
     bool arc = false;
     double radius = 0;
+    Handle(Geom_Curve) iso;  // else: the surface along the line, sampled to the chord tolerance
+    bool isoAlongU = true;   // iso's parameter is u (a line v = c), else v (a line u = c)
 };
 
 // The values x + 2*pi*k inside [lo, hi] (a periodic parameter put into the face's range).
@@ -118,7 +123,16 @@ bool sectionAlong(const IsoLine& L, const std::vector<Handle(Geom2d_TrimmedCurve
         const double t0 = ts[k], t1 = ts[k + 1];
         if (cls.Perform(uv(0.5 * (t0 + t1))) != TopAbs_IN) continue;
         std::vector<P2> pts;
-        if (L.arc) {
+        if (!L.iso.IsNull()) {
+            const double q0 = L.isoAlongU ? uv(t0).X() : uv(t0).Y(), q1 = L.isoAlongU ? uv(t1).X() : uv(t1).Y();
+            GeomAdaptor_Curve c(L.iso);
+            GCPnts_QuasiUniformDeflection d(c, chordTol, std::min(q0, q1), std::max(q0, q1));
+            if (!d.IsDone() || d.NbPoints() < 2) return false;
+            for (int i = 1; i <= d.NbPoints(); ++i) {
+                const gp_Pnt p = d.Value(q0 <= q1 ? i : d.NbPoints() + 1 - i);
+                pts.push_back(frame.project({p.X(), p.Y(), p.Z()}));
+            }
+        } else if (L.arc) {
             // t runs along u (the angle) up to the sign of the direction.
             const double span = std::fabs(t1 - t0) * std::fabs(dir.X());
             const double step = L.radius > chordTol ? 2 * std::acos(1 - chordTol / L.radius) : span;
@@ -136,7 +150,7 @@ bool sectionAlong(const IsoLine& L, const std::vector<Handle(Geom2d_TrimmedCurve
 
 bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
                          BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out) {
+                         std::vector<std::vector<P2>>& out, const RuledSpline* ruled) {
     BRepAdaptor_Surface s(face, false);  // already carries the face's location
     std::vector<IsoLine> lines;
     // The face's parameter range, for the periodic parameters of round surfaces.
@@ -195,6 +209,31 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
         std::vector<double> vs;
         for (double v : {std::asin(q), M_PI - std::asin(q)}) periodicIn(v, lo, hi, vs);
         for (double v : vs) lines.push_back({0, 1, v, true, std::fabs(R + r * std::cos(v))});
+    } else if (ruled) {
+        // Each row of poles at one height: the height runs linearly across the rows, so the
+        // plane cuts along one iso-curve.
+        const Geom_BSplineSurface& b = *ruled->surface;
+        const bool inV = ruled->linearInV;
+        const int n = inV ? b.NbUPoles() : b.NbVPoles();
+        auto height = [&](int i, int row) {
+            return dotp((inV ? b.Pole(i, row) : b.Pole(row, i)).XYZ(), frame.w);
+        };
+        const double a0 = height(1, 1), a1 = height(1, 2);
+        const double tol = 1e-9 * (1 + std::fabs(a0) + std::fabs(a1));
+        if (std::fabs(a1 - a0) <= 1e3 * tol) return false;
+        for (int i = 2; i <= n; ++i)
+            if (std::fabs(height(i, 1) - a0) > tol || std::fabs(height(i, 2) - a1) > tol) return false;
+        const double t = (h - a0) / (a1 - a0);
+        if (t <= 0 || t >= 1) return true;  // the plane misses the surface
+        double u0, u1, v0, v1;
+        b.Bounds(u0, u1, v0, v1);
+        IsoLine L{0, 0, 0};
+        if (inV) {
+            L.b = 1, L.c = v0 + t * (v1 - v0), L.iso = b.VIso(L.c), L.isoAlongU = true;
+        } else {
+            L.a = 1, L.c = u0 + t * (u1 - u0), L.iso = b.UIso(L.c), L.isoAlongU = false;
+        }
+        lines.push_back(L);
     } else {
         return false;
     }

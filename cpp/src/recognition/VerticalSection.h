@@ -2,8 +2,11 @@
 // Fast section of a face with the plane h = const, done in the face's parameter space where
 // the section is straight lines: planes not parallel to the slice, cylinders and cones about
 // the setup axis, cylinders square to it (along their rulings), tori and spheres about it
-// (along their circles). Other faces are meshed (MeshSection) or go through OCCT's section.
+// (along their circles), ruled B-splines whose two rows of poles each lie at one height
+// (along their iso-curves). Other faces are meshed (MeshSection) or go through OCCT's section.
 #include <aeronc/recognition/SetupFrame.h>
+
+#include "FaceCatalogue.h"
 
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -16,6 +19,6 @@ namespace aeronc::recognition {
 // not one this handles (the caller then uses the general section).
 bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
                          BRepTopAdaptor_FClass2d& classifier, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out);
+                         std::vector<std::vector<P2>>& out, const RuledSpline* ruled = nullptr);
 
 }  // namespace aeronc::recognition
