@@ -182,6 +182,8 @@ TEST(Recognition, FastSectionOfRuledSplinesAgreesWithGeneralSection) {
     TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(110, 90, 30).Shape(), tool);
     part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(5, 5, 0), 95, 75, 12).Shape()).Shape();
     part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 22), 10, 102, 10).Shape());  // a step along one side
+    // A slot from the +X side ending at x = 50: its level along +X cuts the wall across.
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(50, 78, 25), 61, 8, 10).Shape());
     const TopoDS_Shape solid = validatedSolid(part, "test");
     int splines = 0;
     for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next())
@@ -192,7 +194,7 @@ TEST(Recognition, FastSectionOfRuledSplinesAgreesWithGeneralSection) {
     setenv("AERONC_GENERAL_SECTION", "1", 1);
     const DomainTree general = recognise(solid, o);
     unsetenv("AERONC_GENERAL_SECTION");
-    ASSERT_GE(fast.elements.size(), 2u);  // the pocket and the step
+    ASSERT_GE(fast.elements.size(), 3u);  // the pocket, the step and the slot
     ASSERT_EQ(fast.elements.size(), general.elements.size());
     for (std::size_t k = 0; k < fast.elements.size(); ++k) {
         EXPECT_EQ(fast.elements[k].type, general.elements[k].type) << k;

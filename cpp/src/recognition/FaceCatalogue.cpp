@@ -117,6 +117,8 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
             default:
                 f.kind = SurfaceKind::Other;
         }
+        if (f.kind == SurfaceKind::Cylinder || f.kind == SurfaceKind::Torus || f.kind == SurfaceKind::Sphere || f.ruled)
+            BRepTools::UVBounds(f.face, f.uMin, f.uMax, f.vMin, f.vMax);
         Bnd_Box box;
         BRepBndLib::Add(f.face, box, false);
         double x0, y0, z0, x1, y1, z1;

@@ -41,6 +41,7 @@ struct FaceInfo {
     Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};
     std::vector<int> neighbours;  // 0-based indices of faces sharing an edge
     std::shared_ptr<const RuledSpline> ruled;  // B-spline linear in one parameter, else null
+    double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // parameter range (round surfaces, ruled B-splines)
     mutable double area = -1;     // computed on demand
 };
 

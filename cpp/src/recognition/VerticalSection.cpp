@@ -2,7 +2,6 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
-#include <BRepTools.hxx>
 #include <GCPnts_QuasiUniformDeflection.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -44,6 +43,53 @@ void periodicIn(double x, double lo, double hi, std::vector<double>& out) {
     const double eps = 1e-9;
     x += 2 * M_PI * std::ceil((lo - eps - x) / (2 * M_PI));
     for (; x <= hi + eps; x += 2 * M_PI) out.push_back(x);
+}
+
+// A ruled B-spline cut at height h: along one iso-curve when each row of poles lies at one
+// height (the height runs linearly across the rows), along the rulings where a row is at h
+// when it is extruded square to the axis (a fillet along a floor's edge). False: neither.
+bool ruledLines(const RuledSpline& ruled, const SetupFrame& frame, double h, std::vector<IsoLine>& lines) {
+    const Geom_BSplineSurface& b = *ruled.surface;
+    const bool inV = ruled.linearInV;
+    const int n = inV ? b.NbUPoles() : b.NbVPoles();
+    double u0, u1, v0, v1;
+    b.Bounds(u0, u1, v0, v1);
+    if (norm(ruled.extrusion) > 0 && std::fabs(dot(ruled.extrusion, frame.w)) <= 1e-9) {
+        const Handle(Geom_Curve) row = inV ? b.VIso(v0) : b.UIso(u0);
+        const double q0 = inV ? u0 : v0, q1 = inV ? u1 : v1;
+        auto f = [&](double q) { return dotp(row->Value(q).XYZ(), frame.w) - h; };
+        // Sign changes on a grid finer than the poles, then bisection.
+        const int m = 16 * n;
+        double qa = q0, fa = f(q0);
+        for (int k = 1; k <= m; ++k) {
+            const double qb = q0 + (q1 - q0) * k / m, fb = f(qb);
+            if ((fa < 0) != (fb < 0)) {
+                double lo = qa, hi = qb, flo = fa;
+                for (int it = 0; it < 60 && hi - lo > 1e-14 * (1 + std::fabs(hi)); ++it) {
+                    const double mid = 0.5 * (lo + hi), fm = f(mid);
+                    if ((fm < 0) == (flo < 0)) lo = mid, flo = fm;
+                    else hi = mid;
+                }
+                const double q = 0.5 * (lo + hi);
+                lines.push_back(inV ? IsoLine{1, 0, q} : IsoLine{0, 1, q});
+            }
+            qa = qb, fa = fb;
+        }
+        return true;
+    }
+    auto height = [&](int i, int row) { return dotp((inV ? b.Pole(i, row) : b.Pole(row, i)).XYZ(), frame.w); };
+    const double a0 = height(1, 1), a1 = height(1, 2);
+    const double tol = 1e-9 * (1 + std::fabs(a0) + std::fabs(a1));
+    if (std::fabs(a1 - a0) <= 1e3 * tol) return false;
+    for (int i = 2; i <= n; ++i)
+        if (std::fabs(height(i, 1) - a0) > tol || std::fabs(height(i, 2) - a1) > tol) return false;
+    const double t = (h - a0) / (a1 - a0);
+    if (t <= 0 || t >= 1) return true;  // the plane misses the surface
+    IsoLine L{0, 0, 0};
+    if (inV) L.b = 1, L.c = v0 + t * (v1 - v0), L.iso = b.VIso(L.c), L.isoAlongU = true;
+    else L.a = 1, L.c = u0 + t * (u1 - u0), L.iso = b.UIso(L.c), L.isoAlongU = false;
+    lines.push_back(L);
+    return true;
 }
 
 // Where the section crosses the face along one iso-line: appends the pieces inside the face
@@ -148,16 +194,15 @@ bool sectionAlong(const IsoLine& L, const std::vector<Handle(Geom2d_TrimmedCurve
 
 }  // namespace
 
-bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
+bool sectionVerticalFace(const FaceInfo& info, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
                          BRepTopAdaptor_FClass2d& cls, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out, const RuledSpline* ruled) {
-    BRepAdaptor_Surface s(face, false);  // already carries the face's location
+                         std::vector<std::vector<P2>>& out) {
+    BRepAdaptor_Surface s(info.face, false);  // already carries the face's location
+    const RuledSpline* ruled = info.ruled.get();
     std::vector<IsoLine> lines;
     // The face's parameter range, for the periodic parameters of round surfaces.
     auto range = [&](bool u, double& lo, double& hi) {
-        double u0, u1, v0, v1;
-        BRepTools::UVBounds(face, u0, u1, v0, v1);
-        lo = u ? u0 : v0, hi = u ? u1 : v1;
+        lo = u ? info.uMin : info.vMin, hi = u ? info.uMax : info.vMax;
     };
     if (s.GetType() == GeomAbs_Plane) {
         const gp_Ax3 pos = s.Plane().Position();
@@ -210,30 +255,7 @@ bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2
         for (double v : {std::asin(q), M_PI - std::asin(q)}) periodicIn(v, lo, hi, vs);
         for (double v : vs) lines.push_back({0, 1, v, true, std::fabs(R + r * std::cos(v))});
     } else if (ruled) {
-        // Each row of poles at one height: the height runs linearly across the rows, so the
-        // plane cuts along one iso-curve.
-        const Geom_BSplineSurface& b = *ruled->surface;
-        const bool inV = ruled->linearInV;
-        const int n = inV ? b.NbUPoles() : b.NbVPoles();
-        auto height = [&](int i, int row) {
-            return dotp((inV ? b.Pole(i, row) : b.Pole(row, i)).XYZ(), frame.w);
-        };
-        const double a0 = height(1, 1), a1 = height(1, 2);
-        const double tol = 1e-9 * (1 + std::fabs(a0) + std::fabs(a1));
-        if (std::fabs(a1 - a0) <= 1e3 * tol) return false;
-        for (int i = 2; i <= n; ++i)
-            if (std::fabs(height(i, 1) - a0) > tol || std::fabs(height(i, 2) - a1) > tol) return false;
-        const double t = (h - a0) / (a1 - a0);
-        if (t <= 0 || t >= 1) return true;  // the plane misses the surface
-        double u0, u1, v0, v1;
-        b.Bounds(u0, u1, v0, v1);
-        IsoLine L{0, 0, 0};
-        if (inV) {
-            L.b = 1, L.c = v0 + t * (v1 - v0), L.iso = b.VIso(L.c), L.isoAlongU = true;
-        } else {
-            L.a = 1, L.c = u0 + t * (u1 - u0), L.iso = b.UIso(L.c), L.isoAlongU = false;
-        }
-        lines.push_back(L);
+        if (!ruledLines(*ruled, frame, h, lines)) return false;
     } else {
         return false;
     }

@@ -17,8 +17,8 @@ namespace aeronc::recognition {
 
 // Appends the section polylines of `face` at height h; false when the face's surface is
 // not one this handles (the caller then uses the general section).
-bool sectionVerticalFace(const TopoDS_Face& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
+bool sectionVerticalFace(const FaceInfo& face, const std::vector<Handle(Geom2d_TrimmedCurve)>& boundaryUV,
                          BRepTopAdaptor_FClass2d& classifier, const SetupFrame& frame, double h, double chordTol,
-                         std::vector<std::vector<P2>>& out, const RuledSpline* ruled = nullptr);
+                         std::vector<std::vector<P2>>& out);
 
 }  // namespace aeronc::recognition
