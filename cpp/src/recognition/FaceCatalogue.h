@@ -5,6 +5,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 #include <TopoDS_Shape.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
@@ -94,6 +95,15 @@ private:
     TopTools_IndexedMapOfShape edges_;
     std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
     std::vector<std::vector<Vec3>> edgePoints_;  // per face: points along its boundary
+    // Per edge (1-based): what its height range in any frame needs, in closed form for lines
+    // and arcs (most edges); others are boxed in the frame.
+    struct EdgeShape {
+        enum Kind { None, Line, Arc, Other } kind = None;
+        gp_Pnt a, b;    // line: its ends
+        gp_Circ circle;  // arc: its circle and parameter range
+        double t0 = 0, t1 = 0;
+    };
+    std::vector<EdgeShape> edgeShapes_;
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::vector<std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>> classifiers_;  // by worker
     mutable std::vector<std::vector<std::unique_ptr<IntCurvesFace_Intersector>>> intersectors_;  // by worker
