@@ -12,11 +12,18 @@ labels through their STEP entity names (see shared/data/README.md). Two mappings
 * binary: a face any element machines (floor, wall, fillet, chamfer, hole wall ...)
   is "feature"; top/stock faces are "stock" (label 15);
 * class: the face's element type against the label family
-    closed_pocket          <- rectangular/triangular/6sides_pocket (11, 12, 13)
-    open_pocket            <- through/blind slots and steps (0, 1, 5-10)
-    opening, hole          <- passages (2, 3, 4)
-    chamfer (face role)    <- chamfer (14)
+    closed_pocket          <- triangular/rectangular/6sides_pocket (9, 10, 11)
+    open_pocket            <- through/blind slots and steps (4-8, 12, 13, 14)
+    opening, hole          <- passages (1, 2, 3)
+    chamfer (face role)    <- chamfer (0)
     stock                  <- stock (15)
+
+The label ids follow FeatureNet's feature order with its round features left out (0 chamfer,
+1-3 triangular/rectangular/6-sided passage, 4-5 triangular/rectangular through slot, 6-8
+rectangular/2-sided/slanted through step, 9-11 triangular/rectangular/6-sided pocket, 12
+rectangular blind slot, 13-14 triangular/rectangular blind step, 15 stock): in the sample every
+label 0 is one slanted face on an edge of the block, every label 11 seven faces, every label 1
+three walls round a prism through the part (LABEL_NAMES below; docs/recognition.md has the count).
 """
 import glob
 import json
@@ -26,9 +33,13 @@ import subprocess
 import sys
 import tempfile
 
-FAMILY = {11: "closed", 12: "closed", 13: "closed", 2: "through", 3: "through", 4: "through", 14: "chamfer",
+LABEL_NAMES = ["chamfer", "triangular_passage", "rectangular_passage", "6sides_passage", "triangular_through_slot",
+               "rectangular_through_slot", "rectangular_through_step", "2sides_through_step", "slanted_through_step",
+               "triangular_pocket", "rectangular_pocket", "6sides_pocket", "rectangular_blind_slot",
+               "triangular_blind_step", "rectangular_blind_step", "stock"]
+FAMILY = {9: "closed", 10: "closed", 11: "closed", 1: "through", 2: "through", 3: "through", 0: "chamfer",
           15: "stock"}
-for k in (0, 1, 5, 6, 7, 8, 9, 10):
+for k in (4, 5, 6, 7, 8, 12, 13, 14):
     FAMILY[k] = "open"
 TYPE_FAMILY = {"closed_pocket": "closed", "open_pocket": "open", "opening": "through", "hole": "through"}
 STOCK_ROLES = {"top", "stock", "unclaimed"}

@@ -11,7 +11,15 @@
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp.hxx>
@@ -113,6 +121,90 @@ TEST(Recognition, PocketWithIslandAndHoleInFloor) {
     EXPECT_NEAR(hole->hole->diameter, 12, 1e-6);
     EXPECT_NEAR(hole->hole->depth, 10, 1e-6);
     EXPECT_NEAR(pocket->minWidth, 10, 0.05);  // between the island and the wall
+}
+
+// The fast section of round faces (a cross hole square to the axis, a torus and a sphere
+// about it, the floor fillets of a pocket) gives the elements and roles OCCT's section gives.
+TEST(Recognition, FastSectionOfRoundFacesAgreesWithGeneralSection) {
+    TopoDS_Shape part = BRepPrimAPI_MakeBox(120, 100, 40).Shape();
+    // A pocket with 3 mm floor fillets: cylinders square to Z along the floor's edges.
+    {
+        TopoDS_Shape tool = BRepPrimAPI_MakeBox(gp_Pnt(10, 10, 25), 40, 30, 20).Shape();
+        BRepFilletAPI_MakeFillet f(tool);
+        for (TopExp_Explorer e(tool, TopAbs_EDGE); e.More(); e.Next()) {
+            TopoDS_Vertex v1, v2;
+            TopExp::Vertices(TopoDS::Edge(e.Current()), v1, v2);
+            if (std::fabs(BRep_Tool::Pnt(v1).Z() - 25) < 1e-9 && std::fabs(BRep_Tool::Pnt(v2).Z() - 25) < 1e-9)
+                f.Add(3, TopoDS::Edge(e.Current()));
+        }
+        part = cut(part, f.Shape());
+    }
+    // Sharp pockets whose levels are sliced through the round faces below.
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(10, 55, 12), 30, 30, 30).Shape());  // floor at 12
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(80, 30, 33), 20, 15, 10).Shape());  // floor at 33
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(70, 62, 36), 15, 15, 10).Shape());  // floor at 36
+    // A cross hole along X (z 10 to 16) through the first of them.
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-1, 70, 13), gp_Dir(1, 0, 0)), 3, 122).Shape());
+    // A ball-ended recess (sphere about Z, z 30 to 40) and a ring groove (torus about Z, z 35
+    // to 40), each breaking into the side of one of those pockets.
+    part = cut(part, BRepPrimAPI_MakeSphere(gp_Pnt(95, 25, 40), 10).Shape());
+    part = cut(part, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(95, 75, 40), gp_Dir(0, 0, 1)), 12, 5).Shape());
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    const RecogniseOptions o = along({{0, 0, 1}, {1, 0, 0}});
+    const DomainTree fast = recognise(solid, o);
+    setenv("AERONC_GENERAL_SECTION", "1", 1);
+    const DomainTree general = recognise(solid, o);
+    unsetenv("AERONC_GENERAL_SECTION");
+    ASSERT_GE(fast.elements.size(), 5u);  // four pockets and the hole
+    ASSERT_EQ(fast.elements.size(), general.elements.size());
+    for (std::size_t k = 0; k < fast.elements.size(); ++k) {
+        EXPECT_EQ(fast.elements[k].type, general.elements[k].type) << k;
+        EXPECT_NEAR(fast.elements[k].level, general.elements[k].level, 1e-9) << k;
+        EXPECT_NEAR(fast.elements[k].area, general.elements[k].area, 0.05) << k;
+        EXPECT_EQ(fast.elements[k].contourFaces, general.elements[k].contourFaces) << k;
+    }
+    EXPECT_EQ(fast.faceRoles, general.faceRoles);
+    EXPECT_EQ(fast.faceElement, general.faceElement);
+    EXPECT_EQ(fast.warnings, general.warnings);  // no section chain left open
+}
+
+// Faces written as B-splines, as many CAD systems export swept walls: a pocket whose wall is
+// a spline swept along Z, held as a B-spline surface, is cut along its iso-curves and gives
+// the elements and roles of OCCT's section.
+TEST(Recognition, FastSectionOfRuledSplinesAgreesWithGeneralSection) {
+    TColgp_Array1OfPnt pts(1, 7);
+    const double xy[7][2] = {{20, 20}, {60, 12}, {90, 30}, {85, 60}, {50, 70}, {25, 55}, {20, 20}};
+    for (int k = 0; k < 7; ++k) pts.SetValue(k + 1, gp_Pnt(xy[k][0], xy[k][1], -1));
+    const Handle(Geom_BSplineCurve) outline = GeomAPI_PointsToBSpline(pts, 3, 3, GeomAbs_C2, 1e-6).Curve();
+    const TopoDS_Face lid = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(outline)).Wire());
+    // Through the block with B-spline walls, then closed from below by a plate: floor at 12.
+    const TopoDS_Shape tool = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakePrism(lid, gp_Vec(0, 0, 32)).Shape()).Shape();
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(110, 90, 30).Shape(), tool);
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(5, 5, 0), 95, 75, 12).Shape()).Shape();
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 22), 10, 102, 10).Shape());  // a step along one side
+    // A slot from the +X side ending at x = 50: its level along +X cuts the wall across.
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(50, 78, 25), 61, 8, 10).Shape());
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    int splines = 0;
+    for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next())
+        splines += BRepAdaptor_Surface(TopoDS::Face(e.Current())).GetType() == GeomAbs_BSplineSurface;
+    ASSERT_GE(splines, 1);
+    const RecogniseOptions o = along({{0, 0, 1}, {1, 0, 0}});
+    const DomainTree fast = recognise(solid, o);
+    setenv("AERONC_GENERAL_SECTION", "1", 1);
+    const DomainTree general = recognise(solid, o);
+    unsetenv("AERONC_GENERAL_SECTION");
+    ASSERT_GE(fast.elements.size(), 3u);  // the pocket, the step and the slot
+    ASSERT_EQ(fast.elements.size(), general.elements.size());
+    for (std::size_t k = 0; k < fast.elements.size(); ++k) {
+        EXPECT_EQ(fast.elements[k].type, general.elements[k].type) << k;
+        EXPECT_NEAR(fast.elements[k].level, general.elements[k].level, 1e-9) << k;
+        // Both outlines are polylines within the 0.01 mm chord tolerance of a 200 mm spline.
+        EXPECT_NEAR(fast.elements[k].area, general.elements[k].area, 2.0) << k;
+        EXPECT_EQ(fast.elements[k].contourFaces, general.elements[k].contourFaces) << k;
+    }
+    EXPECT_EQ(fast.faceRoles, general.faceRoles);
+    EXPECT_EQ(fast.warnings, general.warnings);
 }
 
 TEST(Recognition, StepAtEdgeIsOpenPocket) {

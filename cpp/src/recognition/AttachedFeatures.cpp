@@ -9,7 +9,7 @@
 
 namespace aeronc::recognition {
 
-void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& view) {
+void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& view, const std::vector<bool>& boxSides) {
     const FaceCatalogue& faces = view.faces;
     const std::vector<FaceInSetup>& fs = view.fs;
     const double tol = 10 * view.tol.linear;
@@ -64,7 +64,7 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
             for (int n : faces[w - 1].neighbours) {
                 if (inLoops.count(n + 1) || seen.count(n)) continue;
                 const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
-                if (s.att == Attitude::Inclined) {
+                if (s.att == Attitude::Inclined && !boxSides[static_cast<std::size_t>(n)]) {
                     seen.insert(n);
                     e.chamferFaces.push_back(n + 1);
                 }

@@ -10,8 +10,7 @@
 namespace aeronc::recognition {
 
 AxisRays::AxisRays(const FaceCatalogue& faces, const SetupFrame& frame)
-    : faces_(faces), frame_(frame), lo_(faces.size()), hi_(faces.size()), h0_(faces.size()), h1_(faces.size()),
-      hit_(faces.size()) {
+    : faces_(faces), frame_(frame), lo_(faces.size()), hi_(faces.size()), h0_(faces.size()), h1_(faces.size()) {
     P2 all0{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
     P2 all1{-all0.x, -all0.y};
     for (int i = 0; i < faces.size(); ++i) {
@@ -40,6 +39,7 @@ AxisRays::AxisRays(const FaceCatalogue& faces, const SetupFrame& frame)
         // A ray along the axis never crosses a cylinder about a parallel axis.
         const FaceInfo& f = faces[i];
         if (f.kind == SurfaceKind::Cylinder && std::fabs(dot(f.axisDir, frame.w)) >= 1 - 1e-12) continue;
+        if (f.ruled && std::fabs(dot(f.ruled->extrusion, frame.w)) >= 1 - 1e-12) continue;  // nor an extrusion along it
         const P2& a = lo_[static_cast<std::size_t>(i)];
         const P2& b = hi_[static_cast<std::size_t>(i)];
         const long long x0 = static_cast<long long>(std::floor(a.x / cell_)), x1 = static_cast<long long>(std::floor(b.x / cell_));
@@ -87,11 +87,10 @@ double AxisRays::cast(const Vec3& p, bool up, bool any) {
             if (faces_.classifyUV(i, u, v) != TopAbs_OUT) best = t;
             continue;
         }
-        auto& x = hit_[static_cast<std::size_t>(i)];
-        if (!x) x = std::make_unique<IntCurvesFace_Intersector>(f.face, 1e-7);
-        x->Perform(ray, 0, best);
-        for (int k = 1; k <= x->NbPnt(); ++k)
-            if (x->State(k) != TopAbs_OUT) best = std::min(best, x->WParameter(k));
+        IntCurvesFace_Intersector& x = faces_.intersector(i);
+        x.Perform(ray, 0, best);
+        for (int k = 1; k <= x.NbPnt(); ++k)
+            if (x.State(k) != TopAbs_OUT) best = std::min(best, x.WParameter(k));
     }
     return best;
 }

@@ -5,7 +5,6 @@
 
 #include "FaceCatalogue.h"
 
-#include <IntCurvesFace_Intersector.hxx>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -30,7 +29,6 @@ private:
     std::vector<double> h0_, h1_;  // and its height range along the axis
     double cell_ = 1;
     std::unordered_map<long long, std::vector<int>> grid_;
-    std::vector<std::unique_ptr<IntCurvesFace_Intersector>> hit_;
     long long key(long long a, long long b) const { return a * 1000003LL + b; }
 };
 

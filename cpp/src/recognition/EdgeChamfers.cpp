@@ -7,8 +7,11 @@
 
 namespace aeronc::recognition {
 
-std::vector<bool> findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, const std::vector<Vec3>& axes) {
-    std::vector<bool> out(static_cast<std::size_t>(faces.size()), false);
+EdgeCuts findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, const std::vector<Vec3>& axes) {
+    EdgeCuts out;
+    out.chamfers.assign(static_cast<std::size_t>(faces.size()), false);
+    out.stepWalls = out.chamfers;
+    out.boxSides = out.chamfers;
     // Three axes, one of each ± pair.
     std::vector<Vec3> frame;
     for (const Vec3& a : axes) {
@@ -30,6 +33,12 @@ std::vector<bool> findEdgeChamfers(const FaceCatalogue& faces, const Tolerances&
     for (int i = 0; i < faces.size(); ++i) {
         const FaceInfo& f = faces[i];
         if (f.kind != SurfaceKind::Plane) continue;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& a = frame[static_cast<std::size_t>(k)];
+            const double c = dot(f.normal, a), h = dot(f.planePoint, a);
+            if (c >= tol.parallelCos) out.boxSides[static_cast<std::size_t>(i)] = std::fabs(h - hi[static_cast<std::size_t>(k)]) <= lin;
+            if (c <= -tol.parallelCos) out.boxSides[static_cast<std::size_t>(i)] = std::fabs(h - lo[static_cast<std::size_t>(k)]) <= lin;
+        }
         // Square to one axis, slanted to the other two.
         int along = -1, slanted = 0;
         for (int k = 0; k < 3; ++k) {
@@ -49,7 +58,17 @@ std::vector<bool> findEdgeChamfers(const FaceCatalogue& faces, const Tolerances&
             const double side = up ? hi[static_cast<std::size_t>(k)] : -lo[static_cast<std::size_t>(k)];
             both = both && std::fabs(reach - side) <= lin;
         }
-        out[static_cast<std::size_t>(i)] = both;
+        // A plane square to the edge that the face rises from on its void side is a floor
+        // under it: the wall of a blind step cut across the edge, not a chamfer.
+        if (!both) continue;
+        bool floor = false;
+        for (int n : f.neighbours) {
+            const FaceInfo& g = faces[n];
+            if (g.kind == SurfaceKind::Plane &&
+                std::fabs(dot(g.normal, frame[static_cast<std::size_t>(along)])) >= tol.parallelCos)
+                floor = floor || faces.boundaryTop(i, g.normal) > dot(g.normal, g.planePoint) + lin;
+        }
+        (floor ? out.stepWalls : out.chamfers)[static_cast<std::size_t>(i)] = true;
     }
     return out;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // Chamfers on the edges of the blank: a plane slanted across one principal axis that joins
 // the two sides of the part's box meeting at that edge. They are chamfers, machined along
-// the edge, not floors of open pockets seen along their own normal.
+// the edge, not floors of open pockets seen along their own normal. One that rises from a
+// floor square to the edge is the wall of a blind step across the edge instead: machined
+// from that floor's side, not along its own normal either.
 #include "FaceCatalogue.h"
 #include "Tolerances.h"
 
@@ -9,8 +11,13 @@
 
 namespace aeronc::recognition {
 
-// Per face: whether it is such a chamfer. axes: the part's principal axes (± pairs, as
-// principalAxes gives them).
-std::vector<bool> findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, const std::vector<Vec3>& axes);
+struct EdgeCuts {
+    std::vector<bool> chamfers;   // per face: a chamfer on an edge of the blank
+    std::vector<bool> stepWalls;  // per face: the slanted wall of a blind step across an edge
+    std::vector<bool> boxSides;   // per face: a plane on a side of the part's box (the blank's own)
+};
+
+// axes: the part's principal axes (± pairs, as principalAxes gives them).
+EdgeCuts findEdgeChamfers(const FaceCatalogue& faces, const Tolerances& tol, const std::vector<Vec3>& axes);
 
 }  // namespace aeronc::recognition

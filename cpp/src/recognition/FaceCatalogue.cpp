@@ -31,6 +31,28 @@
 namespace aeronc::recognition {
 namespace {
 Vec3 v3(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+std::shared_ptr<const RuledSpline> ruledSpline(const TopoDS_Face& face) {
+    const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    if (b.IsNull()) return nullptr;
+    auto r = std::make_shared<RuledSpline>();
+    r->surface = b;
+    if (b->VDegree() == 1 && b->NbVPoles() == 2) r->linearInV = true;
+    else if (b->UDegree() == 1 && b->NbUPoles() == 2) r->linearInV = false;
+    else return nullptr;
+    const int n = r->linearInV ? b->NbUPoles() : b->NbVPoles();
+    auto pole = [&](int i, int row) { return r->linearInV ? b->Pole(i, row) : b->Pole(row, i); };
+    auto weight = [&](int i, int row) { return r->linearInV ? b->Weight(i, row) : b->Weight(row, i); };
+    const gp_XYZ d0 = pole(1, 2).XYZ() - pole(1, 1).XYZ();
+    bool extruded = d0.Modulus() > 1e-9;
+    for (int i = 1; i <= n; ++i) {
+        if (std::fabs(weight(i, 1) - weight(i, 2)) > 1e-12 * std::fabs(weight(i, 1))) return nullptr;
+        const gp_XYZ d = pole(i, 2).XYZ() - pole(i, 1).XYZ();
+        extruded = extruded && (d - d0).Modulus() <= 1e-9 * (1 + d0.Modulus());
+    }
+    if (extruded) r->extrusion = v3(d0 / d0.Modulus());
+    return r;
+}
 }  // namespace
 
 FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
@@ -88,9 +110,15 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
                 f.kind = SurfaceKind::Sphere;
                 f.radius = s.Sphere().Radius();
                 break;
+            case GeomAbs_BSplineSurface:
+                f.kind = SurfaceKind::Other;
+                f.ruled = ruledSpline(f.face);
+                break;
             default:
                 f.kind = SurfaceKind::Other;
         }
+        if (f.kind == SurfaceKind::Cylinder || f.kind == SurfaceKind::Torus || f.kind == SurfaceKind::Sphere || f.ruled)
+            BRepTools::UVBounds(f.face, f.uMin, f.uMax, f.vMin, f.vMax);
         Bnd_Box box;
         BRepBndLib::Add(f.face, box, false);
         double x0, y0, z0, x1, y1, z1;
@@ -109,10 +137,26 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
         }
     // Points along each edge: its ends, and 16 more along a curved one.
     std::vector<std::vector<Vec3>> alongEdge(static_cast<std::size_t>(edges_.Extent()) + 1);
+    edgeShapes_.resize(static_cast<std::size_t>(edges_.Extent()) + 1);
     for (int e = 1; e <= edges_.Extent(); ++e) {
         const TopoDS_Edge& edge = TopoDS::Edge(edges_(e));
-        if (BRep_Tool::Degenerated(edge)) continue;
+        EdgeShape& shape = edgeShapes_[static_cast<std::size_t>(e)];
+        if (BRep_Tool::Degenerated(edge)) {
+            // A pole or an apex: its vertex bounds the face.
+            TopoDS_Vertex v0, v1;
+            TopExp::Vertices(edge, v0, v1);
+            if (!v0.IsNull()) shape.kind = EdgeShape::Line, shape.a = shape.b = BRep_Tool::Pnt(v0);
+            continue;
+        }
         BRepAdaptor_Curve c(edge);
+        shape.t0 = c.FirstParameter(), shape.t1 = c.LastParameter();
+        if (c.GetType() == GeomAbs_Line) {
+            shape.kind = EdgeShape::Line, shape.a = c.Value(shape.t0), shape.b = c.Value(shape.t1);
+        } else if (c.GetType() == GeomAbs_Circle) {
+            shape.kind = EdgeShape::Arc, shape.circle = c.Circle();
+        } else {
+            shape.kind = EdgeShape::Other;
+        }
         const int n = c.GetType() == GeomAbs_Line ? 1 : 16;
         for (int k = 0; k <= n; ++k) {
             const gp_Pnt p = c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / n);
@@ -180,6 +224,31 @@ std::vector<FaceCatalogue::HeightRange> FaceCatalogue::heightRanges(const Vec3& 
     const TopLoc_Location loc(t);
     std::vector<std::pair<double, double>> edge(static_cast<std::size_t>(edges_.Extent()) + 1);
     for (int e = 1; e <= edges_.Extent(); ++e) {
+        const EdgeShape& shape = edgeShapes_[static_cast<std::size_t>(e)];
+        if (shape.kind == EdgeShape::None) {
+            edge[static_cast<std::size_t>(e)] = {0, -1};
+            continue;
+        }
+        if (shape.kind == EdgeShape::Line) {
+            const double ha = dot(v3(shape.a.XYZ()), w), hb = dot(v3(shape.b.XYZ()), w);
+            edge[static_cast<std::size_t>(e)] = {std::min(ha, hb), std::max(ha, hb)};
+            continue;
+        }
+        if (shape.kind == EdgeShape::Arc) {
+            // h(t) = c + r (cos t X.w + sin t Y.w): the ends, and the extremes inside the range.
+            const gp_Ax2& ax = shape.circle.Position();
+            const double c = dot(v3(ax.Location().XYZ()), w), r = shape.circle.Radius();
+            const double x = dot(v3(ax.XDirection().XYZ()), w), y = dot(v3(ax.YDirection().XYZ()), w);
+            auto at = [&](double t) { return c + r * (std::cos(t) * x + std::sin(t) * y); };
+            double lo = std::min(at(shape.t0), at(shape.t1)), hi = std::max(at(shape.t0), at(shape.t1));
+            const double phi = std::atan2(y, x), amp = r * std::hypot(x, y);
+            for (int k = -4; k <= 4; ++k) {
+                const double t = phi + k * M_PI;
+                if (t > shape.t0 && t < shape.t1) lo = std::min(lo, c + (k % 2 ? -amp : amp)), hi = std::max(hi, c + (k % 2 ? -amp : amp));
+            }
+            edge[static_cast<std::size_t>(e)] = {lo, hi};
+            continue;
+        }
         Bnd_Box b;
         BRepBndLib::Add(edges_(e).Moved(loc), b, false);
         if (b.IsVoid()) {
@@ -230,6 +299,17 @@ BRepTopAdaptor_FClass2d& FaceCatalogue::classifier(int i) const {
     auto& c = mine[static_cast<std::size_t>(i)];
     if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[static_cast<std::size_t>(i)].face, 1e-9);
     return *c;
+}
+
+IntCurvesFace_Intersector& FaceCatalogue::intersector(int i) const {
+    std::lock_guard<std::recursive_mutex> lock(cache_);
+    const std::size_t w = static_cast<std::size_t>(workerSlot());
+    if (intersectors_.size() <= w) intersectors_.resize(w + 1);
+    auto& mine = intersectors_[w];
+    if (mine.empty()) mine.resize(faces_.size());
+    auto& x = mine[static_cast<std::size_t>(i)];
+    if (!x) x = std::make_unique<IntCurvesFace_Intersector>(faces_[static_cast<std::size_t>(i)].face, 1e-7);
+    return *x;
 }
 
 bool FaceCatalogue::WirePolygon::contains(double u, double v) const {

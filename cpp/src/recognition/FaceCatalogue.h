@@ -5,10 +5,13 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
+#include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 #include <TopoDS_Shape.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <IntCurvesFace_Intersector.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -16,6 +19,14 @@
 namespace aeronc::recognition {
 
 enum class SurfaceKind { Plane, Cylinder, Cone, Torus, Sphere, Other };
+
+// A B-spline face of degree 1 in one parameter with two rows of poles (equal weights
+// pairwise): the extrusions and ruled faces CAD systems write for swept profiles and fillets.
+struct RuledSpline {
+    Handle(Geom_BSplineSurface) surface;  // with the face's location applied
+    bool linearInV = true;    // the rows are curves along u at the two ends of v
+    Vec3 extrusion{0, 0, 0};  // unit, when every pole pair differs by the same vector
+};
 
 struct FaceInfo {
     TopoDS_Face face;
@@ -30,6 +41,8 @@ struct FaceInfo {
     bool concave = false;    // cylinder / cone: outward normal points towards the axis
     Vec3 boxMin{0, 0, 0}, boxMax{0, 0, 0};
     std::vector<int> neighbours;  // 0-based indices of faces sharing an edge
+    std::shared_ptr<const RuledSpline> ruled;  // B-spline linear in one parameter, else null
+    double uMin = 0, uMax = 0, vMin = 0, vMax = 0;  // parameter range (round surfaces, ruled B-splines)
     mutable double area = -1;     // computed on demand
 };
 
@@ -64,6 +77,9 @@ public:
     // Classifier of points in face i's parameter space, built once per face and worker (a
     // classifier keeps a cursor into its sequences, so threads cannot share one).
     BRepTopAdaptor_FClass2d& classifier(int i) const;
+    // Intersector of lines with face i, built once per face and worker, whatever the line's
+    // direction: the setups and the direction search share it.
+    IntCurvesFace_Intersector& intersector(int i) const;
     // Where a point of face i's parameter space lies: IN, OUT or ON. Faces with many
     // edges (a panel's top face with its pockets) use an index of their wires as polygons,
     // the rest OCCT's classifier.
@@ -79,8 +95,18 @@ private:
     TopTools_IndexedMapOfShape edges_;
     std::vector<std::vector<int>> faceEdges_;  // 1-based indices into edges_
     std::vector<std::vector<Vec3>> edgePoints_;  // per face: points along its boundary
+    // Per edge (1-based): what its height range in any frame needs, in closed form for lines
+    // and arcs (most edges); others are boxed in the frame.
+    struct EdgeShape {
+        enum Kind { None, Line, Arc, Other } kind = None;
+        gp_Pnt a, b;    // line: its ends
+        gp_Circ circle;  // arc: its circle and parameter range
+        double t0 = 0, t1 = 0;
+    };
+    std::vector<EdgeShape> edgeShapes_;
     mutable std::vector<std::pair<bool, Vec3>> interior_;
     mutable std::vector<std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>> classifiers_;  // by worker
+    mutable std::vector<std::vector<std::unique_ptr<IntCurvesFace_Intersector>>> intersectors_;  // by worker
     mutable std::vector<std::unique_ptr<std::vector<Handle(Geom2d_TrimmedCurve)>>> boundaries_;
     struct WirePolygon {
         std::vector<std::pair<double, double>> pts;

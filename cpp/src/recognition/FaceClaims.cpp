@@ -15,7 +15,24 @@ bool takenEarlier(const DomainElement& e, const std::vector<bool>& claimed) {
     return taken;
 }
 
-void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vector<bool>& claimed, DomainTree& tree) {
+namespace {
+
+void erase(std::vector<int>& v, int f) { v.erase(std::remove(v.begin(), v.end(), f), v.end()); }
+
+// Face f (FaceN) leaves the chamfers of the element that held it.
+void unchamfer(DomainElement& e, int f) {
+    erase(e.chamferFaces, f);
+    for (AttachedFeature& a : e.attached)
+        if (a.kind == "chamfer") erase(a.faces, f);
+    e.attached.erase(std::remove_if(e.attached.begin(), e.attached.end(),
+                                    [](const AttachedFeature& a) { return a.kind == "chamfer" && a.faces.empty(); }),
+                     e.attached.end());
+}
+
+}  // namespace
+
+void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vector<bool>& claimed,
+                std::vector<int>& chamferOf, DomainTree& tree) {
     std::vector<int> remap(made.size(), -1);
     std::vector<ElementDraft> kept;
     for (std::size_t k = 0; k < made.size(); ++k) {
@@ -33,6 +50,9 @@ void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vec
             mine(el.contourFaces), mine(el.filletFaces), mine(el.chamferFaces), mine(el.topFaces);
             for (auto& isl : el.islandFaces) mine(isl);
             for (auto& a : el.attached) mine(a.faces);
+            // A chamfer already some element's stays with it.
+            for (int f : std::vector<int>(el.chamferFaces))
+                if (chamferOf[static_cast<std::size_t>(f - 1)] >= 0) unchamfer(el, f);
         }
     }
     for (ElementDraft& in : kept) {
@@ -55,11 +75,26 @@ void claimFaces(std::vector<ElementDraft>& made, SetupDirection& setup, std::vec
         if (e.parent >= 0) kept[static_cast<std::size_t>(e.parent - base)].el.children.push_back(e.id);
         else setup.elements.push_back(e.id);
         auto claim = [&](const std::vector<int>& v) {
-            for (int f : v) claimed[static_cast<std::size_t>(f - 1)] = true;
+            for (int f : v) {
+                int& owner = chamferOf[static_cast<std::size_t>(f - 1)];
+                if (owner >= 0 && owner < base) unchamfer(tree.elements[static_cast<std::size_t>(owner)], f);
+                owner = -1;
+                claimed[static_cast<std::size_t>(f - 1)] = true;
+            }
         };
-        claim(e.floorFaces), claim(e.contourFaces), claim(e.filletFaces), claim(e.chamferFaces);
+        claim(e.floorFaces), claim(e.contourFaces), claim(e.filletFaces);
         for (auto& isl : e.islandFaces) claim(isl);
-        for (auto& a : e.attached) claim(a.faces);
+        for (auto& a : e.attached)  // a joggle's faces are its own pocket's floor: that pocket claims them
+            if (a.kind != "chamfer" && a.kind != "joggle") claim(a.faces);
+    }
+    // Chamfers last: a face that is another kept element's wall is that element's.
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        DomainElement& e = kept[k].el;
+        for (int f : std::vector<int>(e.chamferFaces)) {
+            int& owner = chamferOf[static_cast<std::size_t>(f - 1)];
+            if (claimed[static_cast<std::size_t>(f - 1)] || owner >= 0) unchamfer(e, f);
+            else owner = e.id;
+        }
     }
     for (auto& in : kept) tree.elements.push_back(std::move(in.el));
 }

@@ -77,7 +77,7 @@ std::vector<SectionLoop> sliceLoops(const FaceCatalogue& faces, const std::vecto
     const bool onlyOcct = std::getenv("AERONC_GENERAL_SECTION") != nullptr;  // to compare with OCCT's section
     for (int i : candidates) {
         std::vector<std::vector<P2>> polys;
-        if (!onlyOcct && (sectionVerticalFace(faces[i].face, faces.boundaryUV(i), faces.classifier(i), frame, h,
+        if (!onlyOcct && (sectionVerticalFace(faces[i], faces.boundaryUV(i), faces.classifier(i), frame, h,
                                               chordTol, polys) ||
                           (meshes && meshes->section(i, frame, h, polys)))) {
             for (auto& pl : polys) {

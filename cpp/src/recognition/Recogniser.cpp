@@ -40,13 +40,19 @@ public:
         tree_.faceRoles.assign(static_cast<std::size_t>(faces_.size()), FaceRole::Unclaimed);
         tree_.faceElement.assign(static_cast<std::size_t>(faces_.size()), -1);
         claimed_.assign(static_cast<std::size_t>(faces_.size()), false);
+        chamferOf_.assign(static_cast<std::size_t>(faces_.size()), -1);
     }
 
     DomainTree run() {
+        const auto t0 = std::chrono::steady_clock::now();
         axes_ = principalAxes(faces_, tol_);
-        edgeChamfers_ = findEdgeChamfers(faces_, tol_, axes_);
+        EdgeCuts cuts = findEdgeChamfers(faces_, tol_, axes_);
+        edgeChamfers_ = std::move(cuts.chamfers);
+        edgeStepWalls_ = std::move(cuts.stepWalls);
+        boxSides_ = std::move(cuts.boxSides);
         chains_ = findHoleChains(faces_, tol_);
         for (const HoleChain& c : chains_) chainTaken_.emplace_back(c.segments.size(), false);
+        trace("axes, edge chamfers, hole chains", t0);
         if (opt_.directions.empty()) {
             reserveChainFaces({});
             runAuto();
@@ -62,6 +68,7 @@ public:
                 runSetup(dirs[k]);
             }
         }
+        const auto tr = std::chrono::steady_clock::now();
         assignFaceRoles(tree_, faces_, tol_);
         // The blank's edge chamfers no element took are chamfers of the part itself.
         std::vector<bool> accounted = onBlank_;
@@ -72,6 +79,8 @@ public:
                 accounted[i] = true;
             }
         reportUnclaimedFaces(tree_, accounted);
+        trace("face roles", tr);
+        trace("recognition", t0);
         return std::move(tree_);
     }
 
@@ -82,9 +91,12 @@ private:
     MeshSection meshes_;
     DomainTree tree_;
     std::vector<bool> claimed_;  // per face: some setup machines it
+    std::vector<int> chamferOf_;  // per face: the element whose chamfer it is (not in claimed_), or -1
     std::vector<bool> onBlank_;  // per face: on the boundary of some setup's blank
     std::vector<Vec3> axes_;     // principal axes
     std::vector<bool> edgeChamfers_;  // per face: a chamfer on an edge of the blank
+    std::vector<bool> edgeStepWalls_;  // per face: the slanted wall of a blind step across an edge
+    std::vector<bool> boxSides_;  // per face: on a side of the part's box
     RegionWidths widths_;
     std::vector<HoleChain> chains_;  // holes over the face adjacency, found once
     std::vector<std::vector<bool>> chainTaken_;  // per chain and segment: a setup made it
@@ -128,6 +140,12 @@ private:
         return out;
     }
 
+    static void trace(const char* what, std::chrono::steady_clock::time_point since) {
+        if (std::getenv("AERONC_TRACE"))
+            std::fprintf(stderr, "%s: %.3f s\n", what,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count());
+    }
+
     void progress(double f, const std::string& stage) {
         if (opt_.progress && !opt_.progress(progressBase_ + progressSpan_ * f, stage))
             throw inputError("recognition cancelled");
@@ -137,8 +155,12 @@ private:
     void runAuto() {
         SetupDirectionSearch search(faces_, tol_);
         search.setAside(edgeChamfers_);
+        search.setAside(edgeStepWalls_);
         for (int round = 0; round < 12; ++round) {
-            const std::optional<Vec3> d = search.next(claimed_);
+            // A chamfer calls for no direction of its own.
+            std::vector<bool> machined = claimed_;
+            for (std::size_t i = 0; i < machined.size(); ++i) machined[i] = machined[i] || chamferOf_[i] >= 0;
+            const std::optional<Vec3> d = search.next(machined);
             if (!d) break;
             progressBase_ = std::min(0.9, 0.45 * round);
             progressSpan_ = round == 0 ? 0.45 : 0.1;
@@ -189,8 +211,9 @@ private:
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
         progress(1.0, "linking " + setup.name);
+        const auto tl = std::chrono::steady_clock::now();
         linkPocketTree(made, tol_.linear);
-        attachElementFeatures(made, view);
+        attachElementFeatures(made, view, boxSides_);
         recogniseHoles(made, view);
         addChainHoles(made, view, chains_, chainTaken_, claimed_);
         recogniseCounterbores(made, view);
@@ -201,7 +224,8 @@ private:
         for (std::size_t i = 0; i < reserved.size(); ++i) reserved[i] = reserved[i] || edgeChamfers_[i];
         releaseReservedFaces(made, reserved);
 
-        claimFaces(made, setup, claimed_, tree_);
+        claimFaces(made, setup, claimed_, chamferOf_, tree_);
+        trace(("  tree, attached features, holes, widths, claims " + setup.name).c_str(), tl);
         tree_.setups.push_back(std::move(setup));
     }
 };

@@ -16,9 +16,10 @@ Shape shapeOf(const Paths& ps) {
     for (const Path& p : ps) (Orientation(p) ? s.outers : s.holes)++;
     return s;
 }
-// Round joins: the erosion is then the true distance from the boundary.
-Paths erode(const Paths& ps, double r) {
-    ClipperOffset off(2.0, std::clamp(r * 4e-3, 0.002, 0.1) * kClipperScale);
+// Round joins: the erosion is then the true distance from the boundary. Arcs to within
+// 4e-3 of `scale` (the erosion's radius, or the total one when eroding an erosion further).
+Paths erode(const Paths& ps, double r, double scale = 0) {
+    ClipperOffset off(2.0, std::clamp(std::max(r, scale) * 4e-3, 0.002, 0.1) * kClipperScale);
     off.AddPaths(ps, jtRound, etClosedPolygon);
     Paths out;
     off.Execute(out, -r * kClipperScale);
@@ -69,11 +70,15 @@ double Region::minWidth() const {
     const Paths ps = thinned(paths());
     const Shape ref{1, static_cast<int>(holes.size())};
     // No disc wider than the box's narrow side fits; 11 halvings resolve it to ~1e-3 of that.
+    // Each erosion starts from the last one that kept the shape (eroding by r then by s is
+    // eroding by r + s): its convex stretches tighter than r are gone, whose offsets would
+    // otherwise cross each other all at once.
     double good = 0, bad = 0.5 * std::min(hi.x - lo.x, hi.y - lo.y) + 1e-3;
+    Paths base = ps;
     for (int it = 0; it < 11; ++it) {
         const double r = 0.5 * (good + bad);
-        const Paths e = erode(ps, r);
-        if (!e.empty() && shapeOf(e) == ref) good = r;
+        Paths e = erode(base, r - good, r);
+        if (!e.empty() && shapeOf(e) == ref) good = r, base = thinned(e);
         else bad = r;
     }
     return 2 * good;

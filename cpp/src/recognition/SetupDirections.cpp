@@ -6,6 +6,7 @@
 #include "AxisRays.h"
 #include "FaceInSetup.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,19 +28,54 @@ std::string directionName(const Vec3& d) {
 }
 
 std::vector<Vec3> principalAxes(const FaceCatalogue& faces, const Tolerances& tol) {
-    int a = -1, b = -1;
-    for (int i = 0; i < faces.size(); ++i)
-        if (faces[i].kind == SurfaceKind::Plane && (a < 0 || faces.area(i) > faces.area(a))) a = i;
-    if (a < 0) return {};
-    const Vec3 n1 = faces[a].normal;
-    for (int i = 0; i < faces.size(); ++i)
-        if (faces[i].kind == SurfaceKind::Plane && std::fabs(dot(faces[i].normal, n1)) <= tol.squareSin &&
-            (b < 0 || faces.area(i) > faces.area(b)))
-            b = i;
+    // Planar area per normal direction (up to sign), largest first.
+    struct Group {
+        Vec3 n;  // the normal of its largest face
+        double area, largest;
+    };
+    std::vector<Group> groups;
+    for (int i = 0; i < faces.size(); ++i) {
+        if (faces[i].kind != SurfaceKind::Plane) continue;
+        const Vec3& n = faces[i].normal;
+        const double a = faces.area(i);
+        bool found = false;
+        for (Group& g : groups)
+            if (std::fabs(dot(g.n, n)) >= tol.parallelCos) {
+                g.area += a, found = true;
+                if (a > g.largest) g.largest = a, g.n = n;
+                break;
+            }
+        if (!found) groups.push_back({n, a, a});
+    }
+    if (groups.empty()) return {};
+    std::stable_sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) { return a.area > b.area; });
+    auto cross = [](const Vec3& a, const Vec3& b) {
+        return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    // The frame of two square normal directions that holds the most planar area: the box a
+    // machinist would clamp, even when a slanted face is the largest (a wide chamfer or
+    // ramp on a small block).
+    const std::size_t firsts = std::min<std::size_t>(groups.size(), 6);
+    int bestA = 0, bestB = -1;
+    double bestArea = -1;
+    for (std::size_t a = 0; a < firsts; ++a) {
+        bool any = false;
+        for (std::size_t b = 0; b < groups.size(); ++b) {
+            if (b == a || std::fabs(dot(groups[a].n, groups[b].n)) > tol.squareSin) continue;
+            any = true;
+            const Vec3 n3 = cross(groups[a].n, groups[b].n);
+            double area = groups[a].area + groups[b].area;
+            for (const Group& g : groups)
+                if (std::fabs(dot(g.n, n3)) >= tol.parallelCos) area += g.area;
+            if (area > bestArea * (1 + 1e-9)) bestArea = area, bestA = static_cast<int>(a), bestB = static_cast<int>(b);
+        }
+        if (!any && groups[a].area > bestArea * (1 + 1e-9)) bestArea = groups[a].area, bestA = static_cast<int>(a), bestB = -1;
+    }
+    const Vec3 n1 = groups[static_cast<std::size_t>(bestA)].n;
     std::vector<Vec3> out{n1, {-n1[0], -n1[1], -n1[2]}};
-    if (b < 0) return out;
-    const Vec3 n2 = faces[b].normal;
-    const Vec3 n3{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2], n1[0] * n2[1] - n1[1] * n2[0]};
+    if (bestB < 0) return out;
+    const Vec3 n2 = groups[static_cast<std::size_t>(bestB)].n;
+    const Vec3 n3 = cross(n1, n2);
     for (const Vec3& n : {n2, n3}) out.push_back(n), out.push_back({-n[0], -n[1], -n[2]});
     return out;
 }

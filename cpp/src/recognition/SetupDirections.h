@@ -15,8 +15,9 @@ namespace aeronc::recognition {
 // "+Z", "-X", ... for the world axes, else the vector.
 std::string directionName(const Vec3& d);
 
-// ± the normal of the largest planar face, of the largest one square to it, and their
-// cross product; empty for a part without planar faces.
+// ± two square planar normals and their cross product: of the frame whose axes the most
+// planar area is normal to, each axis the normal of its largest face; empty for a part
+// without planar faces.
 std::vector<Vec3> principalAxes(const FaceCatalogue& faces, const Tolerances& tol);
 
 // The k-th (0-based) direction asked for, made unit; throws an input error when it is no
