@@ -147,12 +147,15 @@ def finished_faces(chain, result):
     """(faces the plan finishes, {element label: its finished faces}): floors and walls of the
     elements with an enabled finishing unit (webs, walls, flanges, corners). The faces of an
     element the chain lists as not (completely) machined are left out, also where another
-    element shares them: the plan does not finish them, and the report says why."""
+    element shares them (only the listed faces when the entry names them): the plan does not
+    finish them, and the report says why."""
     elements = {e["id"]: e for e in result.get("elements", [])}
     not_finished = set()
     for gap in chain.get("unmachined", []):
         e = elements.get(gap.get("element"))
-        if e is not None:
+        if gap.get("faces"):  # only part of the element is left (an island's top)
+            not_finished.update(gap["faces"])
+        elif e is not None:
             not_finished.update(_element_faces(e))
     finished = {}
     for u in chain.get("units", []):

@@ -122,6 +122,13 @@ class FinishedFacesTest(unittest.TestCase):
         self.assertEqual(faces, [10, 11, 13])  # 12 is element 2's wall too
         self.assertEqual(elements, {"E1": [10, 11, 13]})
 
+    def test_an_entry_naming_faces_takes_out_only_those(self):
+        from aeronc import verification
+        faces, elements = verification.finished_faces(
+            self.chain([{"element": 1, "reason": "island top", "step": None, "faces": [13]}]), self.RESULT)
+        self.assertEqual(faces, [10, 11, 12, 20])
+        self.assertEqual(elements, {"E1": [10, 11, 12], "E2": [20]})
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -284,7 +284,8 @@ std::string toJson(const MachiningChain& c, int indent) {
     for (const Unmachined& m : c.unmachined)
         j["unmachined"].push_back({{"element", m.element},
                                    {"step", m.step ? json(toString(*m.step)) : json(nullptr)},
-                                   {"reason", m.reason}});
+                                   {"reason", m.reason},
+                                   {"faces", m.faces}});
     j["tools"] = json::object();
     for (const ChainTool& t : c.tools) {
         json settings = json::object();
@@ -391,6 +392,10 @@ MachiningChain fromJson(const std::string& text) {
         u.element = m["element"].integer();
         if (m.has("step")) u.step = parseStepCode(m["step"].text(), "chain JSON " + m.path());
         u.reason = m["reason"].text();
+        if (m.has("faces")) {
+            const In faces = m["faces"];
+            for (std::size_t k = 0; k < faces.size(); ++k) u.faces.push_back(faces[k].integer());
+        }
         c.unmachined.push_back(u);
     }
     const In tools = root["tools"];

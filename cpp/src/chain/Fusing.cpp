@@ -666,12 +666,12 @@ void Fuser::listUnmachined(const DomainElement& e) {
         // A must-step with nothing to do (a floor already finished) is no gap.
         const auto g = st.gaps.find(s.code);
         if (g == st.gaps.end()) continue;
-        chain_.unmachined.push_back({e.id, s.code, g->second});
+        chain_.unmachined.push_back({e.id, s.code, g->second, {}});
         listed.insert(s.code);
     }
     if (!anyStep) {
         chain_.unmachined.push_back(
-            {e.id, std::nullopt, "no step of template '" + tmpl_.name + "' machines feature type " + ft});
+            {e.id, std::nullopt, "no step of template '" + tmpl_.name + "' machines feature type " + ft, {}});
         return;
     }
     if (st.units == 0 && listed.empty()) {
@@ -679,20 +679,20 @@ void Fuser::listUnmachined(const DomainElement& e) {
         for (const auto& [code, text] : st.gaps)
             why += (why.empty() ? "" : "; ") + std::string(toString(code)) + ": " + text;
         if (why.empty()) why = "no step made a unit for it";
-        chain_.unmachined.push_back({e.id, std::nullopt, why});
+        chain_.unmachined.push_back({e.id, std::nullopt, why, {}});
     }
     // Attached features no unit cuts.
     if (e.hole && e.hole->countersinkDiameter > 0)
         chain_.unmachined.push_back(
             {e.id, std::nullopt,
              "its " + fmt(e.hole->countersinkAngle) + " degree countersink (diameter " +
-                 fmt(e.hole->countersinkDiameter) + " mm) needs a countersink tool; the chain has none"});
+                 fmt(e.hole->countersinkDiameter) + " mm) needs a countersink tool; the chain has none", {}});
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
     if (!e.chamferFaces.empty() && !countersunk)
         chain_.unmachined.push_back({e.id, std::nullopt,
                                      std::to_string(e.chamferFaces.size()) +
-                                         " chamfer face(s) need a chamfer tool; the chain has none"});
+                                         " chamfer face(s) need a chamfer tool; the chain has none", {}});
 }
 
 MachiningChain Fuser::run() {
@@ -752,6 +752,21 @@ MachiningChain Fuser::run() {
         }
         for (const DomainElement* e : elements) listUnmachined(*e);
     }
+    // Island tops below the pocket's top: no step of the templates faces them, so the material
+    // above them stays. Said, with the faces, rather than left unnoticed.
+    std::set<int> topsListed;  // a parent pocket names its child's island top too: once is enough
+    for (const DomainElement& e : tree_.elements)
+        for (const recognition::AttachedFeature& a : e.attached)
+            if (a.kind == "island_top" && !a.faces.empty() && e.type != ElementType::Hole &&
+                !std::all_of(a.faces.begin(), a.faces.end(), [&](int f) { return topsListed.count(f) > 0; })) {
+                topsListed.insert(a.faces.begin(), a.faces.end());
+                Unmachined m;
+                m.element = e.id;
+                m.faces = a.faces;
+                m.reason = "the top of an island below the top of " + elementName(e) +
+                           " is not machined: no step of the template faces island tops";
+                chain_.unmachined.push_back(m);
+            }
 
     // The tools: those used, then (for editing) those that could be.
     for (std::size_t i = 0; i < plan_.tools.size(); ++i) {

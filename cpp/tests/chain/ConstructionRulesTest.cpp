@@ -152,7 +152,7 @@ TEST(ConstructionRules, ExistenceFailsWithoutAMustStepOrWithAMustNotStep) {
     EXPECT_EQ(failures(c, "priority").size(), 0u);
 
     // The element listed as not machinable in that step is no failure: the chain says why.
-    c.unmachined.push_back({1, StepCode::FinishWall, "kept for a later operation"});
+    c.unmachined.push_back({1, StepCode::FinishWall, "kept for a later operation", {}});
     EXPECT_EQ(failures(checkChain(c), "existence").size(), 0u);
 
     // A must_not step that has units.

@@ -52,6 +52,19 @@ int expectSoundChain(const recognition::DomainTree& tree, const MachiningChain& 
     for (const auto& e : tree.elements)
         EXPECT_TRUE(units[e.id] > 0 || listed.count(e.id)) << "element " << e.id << " neither machined nor listed";
 
+    // Island tops below the pocket's top are not faced by any step: the chain says so, with the
+    // faces, once per face.
+    std::set<int> namedTops;
+    for (const Unmachined& m : c.unmachined)
+        for (int f : m.faces) EXPECT_TRUE(namedTops.insert(f).second) << "face " << f << " listed twice";
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached) {
+            if (a.kind != "island_top" || e.type == recognition::ElementType::Hole) continue;
+            bool listedTop = false;  // by this element or another one naming the same faces
+            for (const Unmachined& m : c.unmachined) listedTop |= m.faces == a.faces;
+            EXPECT_TRUE(listedTop) << "island top of element " << e.id << " not listed";
+        }
+
     // Through an opening the finishing passes go the breakthrough and the corner radius below its
     // floor level, as far as the tool reaches: a rounded corner passes the wall's lower edge whole.
     for (const MachiningUnit& u : c.units) {

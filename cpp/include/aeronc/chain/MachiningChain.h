@@ -129,6 +129,7 @@ struct Unmachined {
     int element = -1;
     std::optional<StepCode> step;  // the step that could not machine it; none: nothing could
     std::string reason;
+    std::vector<int> faces;  // the faces left when it is not the whole element (FaceN)
 };
 
 struct Travel {
