@@ -237,18 +237,20 @@ void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int th
     std::atomic<bool> stop{false};
     std::exception_ptr failure;
     std::mutex failureMutex;
+    // One level; the first failure stops every thread and is rethrown here.
+    auto sliceOne = [&](std::size_t k) {
+        try {
+            slice(todo[k], setupId, perLevel[k], warned[k]);
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+            stop = true;
+        }
+        ++done;
+    };
     auto work = [&](int slot) {
         setWorkerSlot(slot);
-        for (std::size_t k; !stop && (k = next++) < n;) {
-            try {
-                slice(todo[k], setupId, perLevel[k], warned[k]);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(failureMutex);
-                if (!failure) failure = std::current_exception();
-                stop = true;
-            }
-            ++done;
-        }
+        for (std::size_t k; !stop && (k = next++) < n;) sliceOne(k);
     };
     const int helpers = std::max(0, std::min(threads, static_cast<int>(n)) - 1);
     std::vector<std::thread> pool;
@@ -259,14 +261,7 @@ void LevelSlicing::sliceAll(int setupId, std::vector<ElementDraft>& made, int th
             stop = true;
             break;
         }
-        try {
-            slice(todo[k], setupId, perLevel[k], warned[k]);
-        } catch (...) {
-            std::lock_guard<std::mutex> lock(failureMutex);
-            if (!failure) failure = std::current_exception();
-            stop = true;
-        }
-        ++done;
+        sliceOne(k);
     }
     for (std::thread& t : pool) t.join();
     if (failure) std::rethrow_exception(failure);
