@@ -8,8 +8,8 @@ flange and a joggle: recognise -> select tools -> optimise cutting data -> machi
 one Path Job per setup -> Sinumerik 840D and LinuxCNC programs -> the LinuxCNC programs re-read
 by LinuxCNC's interpreter and simulated against the blank -> pictures and report.html, all in
 AERONC_OUT (see aeronc/main_job.py for the list). AERONC_PART=<file.step> runs the same on
-another part; AERONC_MATERIAL, AERONC_MACHINE and AERONC_FAMILY change the defaults
-(7050-T7451, AC-5AX, integral_panel). Exit code 0 on success, 1 with the failed stage named.
+another part; AERONC_MATERIAL, AERONC_MACHINE, AERONC_FAMILY and AERONC_CELL (the verification's
+cell size, mm) change the defaults (7050-T7451, AC-5AX, integral_panel, 0.5). Exit code 0 on success, 1 with the failed stage named.
 """
 import os
 
@@ -24,10 +24,18 @@ def main():
     part = os.environ.get("AERONC_PART") or os.path.join(aeronc.PACKAGE_DIR, "resources", "samples",
                                                           "sample_panel.step")
     try:
+        cell = float(os.environ.get("AERONC_CELL", "0.5"))
+    except ValueError:
+        print("main job failed: AERONC_CELL must be a cell size in mm, not {!r}".format(os.environ["AERONC_CELL"]),
+              file=sys.stderr)
+        sys.stderr.flush()
+        os._exit(1)
+    try:
         main_job.run(part, os.environ.get("AERONC_OUT", "out/demo"),
                      material=os.environ.get("AERONC_MATERIAL", "7050-T7451"),
                      machine=os.environ.get("AERONC_MACHINE", "AC-5AX"),
-                     family=os.environ.get("AERONC_FAMILY", "integral_panel"))
+                     family=os.environ.get("AERONC_FAMILY", "integral_panel"),
+                     cell_size=cell)
     except AeroNCError as e:  # a stage failed for a reason the user can act on: one line, no traceback
         print("main job failed: {}".format(e), file=sys.stderr)
         sys.stderr.flush()

@@ -8,6 +8,7 @@ from aeronc.operations.base import AXIAL, CLEARANCE, RADIAL, RAMP, SAFE, STEP_DO
 class GeneralisedPocket(MachiningOperation):
     Type = "AeroNC::GeneralisedPocket"
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE, RAMP]
-    GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "openEdges", "floorFilletRadius", "finishingPass",
+    GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "islandTops", "faceIslandTops", "openEdges",
+                     "floorFilletRadius", "finishingPass",
                      "finishingAllowance", "previousCutter")
     ICON = "GeneralisedPocket"

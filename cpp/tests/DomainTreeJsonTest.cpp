@@ -75,6 +75,7 @@ void expectSameTree(const DomainTree& a, const DomainTree& b) {
         expectSamePolyline(x.contour, y.contour, w + " contour");
         ASSERT_EQ(x.islands.size(), y.islands.size()) << w;
         for (std::size_t k = 0; k < x.islands.size(); ++k) expectSamePolyline(x.islands[k], y.islands[k], w + " island");
+        EXPECT_EQ(x.islandTops, y.islandTops) << w;
         ASSERT_EQ(x.attached.size(), y.attached.size()) << w;
         for (std::size_t k = 0; k < x.attached.size(); ++k) {
             const AttachedFeature &p = x.attached[k], &q = y.attached[k];
@@ -202,6 +203,7 @@ DomainTree handTree() {
     pocket.topFaces = {5}, pocket.filletFaces = {6}, pocket.chamferFaces = {};
     pocket.contour = {{0, 0, 0.3}, {10, 0, 0.3}, {10, 10, 0.3}};
     pocket.islands = {{{4, 4, 0.3}, {6, 4, 0.3}, {5, 6, 0.3}}, {}};
+    pocket.islandTops = {0.25, 0.3};
     pocket.attached = {{"floor_fillet", {6}, 2, 0, -1}, {"joggle", {}, 0, -0.5, 1}};
     DomainElement hole;
     hole.id = 1, hole.setup = 0, hole.parent = 0, hole.type = ElementType::Hole, hole.minCornerRadius = 0;
@@ -278,6 +280,8 @@ TEST(DomainTreeJson, MissingOrMistypedFieldsAreNamed) {
         "elements[0].contour[1]: expected [x, y, z], got [1,2]");
     has(errorAfter([](json& j) { j["elements"][0]["islands"][0][2][1] = true; }),
         "elements[0].islands[0][2][1]: expected a number, got boolean");
+    has(errorAfter([](json& j) { j["elements"][0]["islandTops"] = {0.25}; }),
+        "elements[0].islandTops: expected one height per island (2), got 1");
     has(errorAfter([](json& j) { j["elements"][2]["openEdges"][0] = {{0, 0, 0}}; }),
         "elements[2].openEdges[0]: expected [start, end], got 1 points");
     has(errorAfter([](json& j) { j["elements"][0]["islandFaces"][0][0] = "3"; }),
@@ -351,4 +355,13 @@ TEST(DomainTreeJson, OlderTreeWithoutUnclaimedFacesReads) {
     const DomainTree back = fromJson(j.dump());
     EXPECT_TRUE(back.unclaimedFaces.empty());
     EXPECT_EQ(back.faceElement, handTree().faceElement);
+}
+
+TEST(DomainTreeJson, OlderTreeWithoutIslandTopsReads) {
+    json j = json::parse(toJson(handTree()));
+    ASSERT_TRUE(j["elements"][0].contains("islandTops"));
+    j["elements"][0].erase("islandTops");
+    const DomainTree back = fromJson(j.dump());
+    EXPECT_TRUE(back.elements[0].islandTops.empty());
+    EXPECT_EQ(back.elements[0].islands.size(), 2u);
 }

@@ -126,6 +126,34 @@ TEST(PanelRecognition, FloorFilletRadiusAndCornerRadius) {
     }
 }
 
+// The generator's bosses stop 2 mm under the panel top: every element that has them as islands
+// (their pocket, and the lowered rib's region beside it) knows that height, with and without a
+// fillet round their foot; islands standing to the top keep the element's top.
+TEST(PanelRecognition, IslandTopsAreTheBossHeights) {
+    for (double fillet : {0.0, 2.0}) {
+        PanelSpec s;
+        s.floorFillet = fillet;
+        const Panel panel = makePanel(s);
+        const DomainTree t = recognise(validatedSolid(panel.shape, "panel"), RecogniseOptions{});
+        int lower = 0;
+        for (const DomainElement& e : t.elements) {
+            SCOPED_TRACE("element " + std::to_string(e.id) + ", fillet " + std::to_string(fillet));
+            ASSERT_EQ(e.islandTops.size(), e.islands.size());
+            for (double h : e.islandTops) {
+                EXPECT_LE(h, e.top + 1e-9);
+                if (h < e.top - 1e-6) {
+                    EXPECT_NEAR(h, s.thickness - 2, 1e-6);
+                    ++lower;
+                }
+            }
+        }
+        int truthIslands = 0;
+        for (const TruthElement& te : panel.truth) truthIslands += te.islands;
+        EXPECT_EQ(lower, truthIslands);
+        EXPECT_GT(lower, 0);
+    }
+}
+
 // The fast section of faces along the axis must agree with OCCT's general section,
 // also on a part moved away from the origin (faces with locations).
 TEST(PanelRecognition, FastSectionAgreesWithGeneralSection) {

@@ -53,7 +53,9 @@ json unitJson(const MachiningUnit& u) {
     for (const HoleTarget& h : u.holes)
         holes.push_back({{"u", h.u}, {"v", h.v}, {"diameter", h.diameter}, {"top", h.top}, {"bottom", h.bottom},
                          {"through", h.through}});
-    return {{"id", u.id},
+    json tops = json::array();
+    for (double t : u.islandTops) tops.push_back(num(t));
+    json j = {{"id", u.id},
             {"setup", u.setup},
             {"element", u.element},
             {"step", toString(u.step)},
@@ -84,6 +86,9 @@ json unitJson(const MachiningUnit& u) {
             {"note", u.note},
             {"enabled", u.enabled},
             {"order", u.order}};
+    if (!u.islandTops.empty()) j["islandTops"] = tops;
+    if (u.faceIslandTops) j["faceIslandTops"] = true;
+    return j;
 }
 
 // A JSON value with the path that names it in messages.
@@ -207,6 +212,12 @@ MachiningUnit readUnit(const In& in) {
     u.contour = readLoop(in["contour"]);
     const In islands = in["islands"];
     for (std::size_t i = 0; i < islands.size(); ++i) u.islands.push_back(readLoop(islands[i]));
+    if (in.has("islandTops")) {  // added later: older chains have none
+        const In tops = in["islandTops"];
+        if (tops.size() != u.islands.size()) tops.bad("needs one height (or null) per island");
+        for (std::size_t i = 0; i < tops.size(); ++i) u.islandTops.push_back(tops[i].numberOr(NAN));
+    }
+    if (in.has("faceIslandTops")) u.faceIslandTops = in["faceIslandTops"].boolean();
     const In open = in["openEdges"];
     for (std::size_t i = 0; i < open.size(); ++i) {
         if (open[i].size() != 2) open[i].bad("is not an edge [[u, v], [u, v]]");

@@ -231,6 +231,7 @@ private:
     std::map<int, ElementState> state_;
     std::map<int, std::pair<int, std::string>> finishers_;  // element -> tool and why none
     std::set<int> usedTools_;
+    std::set<int> facedTops_;  // island-top faces a floor unit faces
     MachiningChain chain_;
 };
 
@@ -462,6 +463,16 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     };
     u.contour = flat(e.contour, true);
     for (const auto& isl : e.islands) u.islands.push_back(flat(isl, false));
+    // Island tops inside this element's own cavity (above its floor, below its top and the
+    // parent's floor): a parent's island reaching down into a child is the parent's to face.
+    if (op == Operation::Pocket && e.islandTops.size() == e.islands.size() && !floorless) {
+        const double ceiling = unitTop(e, 0.0) - kTol;
+        std::vector<double> tops(e.islands.size(), std::numeric_limits<double>::quiet_NaN());
+        bool lower = false;
+        for (std::size_t i = 0; i < tops.size(); ++i)
+            if (e.islandTops[i] < ceiling && e.islandTops[i] > e.level + kTol) tops[i] = e.islandTops[i], lower = true;
+        if (lower) u.islandTops = std::move(tops);
+    }
     for (const auto& [a, b] : e.openEdges) {
         const recognition::P2 p = frame.project(a), q = frame.project(b);
         u.openEdges.push_back({Point2{p.x, p.y}, Point2{q.x, q.y}});
@@ -572,6 +583,11 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             const double webTop = std::isfinite(st.floorAllowance) ? std::min(top, e.level + st.floorAllowance)
                                                                     : unitTop(e, 0.0);
             MachiningUnit& u = addUnit(e, step, Operation::Pocket, f, webTop, bottom);
+            if (!u.islandTops.empty()) {
+                u.faceIslandTops = true;
+                for (const recognition::AttachedFeature& a : e.attached)
+                    if (a.kind == "island_top") facedTops_.insert(a.faces.begin(), a.faces.end());
+            }
             // A floor pass clears an area: the roughing width of cut with the finishing speeds.
             if (const auto rs = settingOf_(static_cast<std::size_t>(f), "roughing")) u.stepOver = rs->ae;
             else u.stepOver = 0.5 * u.cutter.diameter;
@@ -754,7 +770,7 @@ MachiningChain Fuser::run() {
     }
     // Island tops below the pocket's top: no step of the templates faces them, so the material
     // above them stays. Said, with the faces, rather than left unnoticed.
-    std::set<int> topsListed;  // a parent pocket names its child's island top too: once is enough
+    std::set<int> topsListed = facedTops_;  // a parent pocket names its child's island top too: once is enough
     for (const DomainElement& e : tree_.elements)
         for (const recognition::AttachedFeature& a : e.attached)
             if (a.kind == "island_top" && !a.faces.empty() && e.type != ElementType::Hole &&
@@ -764,7 +780,7 @@ MachiningChain Fuser::run() {
                 m.element = e.id;
                 m.faces = a.faces;
                 m.reason = "the top of an island below the top of " + elementName(e) +
-                           " is not machined: no step of the template faces island tops";
+                           " is not finished: no floor unit of the element faces it";
                 chain_.unmachined.push_back(m);
             }
 

@@ -55,6 +55,7 @@ std::string toJson(const DomainTree& t, int indent) {
         o["contour"] = poly(e.contour);
         o["islands"] = json::array();
         for (auto& p : e.islands) o["islands"].push_back(poly(p));
+        if (!e.islandTops.empty()) o["islandTops"] = e.islandTops;
         o["attached"] = json::array();
         for (const AttachedFeature& a : e.attached)
             o["attached"].push_back(
@@ -227,6 +228,13 @@ DomainElement element(const Field& f) {
     });
     e.contour = f["contour"].polyline();
     e.islands = f["islands"].list([](const Field& p) { return p.polyline(); });
+    // Added later: optional, so that older trees still read.
+    if (f.has("islandTops")) {
+        e.islandTops = f["islandTops"].list([](const Field& t) { return t.number(); });
+        if (e.islandTops.size() != e.islands.size())
+            f["islandTops"].fail("expected one height per island (" + std::to_string(e.islands.size()) + "), got " +
+                                 std::to_string(e.islandTops.size()));
+    }
     e.attached = f["attached"].list([](const Field& a) {
         AttachedFeature x;
         x.kind = a["kind"].text();

@@ -46,6 +46,35 @@ LevelSlicing::LevelSlicing(const SetupView& view, RegionWidths& widths, std::vec
     std::sort(critical_.begin(), critical_.end());
 }
 
+double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top) const {
+    // The island loop of this hole: the region's holes and its island loops need not come in
+    // the same order (an exterior region's holes come from Clipper), so the nearest one.
+    const SectionLoop* loop = nullptr;
+    double best = kInf;
+    for (const SectionLoop* L : c.islandLoops) {
+        if (!L || L->pts.empty()) continue;
+        const P2 p = L->pts.front();
+        double d = kInf;
+        for (std::size_t i = 0; i < hole.size(); ++i) {
+            const P2 a = toP2(hole[i]), b = toP2(hole[(i + 1) % hole.size()]);
+            const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+            const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+            d = std::min(d, std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy));
+        }
+        if (d < best) best = d, loop = L;
+    }
+    if (!loop) return top;
+    // The highest point of the island's walls and of the faces next to them (its top face,
+    // a chamfer or round on its top edge): an estimate from above, so never a gouge.
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    double hi = -kInf;
+    for (int f : loop->faces) {
+        hi = std::max(hi, fs[static_cast<std::size_t>(f)].hi);
+        for (int n : faces_[f].neighbours) hi = std::max(hi, fs[static_cast<std::size_t>(n)].hi);
+    }
+    return std::isfinite(hi) ? std::min(hi, top) : top;
+}
+
 double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double h = levels_[k];
@@ -210,6 +239,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             Polyline pl;
             for (const IntPoint& ip : hp) pl.push_back(frame.world(toP2(ip), h));
             e.islands.push_back(pl);
+            e.islandTops.push_back(islandTop(c, hp, e.top));
         }
         for (auto& oe : c.openEdges) e.openEdges.push_back({frame.world(oe.first, h), frame.world(oe.second, h)});
         measureCorners(c, faces_, fs, e);

@@ -36,6 +36,8 @@ public:
 private:
     // The height the level is cut at (above its floor fillets), with the floors there.
     double sliceHeight(std::size_t k, std::vector<int>& ups) const;
+    // How high the island around `hole` (one of c's region holes) stands, at most `top`.
+    double islandTop(const VoidRegion& c, const ClipperLib::Path& hole, double top) const;
     // The faces a plane at height z may cut.
     std::vector<int> cutFaces(double z) const;
     bool useful(std::size_t k, const std::vector<bool>& claimed) const;

@@ -9,7 +9,9 @@
 #include <aeronc/toolpath/Levels.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace aeronc::toolpath {
 
@@ -56,6 +58,78 @@ void finishingMoves(MoveWriter& w, const clip::Paths& finish, const clip::Paths&
 
 }  // namespace
 
+namespace {
+
+// One cutting level of the unit: the islands in the way there, and for a level at the top of
+// lower islands, those islands (the level clears only around them).
+struct Pass {
+    double level = 0;
+    double above = 0;  // where the material may start over it
+    std::vector<bool> present;
+    std::vector<bool> faced;  // empty: a whole level
+    bool operator<(const Pass& o) const { return level > o.level; }
+};
+
+constexpr double kSame = 1e-6;  // mm: heights taken as one
+
+std::vector<Pass> passesOf(const PocketUnit& unit, const PocketParameters& p) {
+    const std::size_t n = unit.islands.size();
+    if (!unit.islandTops.empty() && unit.islandTops.size() != n)
+        throw inputError("islandTops needs one height (or none) per island");
+    auto lower = [&](std::size_t i) { return !unit.islandTops.empty() && !std::isnan(unit.islandTops[i]); };
+    for (std::size_t i = 0; i < n; ++i)
+        if (lower(i)) requireFinite(unit.islandTops[i], "the top of island " + std::to_string(i + 1));
+    const double aa = p.axialAllowance;
+    // An island is in the way up to its top plus the floor's allowance.
+    auto presentAt = [&](double z) {
+        std::vector<bool> v(n, true);
+        for (std::size_t i = 0; i < n; ++i)
+            if (lower(i)) v[i] = unit.islandTops[i] + aa > z + kSame;
+        return v;
+    };
+    std::vector<Pass> passes;
+    const std::vector<double> regular = cuttingLevels(unit.top, unit.bottom + aa, p.stepDown);
+    for (double z : regular) passes.push_back({z, 0, presentAt(z), {}});
+    std::vector<double> tops;
+    for (std::size_t i = 0; i < n; ++i)
+        if (lower(i)) tops.push_back(unit.islandTops[i]);
+    std::sort(tops.begin(), tops.end());
+    tops.erase(std::unique(tops.begin(), tops.end(), [](double a, double b) { return b - a <= kSame; }), tops.end());
+    for (double t : tops) {
+        const double z = t + aa;
+        // A floor unit faces every lower top; a clearing unit those between its top and floor
+        // that no level meets already.
+        if (unit.faceIslandTops) {
+            if (!(t > unit.bottom + kSame)) continue;
+        } else {
+            if (!(z > unit.bottom + aa + kSame && z < unit.top - kSame)) continue;
+            if (std::any_of(regular.begin(), regular.end(), [&](double r) { return std::fabs(r - z) <= kSame; }))
+                continue;
+        }
+        Pass f{z, 0, presentAt(z), std::vector<bool>(n, false)};
+        for (std::size_t i = 0; i < n; ++i) f.faced[i] = lower(i) && std::fabs(unit.islandTops[i] - t) <= kSame;
+        passes.push_back(f);
+    }
+    std::stable_sort(passes.begin(), passes.end());
+    // Around a lower island only, so over the rest the material starts at the last whole level.
+    double lastWhole = entryTop(p, unit.top);
+    for (Pass& ps : passes) {
+        ps.above = lastWhole;
+        // A floor unit's island top carries what the floor does.
+        if (unit.faceIslandTops && !ps.faced.empty())
+            ps.above = std::max(ps.above, ps.level + (unit.top - unit.bottom - aa));
+        if (ps.faced.empty()) lastWhole = ps.level;
+    }
+    return passes;
+}
+
+struct PassPlan {
+    clip::Paths region, centres;
+    ClearingPlan plan;
+};
+
+}  // namespace
+
 Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const PocketParameters& p) {
     const double s = checkMilling(p, cutter, unit.top, unit.bottom);
     requireFinite(p.finishingAllowance, "finishingAllowance");
@@ -65,14 +139,11 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     const double R = cutter.radius(), tol = p.chordTolerance;
     const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.radialAllowance);
     const double off = R + p.radialAllowance + fillet;
-    const PocketArea area = pocketArea(unit, 2 * off + p.clearance);
-    const clip::Paths centres = clip::offset(area.region, -off, tol);
-    if (!(clip::area(centres) > 0))
-        throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
-                         ") does not fit in the pocket");
-    // Beyond an open edge a plunge meets no material.
-    clip::Paths entryArea;
-    if (!unit.openEdges.empty()) entryArea = clip::subtract(centres, clip::offset(area.material, R + 2 * tol, tol));
+    const std::vector<Pass> passes = passesOf(unit, p);
+    // Rapids clear the highest material: a floor unit's lower island tops stand over its top.
+    double high = unit.top;
+    for (const Pass& ps : passes) high = std::max(high, ps.above);
+    if (high > unit.top) checkMilling(p, cutter, high, unit.bottom);
 
     ClearingOptions o;
     o.stepOver = s;
@@ -82,10 +153,46 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     o.minHelixRadius = 0.25 * R;
     o.maxEntryLink = cutter.diameter;
     o.climb = p.climb;
-    const ClearingPlan plan = planClearing(centres, centres, entryArea, o);
+    // Over a lower island's top the tool's flat reaches past its edge by a quarter of its width.
+    const double margin = 0.25 * std::max(R - cutter.cornerRadius, 0.1 * R);
 
-    const std::vector<double> levels = cuttingLevels(unit.top, unit.bottom + p.axialAllowance, p.stepDown);
-    const Heights hs = heightsOf(p, unit.top);
+    std::map<std::pair<std::vector<bool>, std::vector<bool>>, PassPlan> plans;
+    auto planOf = [&](const Pass& ps) -> const PassPlan& {
+        const auto key = std::make_pair(ps.present, ps.faced);
+        const auto found = plans.find(key);
+        if (found != plans.end()) return found->second;
+        PocketUnit inWay = unit;
+        inWay.islands.clear();
+        clip::Paths faced;
+        for (std::size_t i = 0; i < unit.islands.size(); ++i) {
+            if (ps.present[i]) inWay.islands.push_back(unit.islands[i]);
+            if (!ps.faced.empty() && ps.faced[i]) faced.push_back(clip::toPath(unit.islands[i]));
+        }
+        const PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
+        PassPlan pp;
+        pp.region = area.region;
+        if (!faced.empty()) {
+            for (auto& f : faced)
+                if (!ClipperLib::Orientation(f)) ClipperLib::ReversePath(f);
+            pp.region = clip::intersect(pp.region, clip::offset(faced, off + margin, tol));
+        }
+        pp.centres = clip::offset(pp.region, -off, tol);
+        if (!(clip::area(pp.centres) > 0)) {
+            if (!faced.empty())
+                throw inputError("the cutter (D " + mm(cutter.diameter) + ") cannot reach the top of a lower island at " +
+                                 mm(ps.level));
+            throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
+                             ") does not fit in the pocket");
+        }
+        // Beyond an open edge a plunge meets no material.
+        clip::Paths entryArea;
+        if (!unit.openEdges.empty())
+            entryArea = clip::subtract(pp.centres, clip::offset(area.material, R + 2 * tol, tol));
+        pp.plan = planClearing(pp.centres, pp.centres, entryArea, o);
+        return plans.emplace(key, std::move(pp)).first->second;
+    };
+
+    const Heights hs = heightsOf(p, high);
     EntrySettings es;
     es.clearancePlane = hs.clearance;
     es.approach = std::min(p.clearance, 1.0);
@@ -95,13 +202,31 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
 
     Toolpath tp;
     MoveWriter w(tp);
-    w.rapid(plan.chains.front().path.front()[0], plan.chains.front().path.front()[1], hs.safe);
-    const double above = entryTop(p, unit.top);
-    clearingMoves(w, plan, levels, above, es);
+    const ClearingPlan& first = planOf(passes.front()).plan;
+    w.rapid(first.chains.front().path.front()[0], first.chains.front().path.front()[1], hs.safe);
+    for (const Pass& ps : passes) clearingMoves(w, planOf(ps).plan, {ps.level}, ps.above, es);
     if (p.finishingPass) {
+        // Round the walls of each run of whole levels with the same islands in the way.
         const double finishFillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.finishingAllowance);
-        const clip::Paths finish = clip::offset(area.region, -(R + p.finishingAllowance + finishFillet), tol);
-        finishingMoves(w, finish, centres, levels, above, es);
+        for (std::size_t i = 0; i < passes.size();) {
+            if (!passes[i].faced.empty()) {
+                ++i;
+                continue;
+            }
+            std::vector<double> levels;
+            std::size_t j = i;
+            for (; j < passes.size() && (!passes[j].faced.empty() || passes[j].present == passes[i].present); ++j)
+                if (passes[j].faced.empty()) levels.push_back(passes[j].level);
+            const PassPlan& pp = planOf(passes[i]);
+            PocketUnit inWay = unit;
+            inWay.islands.clear();
+            for (std::size_t k = 0; k < unit.islands.size(); ++k)
+                if (passes[i].present[k]) inWay.islands.push_back(unit.islands[k]);
+            const clip::Paths finish =
+                clip::offset(pocketArea(inWay, 2 * off + p.clearance).region, -(R + p.finishingAllowance + finishFillet), tol);
+            finishingMoves(w, finish, pp.centres, levels, entryTop(p, unit.top), es);
+            i = j;
+        }
     }
     w.retract(hs.safe);
     return tp;

@@ -26,7 +26,8 @@ const std::set<std::string> kCommon{"operation", "name", "cutter", "top", "botto
 std::set<std::string> keysOf(const std::string& op) {
     std::set<std::string> k = kCommon;
     auto add = [&](std::initializer_list<const char*> more) { k.insert(more.begin(), more.end()); };
-    if (op == "pocket" || op == "rest") add({"contour", "islands", "openEdges", "floorFilletRadius", "finishingPass", "finishingAllowance"});
+    if (op == "pocket" || op == "rest") add({"contour", "islands", "islandTops", "faceIslandTops", "openEdges", "floorFilletRadius", "finishingPass",
+                                             "finishingAllowance"});
     if (op == "rest") add({"previousCutter"});
     if (op == "profile") add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit", "floorFilletRadius"});
     if (op == "helix") add({"holes", "finishingAllowance", "breakThrough"});
@@ -89,6 +90,13 @@ PocketUnit pocketUnit(const json& j) {
             if (!e.is_array() || e.size() != 2) throw inputError("an open edge must be [[u, v], [u, v]]");
             u.openEdges.push_back({point(e[0]), point(e[1])});
         }
+    if (j.contains("islandTops") && !j.at("islandTops").is_null()) {
+        const json& t = j.at("islandTops");
+        if (!t.is_array() || t.size() != u.islands.size())
+            throw inputError("\"islandTops\" needs one height (or null) per island");
+        for (const auto& h : t) u.islandTops.push_back(h.is_null() ? std::nan("") : h.get<double>());
+    }
+    get(j, "faceIslandTops", u.faceIslandTops);
     u.top = required(j, "top");
     u.bottom = required(j, "bottom");
     get(j, "floorFilletRadius", u.floorFilletRadius);

@@ -285,4 +285,22 @@ TEST(ChainJson, RoundTripsAndRechecksAnEditedChain) {
     e = inputErrorOf([&] { fromJson(j.dump()); });
     EXPECT_NE(e.find("missing field 'order'"), std::string::npos) << e;
     EXPECT_NE(inputErrorOf([&] { fromJson("{"); }).find("not valid JSON"), std::string::npos);
+
+    // Lower island tops (null: an island standing through) and the floor unit's facing survive.
+    MachiningChain low = smallChain();
+    MachiningUnit& u = low.units[0];
+    u.islands = {{{1, 1}, {1, 2}, {2, 2}}, {{3, 3}, {3, 4}, {4, 4}}};
+    u.islandTops = {std::nan(""), u.bottom + 1};
+    u.faceIslandTops = true;
+    const std::string lowText = toJson(low);
+    const MachiningChain lowBack = fromJson(lowText);
+    EXPECT_EQ(toJson(lowBack), lowText);
+    ASSERT_EQ(lowBack.units[0].islandTops.size(), 2u);
+    EXPECT_TRUE(std::isnan(lowBack.units[0].islandTops[0]));
+    EXPECT_EQ(lowBack.units[0].islandTops[1], u.bottom + 1);
+    EXPECT_TRUE(lowBack.units[0].faceIslandTops);
+    j = nlohmann::json::parse(lowText);
+    j["units"][0]["islandTops"].erase(0);
+    e = inputErrorOf([&] { fromJson(j.dump()); });
+    EXPECT_NE(e.find("units[0].islandTops: needs one height (or null) per island"), std::string::npos) << e;
 }

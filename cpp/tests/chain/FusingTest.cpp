@@ -52,17 +52,32 @@ int expectSoundChain(const recognition::DomainTree& tree, const MachiningChain& 
     for (const auto& e : tree.elements)
         EXPECT_TRUE(units[e.id] > 0 || listed.count(e.id)) << "element " << e.id << " neither machined nor listed";
 
-    // Island tops below the pocket's top are not faced by any step: the chain says so, with the
-    // faces, once per face.
+    // Island tops below the pocket's top are faced by a floor unit of an element naming them,
+    // or the chain says they are not, with the faces, once per face.
     std::set<int> namedTops;
     for (const Unmachined& m : c.unmachined)
         for (int f : m.faces) EXPECT_TRUE(namedTops.insert(f).second) << "face " << f << " listed twice";
+    std::map<int, const recognition::DomainElement*> elementById;
+    for (const auto& e : tree.elements) elementById[e.id] = &e;
+    auto faces = [&](const MachiningUnit& u, const std::vector<int>& top) {
+        if (!u.faceIslandTops || u.step != StepCode::Web) return false;
+        const auto* owner = elementById[u.element];
+        bool named = false;
+        for (const auto& a : owner->attached) named |= a.kind == "island_top" && a.faces == top;
+        // It faces some island strictly between its element's floor and top.
+        bool lower = false;
+        for (double h : u.islandTops) lower |= !std::isnan(h) && h > owner->level && h < owner->top;
+        EXPECT_TRUE(lower) << "unit " << u.id << " faces island tops but has none between floor and top";
+        return named && lower;
+    };
     for (const auto& e : tree.elements)
         for (const auto& a : e.attached) {
             if (a.kind != "island_top" || e.type == recognition::ElementType::Hole) continue;
             bool listedTop = false;  // by this element or another one naming the same faces
             for (const Unmachined& m : c.unmachined) listedTop |= m.faces == a.faces;
-            EXPECT_TRUE(listedTop) << "island top of element " << e.id << " not listed";
+            bool faced = false;
+            for (const MachiningUnit& u : c.units) faced |= faces(u, a.faces);
+            EXPECT_TRUE(listedTop != faced) << "island top of element " << e.id << (faced ? " faced and listed" : " neither faced nor listed");
         }
 
     // Through an opening the finishing passes go the breakthrough and the corner radius below its
@@ -254,6 +269,14 @@ TEST(Fusing, SamplePanel) {
     EXPECT_EQ(sharp, sharpPockets);
     EXPECT_EQ(countersinks, countersunk);
     EXPECT_GT(c.travel.savedPercent, 0);
+    // Its three bosses stop 2 mm under the pocket tops: each is faced, none listed.
+    std::set<double> facedHeights;
+    for (const MachiningUnit& u : c.units)
+        if (u.faceIslandTops)
+            for (double h : u.islandTops)
+                if (!std::isnan(h)) facedHeights.insert(h);
+    EXPECT_EQ(facedHeights, (std::set<double>{18.0}));
+    for (const Unmachined& m : c.unmachined) EXPECT_TRUE(m.faces.empty()) << m.reason;
 
     // Floors are finished with flat or bull end mills whose corner fits the floor fillet (the
     // ball end mills stay in the corners and on the walls), at a step-over whose scallops stay

@@ -396,3 +396,93 @@ TEST(PocketClearing, StockTopIsClearedByEveryRapidAndEnteredAtFeed) {
     p.safeHeight = 5;
     EXPECT_NE(inputErrorOf([&] { pocketClearing(u, {10, 0}, p); }).find("stockTop"), std::string::npos);
 }
+
+// An island stopping 5 mm under the top: above its top (plus the axial allowance) it is material
+// to clear, a level at that height clears over and round it, and below it the island is kept.
+TEST(PocketClearing, LowerIslandIsClearedDownToItsTopAndKeptBelow) {
+    const Loop contour = roundedRectangle(0, 0, 100, 70, 6);
+    const Loop low = circle({30, 35}, 9), high = roundedRectangle(60, 20, 80, 50, 3);
+    PocketUnit u{contour, {low, high}, {}, 0, -12};
+    u.islandTops = {-5, std::nan("")};
+    const double R = 5, ra = 0.4, aa = 0.25;
+    const Toolpath t = pocketClearing(u, {2 * R, 0}, params(5, ra, aa));
+    const double face = -5 + aa;
+    double lowestOver = 1e9;  // the lowest cutting height over the low island
+    std::size_t below = 0;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move& a = t.moves[i - 1];
+        const Move& b = t.moves[i];
+        if (b.kind == Move::Kind::Rapid) continue;
+        if (inside(low, {b.u, b.v})) lowestOver = std::min(lowestOver, b.h);
+        const double h = std::max(a.h, b.h);
+        if (h >= u.top - 1e-9) continue;
+        EXPECT_GE(loopSegmentDistance(high, {a.u, a.v}, {b.u, b.v}), R + ra - 0.011);
+        EXPECT_GE(loopSegmentDistance(contour, {a.u, a.v}, {b.u, b.v}), R + ra - 0.011);
+        if (h < face - 1e-9) {
+            ++below;
+            EXPECT_FALSE(inside(low, {a.u, a.v}));
+            EXPECT_GE(loopSegmentDistance(low, {a.u, a.v}, {b.u, b.v}), R + ra - 0.011);
+        }
+    }
+    EXPECT_GT(below, 100u);
+    EXPECT_DOUBLE_EQ(lowestOver, face);
+    // At the island's top level and the level above it, the whole island is swept.
+    const Raster r(20, 25, 40, 45, 0.2);
+    for (double h : {face, cuttingLevels(0, -12 + aa, 4).front()}) {
+        SCOPED_TRACE(h);
+        const auto got = swept(r, cutsAt(t, h), R);
+        std::size_t missed = 0, in = 0;
+        for (int j = 0; j < r.nv; ++j)
+            for (int i = 0; i < r.nu; ++i)
+                if (inside(low, r.centre(i, j))) ++in, missed += !got[r.at(i, j)];
+        EXPECT_GT(in, 5000u);
+        EXPECT_EQ(missed, 0u);
+    }
+    // Without the island's height it is kept at every level (the check can fail).
+    PocketUnit kept = u;
+    kept.islandTops.clear();
+    const Toolpath k = pocketClearing(kept, {2 * R, 0}, params(5, ra, aa));
+    for (const Move& m : k.moves)
+        if (m.kind != Move::Kind::Rapid && m.h < u.top - 1e-9) EXPECT_FALSE(inside(low, {m.u, m.v}));
+}
+
+// A floor unit faces the lower island's top at its height, over the island and round its edge,
+// keeping off the walls and the island that stands through; then the floor.
+TEST(PocketClearing, FloorUnitFacesTheLowerIslandTops) {
+    const Loop contour = roundedRectangle(0, 0, 100, 70, 6);
+    const Loop low = circle({30, 35}, 9), high = roundedRectangle(60, 20, 80, 50, 3);
+    PocketUnit u{contour, {low, high}, {}, -11.75, -12};
+    u.islandTops = {-5, std::nan("")};
+    u.faceIslandTops = true;
+    const double R = 8, ra = 0.2;
+    PocketParameters p = params(6, ra, 0);
+    const Toolpath t = pocketClearing(u, {2 * R, 2}, p);
+    std::set<double> flat;
+    for (std::size_t i = 1; i < t.moves.size(); ++i)
+        if (t.moves[i].kind == Move::Kind::Feed && t.moves[i].h == t.moves[i - 1].h) flat.insert(t.moves[i].h);
+    EXPECT_EQ(flat, (std::set<double>{-12, -5}));
+    const auto top = cutsAt(t, -5);
+    for (const auto& [a, b] : top) {
+        EXPECT_GE(loopSegmentDistance(high, a, b), R + ra - 0.011);
+        EXPECT_GE(loopSegmentDistance(contour, a, b), R + ra - 0.011);
+        // Round the island only: the rest of the floor is no business of this level.
+        EXPECT_LE(loopSegmentDistance(low, a, b), 2 * R + ra);
+    }
+    // The flat of the bull cutter (radius 6) sweeps the whole top.
+    const Raster r(20, 25, 40, 45, 0.2);
+    const auto got = swept(r, top, R - 2);
+    std::size_t missed = 0;
+    for (int j = 0; j < r.nv; ++j)
+        for (int i = 0; i < r.nu; ++i) missed += inside(low, r.centre(i, j)) && !got[r.at(i, j)];
+    EXPECT_EQ(missed, 0u);
+    // The 0.25 mm left on the top is entered at feed: no rapid goes lower with the cutter over it.
+    for (const Move& m : t.moves)
+        if (m.kind == Move::Kind::Rapid && loopDistance(low, {m.u, m.v}) < R) EXPECT_GE(m.h, -5 + 0.25 - 1e-9);
+    // A plain floor unit cuts the floor only.
+    u.faceIslandTops = false;
+    std::set<double> plain;
+    const Toolpath f = pocketClearing(u, {2 * R, 2}, p);
+    for (std::size_t i = 1; i < f.moves.size(); ++i)
+        if (f.moves[i].kind == Move::Kind::Feed && f.moves[i].h == f.moves[i - 1].h) plain.insert(f.moves[i].h);
+    EXPECT_EQ(plain, (std::set<double>{-12}));
+}

@@ -54,6 +54,10 @@ struct MachiningUnit {
     std::optional<double> stockTop;  // the material may stand this high over the unit (StockTops.h)
     Loop contour;                // drive loop at the floor (counter-clockwise)
     std::vector<Loop> islands;   // island loops (clockwise)
+    // Per island (empty: none): the height of its top where it stops short of the element's
+    // cavity, NaN where it stands through the unit. Above it the island is material to clear.
+    std::vector<double> islandTops;
+    bool faceIslandTops = false;  // a floor unit: the lower island tops are floors of it too
     std::vector<std::array<Point2, 2>> openEdges;  // stretches of the contour open to the blank
     std::vector<HoleTarget> holes;
     double radialAllowance = 0, axialAllowance = 0;

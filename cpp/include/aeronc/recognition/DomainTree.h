@@ -82,6 +82,9 @@ struct DomainElement {
 
     Polyline contour;               // corrected drive loop at the floor, world coordinates
     std::vector<Polyline> islands;  // island drive loops
+    // Height of the material of each island (index as `islands`): below `top` for an island
+    // that stops short of the pocket's top. Empty when not known (trees written before it).
+    std::vector<double> islandTops;
     std::vector<AttachedFeature> attached;
     std::optional<HoleInfo> hole;
 };

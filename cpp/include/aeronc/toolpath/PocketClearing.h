@@ -14,6 +14,12 @@ struct PocketUnit {
     double top = 0;     // top constraint height
     double bottom = 0;  // floor height
     double floorFilletRadius = 0;  // of the floor's edge along the walls; the cutter keeps out of it
+    // Per island (empty: none): where it stops short of the top, the height of its top; NaN
+    // where it stands through the unit. Above its top plus the axial allowance an island is
+    // not in the way, and a level at that height clears around it.
+    std::vector<double> islandTops;
+    // A floor unit: the lower islands' tops are floors of it too, each faced at its height.
+    bool faceIslandTops = false;
 };
 
 struct PocketParameters : CutParameters {
