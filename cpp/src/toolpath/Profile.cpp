@@ -171,9 +171,11 @@ private:
         return arc;
     }
 
-    // No point of the lead nearer the drive than the path, nor on the part's side.
+    // No point of the lead nearer the drive than the path, nor on the part's side. Within the
+    // chord tolerance only: the lead's points lie on its arc, and any more would take the
+    // cutter into the allowance of a wall across a narrow slot.
     bool clear(const Polyline& lead) const {
-        const double tol = 10 * p_.chordTolerance;
+        const double tol = p_.chordTolerance;
         for (const Point& q : lead) {
             const double dist = closed_ ? clip::nearestOnLoop(drive_, q).distance : project(drive_, q).distance;
             if (dist < d_ - tol) return false;

@@ -190,3 +190,26 @@ TEST(Profile, FloorFilletHoldsTheLowLevelsOffTheWall) {
     EXPECT_NEAR(nearest.at(0), 7, 0.006);
     EXPECT_NEAR(nearest.at(5), 4, 0.006);
 }
+
+// Across a slot 6.38 mm wide a D4 cutter's quarter-arc lead of radius R, started R in from its
+// path at 0.2 mm allowance, would come 0.02 mm into the far wall's allowance: the leads shrink
+// to fit, and no move, leads included, comes nearer any wall than R + allowance (less the
+// chord tolerance).
+TEST(Profile, LeadsKeepTheAllowanceAcrossANarrowSlot) {
+    const Loop drive = roundedRectangle(0, 0, 40, 6.38, 3.19);
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    p.radialAllowance = 0.2;
+    p.stepDown = 2;
+    const Toolpath t = profile({drive, true, {}, {}, 0, -3}, {4, 2}, p);
+    std::size_t leadMoves = 0;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move& a = t.moves[i - 1];
+        const Move& b = t.moves[i];
+        if (b.kind == Move::Kind::Rapid || std::max(a.h, b.h) >= 0) continue;
+        const double d = loopSegmentDistance(drive, {a.u, a.v}, {b.u, b.v});
+        EXPECT_GE(d, 2.2 - p.chordTolerance - 1e-9) << "move " << i;
+        leadMoves += d > 2.2 + 0.05;  // off the offset path: a lead
+    }
+    EXPECT_GT(leadMoves, 0u);
+}
