@@ -93,6 +93,15 @@ def _counts(result):
     return ", ".join("{} {}".format(s["name"], by_setup.get(s["id"], 0)) for s in result["setups"])
 
 
+def part_zero(blank, frame):
+    """Where the program zero (the part's origin, in the setup's frame) sits from the table's
+    reference point when the blank stands centred on the table: minus the middle of the blank's
+    underside in the frame. Parts modelled far from their origin then stay within the travel."""
+    from aeronc import setup_job
+    box = setup_job.box_in_frame(blank, frame)
+    return [-(box[0] + box[3]) / 2, -(box[1] + box[4]) / 2, -box[2]]
+
+
 def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,
         say=None):
     """Run the main job on a STEP (or BREP) part; returns the report's data (dict).
@@ -193,15 +202,19 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
 
         with st.stage("post"):
             programs = []
+            blank = setup_job.blank_box(group)
             for k, job in enumerate(chain_obj.Jobs, start=1):
                 setup = _setup_of(chain, job, setup_job.SETUP_TAG)
                 objects = pathcompat.job_post_objects(job)
                 stem = "{}_setup{}".format(name, k)
+                zero = part_zero(blank, setup["frame"])
                 for ext, dialect, label, args in (("mpf", "840d", "Sinumerik 840D", "--line-numbers"),
                                                    ("ngc", "linuxcnc", "LinuxCNC", "")):
                     path = os.path.join(out, stem + "." + ext)
-                    text = nc_post.export(objects, path, "--machine {} {}".format(machine, args).strip(), dialect)
-                    programs.append({"setup": setup["name"], "dialect": label, "path": path,
+                    options = "--machine {} --part-zero={} {}".format(machine, ",".join("{:.6f}".format(v) for v in zero),
+                                                                       args).strip()
+                    text = nc_post.export(objects, path, options, dialect)
+                    programs.append({"setup": setup["name"], "dialect": label, "path": path, "partZero": zero,
                                      "lines": text.count("\n"), "job": job, "frame": setup["frame"]})
                     written.append(os.path.basename(path))
         st.report(", ".join(os.path.basename(p["path"]) for p in programs))
@@ -221,8 +234,9 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
                     continue
                 read = verification.reread(p["path"], tools)
                 to_part = setup_job.frame_placement(p["frame"]).inverse()
-                in_part = verification.to_part_frame(read, machine_json, to_part)
-                in_job = verification.to_part_frame(read, machine_json, FreeCAD.Placement())
+                placed = json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"])))
+                in_part = verification.to_part_frame(read, placed, to_part)
+                in_job = verification.to_part_frame(read, placed, FreeCAD.Placement())
                 for op, op_job in zip(in_part, in_job):
                     job, fc_op = ops_by_label.get(op["label"], (None, None))
                     if fc_op is None:

@@ -187,13 +187,17 @@ def simulate(part_shape, ops, blank, finished, elements, cell_size=0.5, options=
     """Run ops (part frame, see to_part_frame; each with "cutter", "radialAllowance",
     "axialAllowance") on the blank; returns the core's report dict."""
     from aeronc import _core
-    program = {"cellSize": cell_size, "blank": list(blank), "finishedFaces": finished, "elements": elements,
-               "ops": [{"label": o["label"], "axis": o["axis"], "cutter": o["cutter"],
-                        "radialAllowance": o["radialAllowance"], "axialAllowance": o["axialAllowance"],
-                        "moves": plunges_marked(o["moves"])} for o in ops if o["moves"]]}
+    program = _program(ops, blank, finished, elements, cell_size)
     with from_core(VerificationError, "simulation"):
         text = _core.simulate(part_shape.exportBrepToString(), json.dumps(program), json.dumps(options or {}))
     return json.loads(text)
+
+
+def _program(ops, blank, finished, elements, cell_size):
+    return {"cellSize": cell_size, "blank": list(blank), "finishedFaces": finished, "elements": elements,
+            "ops": [{"label": o["label"], "axis": o["axis"], "cutter": o["cutter"],
+                     "radialAllowance": o["radialAllowance"], "axialAllowance": o["axialAllowance"],
+                     "moves": plunges_marked(o["moves"])} for o in ops if o["moves"]]}
 
 
 def axis_is_vertical(axis):
@@ -204,30 +208,39 @@ def simulate_by_setup(part_shape, setups, blank, cell_size=0.5, options=None):
     """Each setup on its own, in its Job's frame, where its tool axis is +Z: for parts machined
     along other axes than +-Z, which the dexel model cannot take in one frame.
     setups: [{"name", "to_part": Placement Job -> part, "ops": ops in the Job's frame (see
-    simulate), "elements": {label: finished faces of the setup's elements}}]; blank: the part
-    frame's box. Each setup starts from the whole blank (what other setups removed is not known
-    to it); the reports are merged: gouges and collisions of all setups, coverage of each
-    setup's own faces, the leftover map of the setup with the most operations."""
+    simulate), "elements": {label: finished faces of the setup's elements}}], in the order they
+    are machined; blank: the part frame's box. Each setup starts from the whole blank; its rapids
+    collide only with material that the setups before it left too. The reports are merged:
+    gouges and collisions of all setups, coverage of each setup's own faces, the leftover map of
+    the setup with the most operations."""
     import FreeCAD
-    reports = []
+    from aeronc import _core
+    runs, names = [], []
     for s in setups:
         if not s["ops"]:
             continue
         to_job = s["to_part"].inverse()
-        shape = part_shape.copy()
-        shape.transformShape(to_job.toMatrix())
         corners = [to_job.multVec(FreeCAD.Vector(x, y, z)) for x in (blank[0], blank[3])
                    for y in (blank[1], blank[4]) for z in (blank[2], blank[5])]
         box = (min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners),
                max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners))
         own = s["elements"]
         faces = sorted(set().union(*[set(v) for v in own.values()])) if own else []
-        r = simulate(shape, s["ops"], box, faces, own, cell_size, options)
+        m = s["to_part"].toMatrix()
+        runs.append({"name": s["name"],
+                     "rotation": [m.A11, m.A12, m.A13, m.A21, m.A22, m.A23, m.A31, m.A32, m.A33],
+                     "translation": [m.A14, m.A24, m.A34],
+                     "program": _program(s["ops"], box, faces, own, cell_size)})
+        names.append(s)
+    if not runs:
+        raise VerificationError("no setup has an operation to simulate")
+    with from_core(VerificationError, "simulation"):
+        texts = _core.simulate_setups(part_shape.exportBrepToString(), json.dumps(runs), json.dumps(options or {}))
+    reports = []
+    for s, r in zip(names, json.loads(texts)):
         for op in r.get("ops", []):
             op["setup"] = s["name"]
         reports.append((s, r))
-    if not reports:
-        raise VerificationError("no setup has an operation to simulate")
     return _merged(reports)
 
 

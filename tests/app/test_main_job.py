@@ -5,6 +5,7 @@ import shutil
 import tempfile
 import unittest
 
+import FreeCAD
 import Part
 
 from aeronc import _core, main_job
@@ -65,6 +66,26 @@ class MainJobTest(unittest.TestCase):
         main_job.run(part, out, say=lambda _: None)
         self.assertEqual(sorted(os.listdir(out)), first)
         self.assertFalse([n for n in first if n.endswith(".FCStd1") or ".part" in n])
+
+    def test_part_modelled_far_from_its_origin_stands_centred_on_the_table(self):
+        # 700 mm off in X and -500 mm in Y: with the part's origin as the table's centre every move
+        # would leave the AC-5AX's +-325 mm; the blank stands centred instead (the post's part zero).
+        part, _ = _write_panel(self.tmp)
+        shape = Part.read(part)
+        shape.translate(FreeCAD.Vector(700, -500, 40))
+        far = os.path.join(self.tmp, "far.brep")
+        shape.exportBrep(far)
+        blank = shape.BoundBox
+        self.assertEqual(main_job.part_zero((blank.XMin, blank.YMin, blank.ZMin, blank.XMax, blank.YMax, blank.ZMax),
+                                            {"u": (1, 0, 0), "v": (0, 1, 0), "w": (0, 0, 1)}),
+                         [-(blank.XMin + blank.XMax) / 2, -(blank.YMin + blank.YMax) / 2, -blank.ZMin])
+        out = os.path.join(self.tmp, "far")
+        run = main_job.run(far, out, say=lambda _: None)
+        self.assertEqual(len(run["programs"]), 4)
+        with open(os.path.join(out, "verification.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["gouges"]["count"], 0, report["gouges"].get("worst"))
+        self.assertEqual(report["collisions"]["count"], 0, report["collisions"].get("worst"))
 
     def test_part_without_elements_names_the_stage(self):
         box = os.path.join(self.tmp, "box.brep")

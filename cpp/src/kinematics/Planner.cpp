@@ -123,8 +123,11 @@ private:
         if (!plan_.machine.travel || !s.tipKnown()) return;
         const auto& t = *plan_.machine.travel;
         const char* names = "XYZ";
+        // The travel is the machine's, from its table reference; the coordinates are from the
+        // program zero, which sits at the part zero from there.
+        const Vec3 zero = setup_.partZero ? *setup_.partZero : plan_.machine.partZero;
         for (int k = 0; k < 3; ++k) {
-            const double v = s.joints.linear[k];
+            const double v = s.joints.linear[k] + zero[k];
             if (v < t.min[k] - 1e-6 || v > t.max[k] + 1e-6) {
                 char b[256];
                 std::snprintf(b, sizeof b,

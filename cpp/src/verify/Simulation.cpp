@@ -68,7 +68,36 @@ struct Run {
     StockDexels& stock;
     const SimulationOptions& options;
     Tally gouges, collisions;
+    const std::vector<PriorStock>& priors;
 };
+
+// How far the material met in column c between z = lo and hi (real heights) reaches towards
+// `from` (hi for a cutter from above, lo from below), counting only the points the setups
+// before also left: the highest (lowest) such point sampled every half cell; NaN when none.
+double priorMaterialReach(const Run& run, std::size_t c, double x, double y, double lo, double hi, bool fromAbove) {
+    const double step = 0.5 * run.part.grid.cell;
+    double best = std::nan("");
+    for (const StockSpan* s = run.stock.begin(c); s != run.stock.end(c); ++s) {
+        const double a = std::max(s->z0, lo), b = std::min(s->z1, hi);
+        if (!(a <= b)) continue;
+        const int n = std::max(1, int(std::ceil((b - a) / step)));
+        for (int k = 0; k <= n; ++k) {
+            const double z = fromAbove ? b - (b - a) * k / n : a + (b - a) * k / n;
+            bool left = true;
+            for (const PriorStock& p : run.priors) {
+                const auto q = p.toStock({x, y, z});
+                if (!p.stock->contains(q[0], q[1], q[2])) {
+                    left = false;
+                    break;
+                }
+            }
+            if (!left) continue;
+            if (std::isnan(best) || (fromAbove ? z > best : z < best)) best = z;
+            break;  // the first one found from that side is the farthest in this span
+        }
+    }
+    return best;
+}
 
 // Gouge: part material above the grown cutter's envelope, lowered by the axial allowance. The
 // depth is the smaller of the overlap along the part's normal (the vertical overlap times |nz|
@@ -147,8 +176,14 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
                 const double h = sw.envelope(cutter, x, y);
                 if (h == HUGE_VAL) continue;
                 if (seg.rapid) {
-                    const double depth = std::min(top - h, cutter.radius - d);
-                    if (depth > collisionTol) run.collisions.hit({depth, cutter.radius - d < top - h, 0, {x, y, s * top}});
+                    double reach = top;
+                    if (!run.priors.empty()) {
+                        const double z = s > 0 ? priorMaterialReach(run, c, x, y, h, HUGE_VAL, true)
+                                               : priorMaterialReach(run, c, x, y, -HUGE_VAL, -h, false);
+                        reach = std::isnan(z) ? -HUGE_VAL : s * z;
+                    }
+                    const double depth = std::min(reach - h, cutter.radius - d);
+                    if (depth > collisionTol) run.collisions.hit({depth, cutter.radius - d < reach - h, 0, {x, y, s * reach}});
                 }
                 removed += s > 0 ? run.stock.removeAbove(c, h) : run.stock.removeBelow(c, -h);
             }
@@ -216,7 +251,8 @@ LeftoverMap leftoverOf(const PartDexels& part, const StockDexels& stock) {
 }  // namespace
 
 SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
-                          const SimulationOptions& options) {
+                          const SimulationOptions& options, const std::vector<PriorStock>& priors,
+                          StockDexels* finalStock) {
     if (!(options.gougeTolerance >= 0) || !(options.collisionTolerance >= 0))
         throw inputError("the gouge and collision tolerances must not be negative");
     SimulationReport r;
@@ -231,7 +267,7 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
 
     auto t = Clock::now();
     Run run{part, stock, options, Tally(r.gouges, options.gougeTolerance, options.maxListed),
-            Tally(r.collisions, options.collisionTolerance, options.maxListed)};
+            Tally(r.collisions, options.collisionTolerance, options.maxListed), priors};
     r.operations.resize(program.operations.size());
     for (std::size_t k = 0; k < program.operations.size(); ++k)
         runOperation(int(k), program.operations[k], run, r.operations[k]);
@@ -245,6 +281,7 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     r.coverage = measureCoverage(mesh, part, stock, program.finishedFaces, program.elements, options.coverage);
     if (options.leftoverMap) r.leftover = leftoverOf(part, stock);
     r.coverageSeconds = since(t);
+    if (finalStock) *finalStock = std::move(stock);
     return r;
 }
 
@@ -262,4 +299,68 @@ SimulationReport simulate(const TriangleMesh& mesh, const Program& program, cons
     return r;
 }
 
+std::array<double, 3> Rigid::operator()(const std::array<double, 3>& p) const {
+    const auto& m = rotation;
+    return {m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + translation[0],
+            m[3] * p[0] + m[4] * p[1] + m[5] * p[2] + translation[1],
+            m[6] * p[0] + m[7] * p[1] + m[8] * p[2] + translation[2]};
+}
+
+Rigid Rigid::inverse() const {
+    Rigid r;
+    const auto& m = rotation;
+    r.rotation = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};  // orthonormal: the transpose
+    const auto t = r({translation[0], translation[1], translation[2]});
+    r.translation = {-(t[0]), -(t[1]), -(t[2])};
+    return r;
+}
+
+Rigid Rigid::then(const Rigid& next) const {
+    Rigid r;
+    const auto& a = next.rotation;
+    const auto& b = rotation;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r.rotation[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+    r.translation = next(translation);
+    return r;
+}
+
+std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const std::vector<SetupProgram>& setups,
+                                             const SimulationOptions& options) {
+    validate(partMesh);
+    for (const SetupProgram& s : setups) {
+        const auto& m = s.toPart.rotation;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const double dot = m[i] * m[j] + m[3 + i] * m[3 + j] + m[6 + i] * m[6 + j];
+                if (!(std::abs(dot - (i == j ? 1.0 : 0.0)) < 1e-9))
+                    throw inputError("setup " + s.name + ": its motion to the part is not a rotation");
+            }
+    }
+    std::vector<SimulationReport> reports;
+    std::vector<StockDexels> stocks;
+    stocks.reserve(setups.size());
+    for (std::size_t k = 0; k < setups.size(); ++k) {
+        const SetupProgram& s = setups[k];
+        const Rigid toSetup = s.toPart.inverse();
+        TriangleMesh mesh = partMesh;
+        for (Point3& v : mesh.vertices) v = toSetup(v);
+        std::vector<PriorStock> priors;
+        for (std::size_t j = 0; j < k; ++j) priors.push_back({&stocks[j], s.toPart.then(setups[j].toPart.inverse())});
+        const auto b = bounds(mesh);
+        const auto box = s.program.hasBlank ? s.program.blank : b;
+        const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
+                                       std::max(b[4], box[4]), s.program.cellSize);
+        const auto t = Clock::now();
+        const PartDexels part = rasterise(mesh, grid);
+        const double rasterise = since(t);
+        stocks.emplace_back();
+        reports.push_back(simulate(part, mesh, s.program, options, priors, &stocks.back()));
+        reports.back().rasteriseSeconds = rasterise;
+    }
+    return reports;
+}
+
 }  // namespace aeronc::verify
+

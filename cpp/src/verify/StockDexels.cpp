@@ -27,6 +27,15 @@ StockDexels StockDexels::box(const Grid& grid, const std::array<double, 6>& b) {
     return s;
 }
 
+bool StockDexels::contains(double x, double y, double z) const {
+    int i = 0, j = 0;
+    if (!grid_.cellAt(x, y, i, j)) return false;
+    const std::size_t c = grid_.index(i, j);
+    for (const StockSpan* s = begin(c); s != end(c); ++s)
+        if (s->z0 <= z && z <= s->z1) return true;
+    return false;
+}
+
 double StockDexels::removeAbove(std::size_t c, double z) {
     double removed = 0;
     std::uint32_t& last = last_[c];

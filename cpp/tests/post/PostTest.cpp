@@ -2,6 +2,7 @@
 // readback -> forward kinematics -> the input tip and axis again (1e-6 mm, 1e-9 rad).
 #include "kinematics/Fixtures.h"
 #include "NcReadback.h"
+#include "ErrorOf.h"
 
 #include <aeronc/post/Post.h>
 
@@ -398,6 +399,18 @@ TEST(Post, BadInputIsAClearErrorNamingTheOperationAndMove) {
         } catch (const aeronc::Error& e) {
             EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
         }
+    }
+    // The travel is the machine's: a part zero 600 mm off the table's centre brings X 900 into
+    // it and takes X 0 out of it.
+    {
+        PlanOptions shifted;
+        shifted.partZero = Vec3(-600, 0, 0);
+        const auto far = job("G0 X900 Y0 Z10\nG1 F5 X899 Y0 Z0\n");
+        EXPECT_NO_THROW(postFreeCad(far, machine("AC-5AX"), exactOptions(Dialect::LinuxCnc), shifted));
+        const std::string e = aeronc::test::inputErrorOf([&] {
+            postFreeCad(job("G0 X0 Y0 Z10\nG1 F5 X1 Y0 Z0\n"), machine("AC-5AX"), exactOptions(Dialect::LinuxCnc), shifted);
+        });
+        EXPECT_NE(e.find("X=-600.000 is beyond the travel [-325.000, 325.000]"), std::string::npos) << e;
     }
     // An operation without a tool controller, and a work offset the 840D reads differently.
     auto sections = job("G0 X0 Y0 Z10\n");

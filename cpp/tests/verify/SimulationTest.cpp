@@ -1,6 +1,7 @@
 // Simulating programs against a pocketed plate whose truth is known: a correct pocketing path,
 // the same path too low or too close to a wall, allowances, rapids through material, the -Z
 // tool axis, the cutter shapes and drill cycles.
+#include <aeronc/core/Error.h>
 #include <aeronc/verify/Simulation.h>
 
 #include "Fixtures.h"
@@ -315,4 +316,36 @@ TEST(Simulation, GougeDepthOnASlopeIsAlongItsNormal) {
 
     const SimulationReport clear = ballAlongSlope(0.1);
     EXPECT_FALSE(clear.gouges.worst.has_value());
+}
+
+// Two setups of the pocketed plate: the first clears the pocket along +Z; the second, turned 90
+// degrees about Z, drops rapids into the pocket (gone: no collision) and into the border (still
+// there: a collision). Alone, the second setup collides twice.
+TEST(Simulation, SetupsSeeWhatTheSetupsBeforeRemoved) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    SetupProgram a{"+Z", {}, programFor(plate, {pocketing("pocket", pocketPath(kPocket, kR, 2.4, 8, kSafe))})};
+    // Turned: part (x, y, z) = (40 - yB, xB, z); the pocket's middle (30, 20) is (20, 10) here,
+    // the border at (58, 20) is (20, -18).
+    Rigid turned;
+    turned.rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    turned.translation = {40, 0, 0};
+    Program p;
+    p.hasBlank = true;
+    p.blank = {0, -20, 0, 40, 40, 20};
+    p.operations = {pocketing("into pocket", {move(MoveKind::Rapid, 20, 10, kSafe), move(MoveKind::Rapid, 20, 10, 15)}),
+                    pocketing("into border", {move(MoveKind::Rapid, 20, -18, kSafe), move(MoveKind::Rapid, 20, -18, 15)})};
+    SetupProgram b{"turned", turned, p};
+    const auto both = simulateSetups(plate.mesh, {a, b});
+    ASSERT_EQ(both.size(), 2u);
+    EXPECT_EQ(both[0].collisions.moves, 0u);
+    EXPECT_EQ(both[1].collisions.moves, 1u);
+    ASSERT_TRUE(both[1].collisions.worst.has_value());
+    EXPECT_EQ(both[1].collisions.worst->label, "into border");
+    EXPECT_NEAR(both[1].collisions.worst->depth, kR - 0.25 * std::sqrt(2.0), 1e-9);
+    EXPECT_EQ(both[1].gouges.moves, 0u);
+    const auto alone = simulateSetups(plate.mesh, {b});
+    EXPECT_EQ(alone[0].collisions.moves, 2u);
+    // A motion that is no rotation is refused.
+    b.toPart.rotation[0] = 2;
+    EXPECT_THROW(simulateSetups(plate.mesh, {b}), aeronc::Error);
 }

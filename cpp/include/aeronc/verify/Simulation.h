@@ -69,13 +69,46 @@ struct SimulationReport {
     double rasteriseSeconds = 0, simulateSeconds = 0, coverageSeconds = 0;
 };
 
+// A rigid motion p -> rotation p + translation (rotation row by row).
+struct Rigid {
+    std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    std::array<double, 3> translation{};
+    std::array<double, 3> operator()(const std::array<double, 3>& p) const;
+    Rigid inverse() const;
+    Rigid then(const Rigid& next) const;  // this first, then next
+};
+
+// The stock one setup left, simulated from the whole blank in its own frame, and the motion
+// from the frame of the setup being simulated into that one. Material is still there at a
+// point only where every setup before left it.
+struct PriorStock {
+    const StockDexels* stock = nullptr;
+    Rigid toStock;
+};
+
 // Rasterises the part on a grid over the part and the blank (the part's bounding box when the
 // program has none), then runs every operation in order. Throws aeronc::Error (input) for a
 // program that does not fit the part.
 SimulationReport simulate(const TriangleMesh& part, const Program& program, const SimulationOptions& options = {});
 
-// The same on an already rasterised part; its grid must cover the blank.
+// The same on an already rasterised part; its grid must cover the blank. With priors, a rapid
+// collides only with material that the setups before also left (checked at points every half
+// cell through the material it meets); finalStock, when given, receives the stock at the end.
 SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
-                          const SimulationOptions& options = {});
+                          const SimulationOptions& options = {}, const std::vector<PriorStock>& priors = {},
+                          StockDexels* finalStock = nullptr);
+
+// One setup of a part: its program in its own frame (its tool axis along +-Z) and the motion
+// from that frame to the part's.
+struct SetupProgram {
+    std::string name;
+    Rigid toPart;
+    Program program;
+};
+
+// The setups in the order given, each in its own frame from the whole blank (partMesh is in the
+// part's frame); the rapids of each are checked against what the setups before left too.
+std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const std::vector<SetupProgram>& setups,
+                                             const SimulationOptions& options = {});
 
 }  // namespace aeronc::verify

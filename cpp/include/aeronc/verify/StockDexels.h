@@ -34,6 +34,8 @@ public:
     double removeBelow(std::size_t c, double z);
 
     double volume() const;
+    // Whether material is left at (x, y, z): false outside the grid.
+    bool contains(double x, double y, double z) const;
 
 private:
     Grid grid_;
