@@ -9,6 +9,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -149,4 +150,35 @@ TEST(BlockRecognition, CrossingPassagesKeepTheirOwnWalls) {
         EXPECT_EQ(e->type, ElementType::Opening);
         EXPECT_EQ(t.setups[static_cast<std::size_t>(e->setup)].name, "+Z") << "Face" << f;
     }
+}
+
+// A pocket 60 x 30, floor at 10 in a 30 mm block, with a blind hole (radius 4, axis at z 13)
+// drilled from its -X wall 15 mm into the block: at the pocket's slicing level the hole's
+// chord is a notch in the contour, but material stands over it up to the top. From +Z that
+// notch is an undercut: it stays out of the pocket's region, with a warning.
+TEST(BlockRecognition, UndercutUnderAWallStaysOutOfThePocket) {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 30)).Shape();
+    block = cut(block, BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 31)).Shape());
+    const gp_Ax2 axis(gp_Pnt(5, 30, 13), gp_Dir(1, 0, 0));
+    block = cut(block, BRepPrimAPI_MakeCylinder(axis, 4, 16).Shape());
+    const TopoDS_Shape part = validatedSolid(block, "block");
+    const DomainTree t = recognise(part, along({{0, 0, 1}}));
+    const DomainElement* pocket = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (e.type == ElementType::ClosedPocket && std::abs(e.level - 10) < 1e-6) pocket = &e;
+    ASSERT_NE(pocket, nullptr);
+    // The drive loop stays on the pocket's walls: nothing west of x = 20.
+    double west = 1e9;
+    for (const Vec3& p : pocket->contour) west = std::min(west, p[0]);
+    EXPECT_NEAR(west, 20, 1e-3);
+    EXPECT_NEAR(pocket->area, 60 * 30, 1);
+    // Its walls are the four planes: the hole's wall is no wall of the pocket.
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(part, TopAbs_FACE, faces);
+    EXPECT_EQ(pocket->contourFaces.size(), 4u);
+    for (int f : pocket->contourFaces)
+        EXPECT_EQ(BRepAdaptor_Surface(TopoDS::Face(faces(f))).GetType(), GeomAbs_Plane) << "face " << f;
+    bool said = false;
+    for (const std::string& w : t.warnings) said |= w.find("undercut") != std::string::npos;
+    EXPECT_TRUE(said);
 }

@@ -75,6 +75,141 @@ double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top
     return std::isfinite(hi) ? std::min(hi, top) : top;
 }
 
+bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, std::vector<std::string>& warnings) const {
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    const double tol = 10 * view_.tol.linear;
+    // Material over the region starts above an underside between the slice and the top: a
+    // plane facing down, or a curved face (the vault of a hole across the axis) ending there.
+    std::vector<double> heights;
+    for (int i = 0; i < faces_.size(); ++i) {
+        const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
+        if (s.att != Attitude::Down && s.att != Attitude::Curved) continue;
+        if (!(s.hi > z + tol && s.hi < top - tol)) continue;
+        // Over the region at all: its box seen along the axis overlaps the region's.
+        const Vec3 &a = faces_[i].boxMin, &b = faces_[i].boxMax;
+        P2 lo{kInf, kInf}, hi{-kInf, -kInf};
+        for (int k = 0; k < 8; ++k) {
+            const P2 q = view_.frame.project(Vec3{k & 1 ? b[0] : a[0], k & 2 ? b[1] : a[1], k & 4 ? b[2] : a[2]});
+            lo = {std::min(lo.x, q.x), std::min(lo.y, q.y)}, hi = {std::max(hi.x, q.x), std::max(hi.y, q.y)};
+        }
+        if (hi.x < c.region.lo.x || lo.x > c.region.hi.x || hi.y < c.region.lo.y || lo.y > c.region.hi.y) continue;
+        heights.push_back(s.hi);
+    }
+    if (heights.empty()) return true;
+    std::sort(heights.begin(), heights.end());
+    heights.erase(std::unique(heights.begin(), heights.end(), [&](double a, double b) { return b - a <= tol; }),
+                  heights.end());
+    Paths reach = c.region.paths();
+    for (double hd : heights) {
+        // Just above the underside, short of the next height where a face starts or ends.
+        double next = top;
+        for (double x : critical_)
+            if (x > hd + tol) {
+                next = std::min(next, x);
+                break;
+            }
+        const double zs = 0.5 * (hd + next);
+        std::vector<std::string> ignored;
+        const std::vector<SectionLoop> loops =
+            sliceLoops(faces_, cutFaces(zs), view_.frame, zs, view_.tol.chord, view_.tol.linear, ignored, view_.meshes);
+        Clipper material;
+        for (const SectionLoop& L : loops) {
+            Path p;
+            for (const P2& q : L.pts) p.push_back(toInt(q));
+            material.AddPath(p, ptClip, true);
+        }
+        material.AddPaths(reach, ptSubject, true);
+        Paths left;
+        material.Execute(ctDifference, left, pftNonZero, pftEvenOdd);
+        reach = left;
+    }
+    double before = c.region.area(), after = 0;
+    for (const Path& p : reach) after += Area(p) / (kClipperScale * kClipperScale);
+    if (after >= before - std::max(0.01, 1e-4 * before)) return true;
+    // The largest piece reachable from above stays.
+    Clipper pieces;
+    pieces.AddPaths(reach, ptSubject, true);
+    PolyTree tree;
+    pieces.Execute(ctUnion, tree, pftNonZero, pftNonZero);
+    const PolyNode* best = nullptr;
+    double bestArea = 0;
+    for (const PolyNode* n = tree.GetFirst(); n; n = n->GetNext()) {
+        if (n->IsHole()) continue;
+        const double a = std::fabs(Area(n->Contour));
+        if (a > bestArea) bestArea = a, best = n;
+    }
+    char b[200];
+    if (!best || bestArea / (kClipperScale * kClipperScale) < 1e-3 * before) {
+        std::snprintf(b, sizeof b, "level %.3f: a region of %.1f mm2 lies wholly under material (an undercut): left out",
+                      h, before);
+        warnings.push_back(b);
+        return false;
+    }
+    std::snprintf(b, sizeof b,
+                  "level %.3f: %.1f mm2 of a region of %.1f mm2 lie under material (an undercut): left out of the pocket",
+                  h, before - after, before);
+    warnings.push_back(b);
+    Region r;
+    r.outer = best->Contour;
+    if (!Orientation(r.outer)) ReversePath(r.outer);
+    for (const PolyNode* hole : best->Childs) {
+        Path p = hole->Contour;
+        if (Orientation(p)) ReversePath(p);
+        r.holes.push_back(p);
+    }
+    r.updateBox();
+    c.region = r;
+    if (!c.region.contains(c.sample)) c.sample = c.region.interiorPoint();
+    // The pieces of the open edges still on the boundary: where an outer segment runs along one.
+    std::vector<std::pair<P2, P2>> open;
+    for (const auto& oe : c.openEdges) {
+        const double ex = oe.second.x - oe.first.x, ey = oe.second.y - oe.first.y, len = std::hypot(ex, ey);
+        if (!(len > 0)) continue;
+        auto along = [&](const P2& p) { return ((p.x - oe.first.x) * ex + (p.y - oe.first.y) * ey) / len; };
+        auto off = [&](const P2& p) { return std::fabs((p.x - oe.first.x) * ey - (p.y - oe.first.y) * ex) / len; };
+        for (std::size_t i = 0; i < r.outer.size(); ++i) {
+            const P2 a = toP2(r.outer[i]), q = toP2(r.outer[(i + 1) % r.outer.size()]);
+            if (off(a) > 1e-3 || off(q) > 1e-3) continue;
+            const double s0 = std::max(0.0, std::min(along(a), along(q))), s1 = std::min(len, std::max(along(a), along(q)));
+            if (s1 - s0 <= 1e-3) continue;
+            open.push_back({{oe.first.x + ex * s0 / len, oe.first.y + ey * s0 / len},
+                            {oe.first.x + ex * s1 / len, oe.first.y + ey * s1 / len}});
+        }
+    }
+    c.openEdges = open;
+    // The walls it still has: faces with a piece of section on the new boundary.
+    auto onBoundary = [&](const P2& m) {
+        auto near = [&](const Path& path) {
+            for (std::size_t i = 0; i < path.size(); ++i) {
+                const P2 a = toP2(path[i]), q = toP2(path[(i + 1) % path.size()]);
+                const double dx = q.x - a.x, dy = q.y - a.y, l2 = dx * dx + dy * dy;
+                const double t = l2 > 0 ? std::clamp(((m.x - a.x) * dx + (m.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+                if (std::hypot(m.x - a.x - t * dx, m.y - a.y - t * dy) <= tol) return true;
+            }
+            return false;
+        };
+        if (near(r.outer)) return true;
+        for (const Path& hp : r.holes)
+            if (near(hp)) return true;
+        return false;
+    };
+    std::vector<int> walls;
+    for (const SectionLoop* L : c.contourLoops)
+        for (std::size_t k = 0; k < L->pts.size(); ++k) {
+            const P2& a = L->pts[k];
+            const P2& q = L->pts[(k + 1) % L->pts.size()];
+            const int f = L->faces[k];
+            if (std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end() &&
+                std::find(walls.begin(), walls.end(), f) == walls.end() && onBoundary({0.5 * (a.x + q.x), 0.5 * (a.y + q.y)}))
+                walls.push_back(f);
+        }
+    std::vector<int> kept;
+    for (int f : c.contourFaces)
+        if (std::find(walls.begin(), walls.end(), f) != walls.end()) kept.push_back(f);
+    if (!kept.empty()) c.contourFaces = kept;
+    return true;
+}
+
 double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double h = levels_[k];
@@ -210,6 +345,12 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             // Capped from above anywhere (a cavity seen from the wrong side, maybe with a hole
             // in its floor): not machinable here.
             if (capped(c, z)) continue;
+        }
+        {
+            double top = -kInf;
+            for (int f : c.contourFaces) top = std::max(top, fs[static_cast<std::size_t>(f)].hi);
+            if (c.exterior || !std::isfinite(top)) top = std::max(top, h1);
+            if (!trimUndercuts(c, h, z, top, warnings)) continue;
         }
         ElementDraft in;
         DomainElement& e = in.el;

@@ -36,6 +36,10 @@ public:
 private:
     // The height the level is cut at (above its floor fillets), with the floors there.
     double sliceHeight(std::size_t k, std::vector<int>& ups) const;
+    // Leaves out of c's region what lies under material between the slice z and `top` (an
+    // undercut), keeping the largest piece reachable from above, with a warning; false when
+    // nothing is reachable.
+    bool trimUndercuts(VoidRegion& c, double h, double z, double top, std::vector<std::string>& warnings) const;
     // How high the island around `hole` (one of c's region holes) stands, at most `top`.
     double islandTop(const VoidRegion& c, const ClipperLib::Path& hole, double top) const;
     // The faces a plane at height z may cut.
