@@ -12,6 +12,9 @@
 #include <TopoDS.hxx>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -247,6 +250,16 @@ void finishHub(const Channel& ch, const CutterShape& cut, double filletRadius, c
     }
 }
 
+void merge(CheckResult& into, const CheckResult& r) {
+    into.positions += r.positions;
+    into.holderCollisions += r.holderCollisions;
+    into.tilted += r.tilted;
+    if (r.maxGouge > into.maxGouge) {
+        into.maxGouge = r.maxGouge;
+        std::copy(r.worstAt, r.worstAt + 3, into.worstAt);
+    }
+}
+
 Move turnedMove(const Frame& fr, const Move& m, double angle) {
     return Move{fr.turned(m.centre, angle), fr.turnedVector(m.axis, angle), m.rapid};
 }
@@ -278,24 +291,51 @@ ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::Impe
     ImpellerProgram prog;
     Operation rough{"rough_channels", rougher, {}}, blades{"finish_blades", finisher, {}}, hub{"finish_hub", finisher, {}};
     std::vector<std::vector<Move>> baseRough(kinds), baseBlades(kinds), baseHub(kinds);
-    std::unique_ptr<Frame> frame;
-    for (int k = 0; k < kinds; ++k) {
-        const Channel ch(faces, f, k);
-        if (!frame) frame = std::make_unique<Frame>(ch.frame());
-        double safe = -1e300;
-        for (double r : {ch.rMin(), 0.5 * (ch.rMin() + ch.rMax()), ch.rMax()}) safe = std::max(safe, ch.shroudZ(r));
-        safe += opt.safeDistance;
-        roughChannel(ch, rougher, opt, safe, prog.check, baseRough[k]);
-        finishWall(ch, false, finisher, opt, safe, prog.check, baseBlades[k]);
-        finishWall(ch, true, finisher, opt, safe, prog.check, baseBlades[k]);
-        finishHub(ch, finisher, d.filletRadius, opt, safe, prog.check, baseHub[k]);
+    const Frame frame(f);
+    // Each operation of each channel kind is independent: two threads take the next in turn,
+    // roughing (the most positions) first. Each measures with a channel of its own (the distance
+    // queries keep state); results are merged in a fixed order, so they do not depend on timing.
+    struct Task {
+        int kind, op;
+        CheckResult check;
+        std::exception_ptr error;
+    };
+    std::vector<Task> tasks;
+    for (int op = 0; op < 3; ++op)
+        for (int k = 0; k < kinds; ++k) tasks.push_back({k, op, {}, nullptr});
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t i; (i = next++) < tasks.size();) {
+            Task& t = tasks[i];
+            try {
+                const Channel ch(faces, f, t.kind);
+                double safe = -1e300;
+                for (double r : {ch.rMin(), 0.5 * (ch.rMin() + ch.rMax()), ch.rMax()}) safe = std::max(safe, ch.shroudZ(r));
+                safe += opt.safeDistance;
+                if (t.op == 0) roughChannel(ch, rougher, opt, safe, t.check, baseRough[t.kind]);
+                if (t.op == 1) finishHub(ch, finisher, d.filletRadius, opt, safe, t.check, baseHub[t.kind]);
+                if (t.op == 2) {
+                    finishWall(ch, false, finisher, opt, safe, t.check, baseBlades[t.kind]);
+                    finishWall(ch, true, finisher, opt, safe, t.check, baseBlades[t.kind]);
+                }
+            } catch (...) {
+                t.error = std::current_exception();
+            }
+        }
+    };
+    std::thread second(work);
+    work();
+    second.join();
+    for (const Task& t : tasks) {
+        if (t.error) std::rethrow_exception(t.error);
+        merge(prog.check, t.check);
     }
     // The channels in angular order: channel c is its kind's base turned by its pattern step.
     for (int c = 0; c < channels; ++c) {
         const int kind = c % kinds;
         const double angle = (c / kinds) * pitch;
         for (auto [base, op] : {std::pair{&baseRough, &rough}, {&baseBlades, &blades}, {&baseHub, &hub}})
-            for (const auto& m : (*base)[kind]) op->moves.push_back(turnedMove(*frame, m, angle));
+            for (const auto& m : (*base)[kind]) op->moves.push_back(turnedMove(frame, m, angle));
     }
     prog.operations = {rough, blades, hub};
     return prog;
