@@ -138,10 +138,13 @@ Clearance clearance(const Obstacles& o, const CutterShape& c, const Vec3& centre
 }
 
 Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA)
+    : Channel(faces, f, bladeA, bladeA + 1) {}
+
+Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA, int bladeB)
     : frame_(f), obstacles_({}, {}) {
     const int n = static_cast<int>(f.blades.size());
-    const auto& A = f.blades[bladeA];
-    const auto& B = f.blades[(bladeA + 1) % n];
+    const auto& A = f.blades[bladeA % n];
+    const auto& B = f.blades[bladeB % n];
     auto face = [&](int i) { return TopoDS::Face(faces(i)); };
     auto makeWall = [&](int id) {
         Wall w;
@@ -164,15 +167,19 @@ Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::Impell
     b_ = makeWall(B.suction);
     rMin_ = std::max(a_.rMin, b_.rMin);
     rMax_ = std::min(a_.rMax, b_.rMax);
+    for (int k = bladeA + 1; k < bladeB; ++k)
+        for (int id : f.blades[k % n].walls) rMax_ = std::min(rMax_, makeWall(id).rMin);
     if (rMax_ <= rMin_)
         throw inputError("impeller toolpaths: blades " + std::to_string(bladeA) + " and " +
-                         std::to_string((bladeA + 1) % n) + " have no stretch of channel with both walls along it");
+                         std::to_string(bladeB % n) + " have no stretch of channel with both walls along it");
     hub_ = face(f.hub);
     hubSurface_ = BRep_Tool::Surface(hub_);
     hubProjection_ = std::make_unique<SurfaceProjection>(hubSurface_);
     shroudSurface_ = BRep_Tool::Surface(face(A.shroud));
     std::vector<TopoDS_Face> obstacles;
-    for (const auto* b : {&A, &B}) {
+    std::vector<const impeller::Blade*> blades{&A, &B};
+    for (int k = bladeA + 1; k < bladeB; ++k) blades.push_back(&f.blades[k % n]);
+    for (const auto* b : blades) {
         for (int w : b->walls) obstacles.push_back(face(w));
         for (int w : b->fillets) obstacles.push_back(face(w));
         obstacles.push_back(face(b->shroud));
@@ -268,6 +275,36 @@ Vec3 Channel::hubNormal(const Vec3& p) const {
     Vec3 n = vec(du.Crossed(dv)).normalized();
     if (hub_.Orientation() == TopAbs_REVERSED) n = -n;
     return n;
+}
+
+}  // namespace aeronc::impellerpath
+
+namespace aeronc::impellerpath {
+
+double Channel::wallDistance(bool b, const Vec3& p, Vec3& normal) const {
+    const Wall& w = wall(b);
+    double u, v, d;
+    gp_Pnt on;
+    if (!w.projection->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto a blade wall");
+    gp_Pnt q;
+    gp_Vec du, dv;
+    w.surface->D1(u, v, q, du, dv);
+    gp_Vec n = du.Crossed(dv);
+    if (w.face.Orientation() == TopAbs_REVERSED) n.Reverse();
+    normal = vec(n).normalized();
+    return (p - vec(on)).dot(normal);
+}
+
+double Channel::hubDistance(const Vec3& p, Vec3& normal) const {
+    double u, v, d;
+    gp_Pnt on;
+    if (!hubProjection_->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto the hub");
+    gp_Pnt q;
+    gp_Vec du, dv;
+    hubSurface_->D1(u, v, q, du, dv);
+    normal = vec(du.Crossed(dv)).normalized();
+    if (hub_.Orientation() == TopAbs_REVERSED) normal = -normal;
+    return (p - vec(on)).dot(normal);
 }
 
 }  // namespace aeronc::impellerpath

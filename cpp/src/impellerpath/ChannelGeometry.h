@@ -79,6 +79,10 @@ struct Wall {
 class Channel {
 public:
     Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA);
+    // The channel between blade A and a later blade B (the inducer: from one main blade to the
+    // next, ahead of the splitter between them): the blades between are obstacles, and the
+    // channel ends where the innermost of them begins.
+    Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA, int bladeB);
 
     const Frame& frame() const { return frame_; }
     double rMin() const { return rMin_; }
@@ -93,6 +97,10 @@ public:
     void wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, double* u = nullptr, double* v = nullptr) const;
     const Wall& wall(bool b) const { return b ? b_ : a_; }
     Vec3 hubNormal(const Vec3& p) const;
+    // Signed distance from p to a wall's surface and to the hub's, positive on the channel side,
+    // with the unit normal into the channel at the nearest point.
+    double wallDistance(bool b, const Vec3& p, Vec3& normal) const;
+    double hubDistance(const Vec3& p, Vec3& normal) const;
 
     // The two blades' faces and the hub.
     const Obstacles& obstacles() const { return obstacles_; }

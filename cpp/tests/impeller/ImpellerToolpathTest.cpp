@@ -4,6 +4,7 @@
 // allowance; the program posts for the AC cradle 840D machine under TRAORI.
 #include <aeronc/core/Error.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/Blank.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/kb/ImpellerRoute.h>
@@ -103,6 +104,26 @@ TEST(ImpellerToolpaths, NoGougeNoCollisionPostedUnderTraori) {
     grown.fluteLength += quick().roughAllowance;
     grown.shankRadius = grown.tipRadius;
     EXPECT_LE(checkProgram(s.part.shape, s.features, {{grown, reread[0].second}}).maxGouge, 0.0);
+
+    // Passes are entered and left along the tool axis at feed until the tool is outside the blank;
+    // the rapids between them stay outside it, so they cut neither the part nor any stock left.
+    EXPECT_GT(prog.check.links, 20);
+    EXPECT_EQ(prog.check.linkCollisions, 0);
+    const auto blank = impeller::outerProfile(s.part.shape, s.features, quick().blankAllowance);
+    const auto rapids = checkRapids(blank, s.features, reread, quick().rapidClearance - 1e-6);
+    EXPECT_GT(rapids.links, 20);
+    EXPECT_EQ(rapids.linkCollisions, 0);
+    // Retracting at rapid straight from the last cutting position would run through the stock.
+    auto direct = reread;
+    int passes = 0;
+    for (auto& [cutter, moves] : direct)
+        for (size_t i = 1; i + 1 < moves.size(); ++i)
+            if (!moves[i - 1].rapid && !moves[i].rapid && moves[i + 1].rapid) {
+                moves.erase(moves.begin() + static_cast<long>(i));
+                ++passes;
+            }
+    EXPECT_GT(passes, 10);
+    EXPECT_GE(checkRapids(blank, s.features, direct).linkCollisions, passes);
 
     // Posted for the AC cradle machine with the 840D: TRAORI around the simultaneous moves.
     const auto machine = kinematics::loadMachineFile(std::string(AERONC_MACHINES) + "/AC-5AX.json");
