@@ -14,7 +14,16 @@
 #include <aeronc/post/Post.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include <filesystem>
 
@@ -45,7 +54,7 @@ struct Programmed {
     testparts::Impeller part = testparts::makeImpeller(testparts::ImpellerSpec{});
     impeller::ImpellerFeatures features = impeller::recogniseImpeller(part.shape);
     impeller::ImpellerDimensions dims = impeller::measureImpeller(part.shape, features);
-    CutterShape rougher, finisher;
+    CutterShape rougher, finisher, filletBall;
     Programmed() {
         const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_paths.sqlite";
         std::filesystem::remove(path);
@@ -56,6 +65,7 @@ struct Programmed {
             // Shank: the tool's own diameter for a ball; the tapered ball's is in its table (8 to 10 mm).
             if (s.operation == "rough_channels") rougher = cutterOf(*s.tool, 1, s.tool->diameter / 2);
             if (s.operation == "finish_blades") finisher = cutterOf(*s.tool, 2, 4.0);
+            if (s.operation == "finish_fillets") filletBall = cutterOf(*s.tool, 3, s.tool->diameter / 2);
         }
     }
 };
@@ -154,4 +164,54 @@ TEST(ImpellerToolpaths, CollisionsReportedAndTooWideRefused) {
     wide.tipRadius = wide.shankRadius = s.dims.minChannelWidth / 2;
     const std::string msg = test::inputErrorOf([&] { impellerToolpaths(s.part.shape, s.features, s.dims, wide, s.finisher, o); });
     EXPECT_NE(msg.find("wider than the narrowest channel"), std::string::npos) << msg;
+}
+
+// Fillet finishing runs along the root fillets touching them, and the inducer ahead of the
+// splitters is roughed; no move of the program read back gouges a blade or the hub, and its
+// rapids stay outside the blank.
+TEST(ImpellerToolpaths, FilletsAndInducer) {
+    Programmed s;
+    ASSERT_GT(s.filletBall.tipRadius, 0);
+    ASSERT_LE(s.filletBall.tipRadius, s.dims.filletRadius + 1e-9);
+    const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, RouteCutters{s.rougher, s.finisher, s.filletBall},
+                                        quick());
+    ASSERT_EQ(prog.operations.size(), 4u);
+    EXPECT_EQ(prog.operations[3].name, "finish_fillets");
+    EXPECT_EQ(prog.check.linkCollisions, 0);
+
+    const std::string apt = post::writeApt(toClProgram(prog, "IMPELLER"));
+    const auto reread = movesOf(post::readApt(apt), {s.rougher, s.finisher, s.filletBall});
+    ASSERT_EQ(reread.size(), 4u);
+    const auto again = checkProgram(s.part.shape, s.features, reread);
+    EXPECT_LE(again.maxGouge, kGougeLimit);
+    EXPECT_EQ(again.holderCollisions, 0);
+    const auto blank = impeller::outerProfile(s.part.shape, s.features, quick().blankAllowance);
+    EXPECT_EQ(checkRapids(blank, s.features, reread, quick().rapidClearance - 1e-6).linkCollisions, 0);
+
+    // The fillet ball touches the fillet faces: its centre its radius from them.
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(s.part.shape, TopAbs_FACE, faces);
+    BRep_Builder b;
+    TopoDS_Compound fillets;
+    b.MakeCompound(fillets);
+    for (const auto& blade : s.features.blades)
+        for (int id : blade.fillets) b.Add(fillets, faces(id));
+    int touching = 0;
+    for (const auto& m : reread[3].second) {
+        if (m.rapid) continue;
+        BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(gp_Pnt(m.centre.x(), m.centre.y(), m.centre.z())).Vertex(),
+                                        fillets);
+        ASSERT_TRUE(dist.IsDone());
+        touching += std::abs(dist.Value() - s.filletBall.tipRadius) < 0.01;
+    }
+    // Two walls in each of the two channels, a pass of `stations` positions along each.
+    EXPECT_GE(touching, 4 * (quick().stations - 1));
+
+    // The inducer: roughing positions ahead of the splitters' leading edges (radius 38.6 mm).
+    const testparts::ImpellerSpec spec;
+    const double splitterStart = spec.leadingRadius + spec.splitterStart * (spec.trailingRadius - spec.leadingRadius);
+    int inducer = 0;
+    for (const auto& m : reread[0].second)
+        inducer += !m.rapid && std::hypot(m.centre.x(), m.centre.y()) < splitterStart - s.rougher.tipRadius;
+    EXPECT_GT(inducer, 2 * quick().stations);
 }
