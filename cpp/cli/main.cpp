@@ -22,6 +22,7 @@
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/impeller/Blank.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kinematics/MachineModel.h>
 #include <aeronc/post/Apt.h>
@@ -52,6 +53,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <algorithm>
 #include <csignal>
@@ -276,6 +278,8 @@ int impellerProgramCmd(int argc, char** argv) {
     impellerpath::ImpellerProgram prog;
     impellerpath::CheckResult again;
     impellerpath::CutterShape rougher, finisher;
+    std::optional<impellerpath::CutterShape> filletBall;
+    impellerpath::CheckResult rapids;
     double tRecognise = 0, tPaths = 0, tCheck = 0;
     std::string apt;
     runCatchingOcctFaults(
@@ -288,8 +292,11 @@ int impellerProgramCmd(int argc, char** argv) {
             route = kb::planImpellerRoute(kb, f, d);
             int number = 0;
             for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades")) continue;
-                auto& c = s.operation == "rough_channels" ? rougher : finisher;
+                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades" &&
+                                s.operation != "finish_fillets"))
+                    continue;
+                if (s.operation == "finish_fillets") filletBall.emplace();
+                auto& c = s.operation == "rough_channels" ? rougher : s.operation == "finish_blades" ? finisher : *filletBall;
                 c.id = s.tool->id, c.number = ++number, c.tipRadius = s.tool->diameter / 2;
                 c.taperDeg = s.tool->taperDeg, c.fluteLength = s.tool->fluteLength, c.reach = s.tool->reach;
                 c.shankRadius = s.tool->shankDiameter / 2;
@@ -299,11 +306,16 @@ int impellerProgramCmd(int argc, char** argv) {
             if (rougher.id.empty() || finisher.id.empty())
                 throw inputError("the impeller route has no channel roughing or no blade finishing step");
             t0 = Clock::now();
-            prog = impellerpath::impellerToolpaths(solid, f, d, rougher, finisher, opt);
+            prog = impellerpath::impellerToolpaths(solid, f, d, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
             tPaths = secs(t0);
             apt = post::writeApt(impellerpath::toClProgram(prog, "IMPELLER"));
             t0 = Clock::now();
-            again = impellerpath::checkProgram(solid, f, impellerpath::movesOf(post::readApt(apt), {rougher, finisher}));
+            std::vector<impellerpath::CutterShape> cutters{rougher, finisher};
+            if (filletBall) cutters.push_back(*filletBall);
+            const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
+            again = impellerpath::checkProgram(solid, f, reread);
+            rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.blankAllowance), f, reread,
+                                               opt.rapidClearance - 1e-6);
             tCheck = secs(t0);
         },
         part);
@@ -319,6 +331,10 @@ int impellerProgramCmd(int argc, char** argv) {
                         {"maxGougeMm", again.maxGouge},
                         {"holderCollisions", again.holderCollisions},
                         {"tilted", prog.check.tilted},
+                        {"links", prog.check.links},
+                        {"linkCollisions", prog.check.linkCollisions},
+                        {"rapidsChecked", rapids.links},
+                        {"rapidCollisions", rapids.linkCollisions},
                         {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
                         {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
                         {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
@@ -329,9 +345,13 @@ int impellerProgramCmd(int argc, char** argv) {
     std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
               << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
               << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
-              << " holder collisions, " << prog.check.tilted << " tilted; " << posted.lines << " lines of 840D in "
+              << " holder collisions, " << prog.check.tilted << " tilted; " << rapids.links << " rapids, "
+              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D in "
               << (dir / "IMPELLER.mpf").string() << "\n";
-    return again.maxGouge <= 0.01 && again.holderCollisions == 0 ? 0 : 1;
+    return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
+                   prog.check.linkCollisions == 0
+               ? 0
+               : 1;
 }
 
 int impellerPartCmd(int argc, char** argv) {
