@@ -516,7 +516,8 @@ kinematics::ClProgram toClProgram(const ImpellerProgram& p, const std::string& n
         add(label);
         ClRecord tool;
         tool.kind = ClKind::LoadTool;
-        tool.tool = ClTool{op.cutter.number, op.cutter.id, 2 * op.cutter.tipRadius, op.cutter.tipRadius, 0.0};
+        tool.tool = ClTool{op.cutter.number, op.cutter.id, 2 * op.cutter.tipRadius,
+                           op.cutter.flat ? 0.0 : op.cutter.tipRadius, 0.0};
         add(tool);
         ClRecord spindle;
         spindle.kind = ClKind::Spindle;

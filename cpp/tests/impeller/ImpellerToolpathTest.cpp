@@ -6,6 +6,7 @@
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/Blank.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
@@ -26,6 +27,7 @@
 #include <cmath>
 
 #include <filesystem>
+#include <map>
 
 #include "ErrorOf.h"
 
@@ -214,4 +216,98 @@ TEST(ImpellerToolpaths, FilletsAndInducer) {
     for (const auto& m : reread[0].second)
         inducer += !m.rapid && std::hypot(m.centre.x(), m.centre.y()) < splitterStart - s.rougher.tipRadius;
     EXPECT_GT(inducer, 2 * quick().stations);
+}
+
+// Turning, facing, drilling and boring with the route's tools on the generated impeller: every
+// step the part needs yields moves, none gouges the finished part, the bore is bored to its
+// truth radius, and the milled steps post as plain moves.
+TEST(ImpellerAxialOperations, EveryRouteStepHasMoves) {
+    Programmed s;
+    const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_axial.sqlite";
+    std::filesystem::remove(path);
+    const auto kb = kb::KnowledgeBase::openWithSqlFolder(path.string(), [] { return std::string(AERONC_RESOURCES) + "/kb"; });
+    AxialCutters cutters;
+    int number = 3;
+    for (const auto& st : kb::planImpellerRoute(kb, s.features, s.dims).steps) {
+        if (!st.tool || (st.operation != "face" && st.operation != "drill" && st.operation != "bore")) continue;
+        CutterShape c = cutterOf(*st.tool, ++number, st.tool->diameter / 2);
+        c.flat = true;
+        c.fluteLength = std::max(c.fluteLength, c.tipRadius + 1);
+        (st.operation == "face" ? cutters.faceMill : st.operation == "drill" ? cutters.drill : cutters.boringMill) = c;
+    }
+    ASSERT_TRUE(cutters.faceMill && cutters.drill && cutters.boringMill);
+    const auto prog = axialToolpaths(s.part.shape, s.features, s.dims, cutters);
+    std::map<std::string, const Operation*> ops;
+    for (const auto& op : prog.operations) ops[op.name] = &op;
+    for (const char* name : {"turn", "face", "drill", "bore"}) {
+        SCOPED_TRACE(name);
+        ASSERT_TRUE(ops.count(name));
+        int cutting = 0;
+        for (const auto& mv : ops[name]->moves) cutting += !mv.rapid;
+        EXPECT_GT(cutting, 5);
+    }
+    EXPECT_LE(prog.check.maxGouge, kGougeLimit) << prog.check.worstAt[0] << " " << prog.check.worstAt[1] << " "
+                                                 << prog.check.worstAt[2];
+    EXPECT_EQ(prog.check.holderCollisions, 0);
+    // Both planes faced: the face mill's tip on the nose plane (z 40) and on the back face (z 0),
+    // its axis away from the part; the lathe's insert over both too.
+    for (const char* name : {"face", "turn"}) {
+        SCOPED_TRACE(name);
+        const auto& op = *ops[name];
+        int onNose = 0, onBack = 0;
+        for (const auto& mv : op.moves) {
+            if (mv.rapid) continue;
+            const kinematics::Vec3 tip = mv.centre - op.cutter.tipRadius * mv.axis;
+            onNose += std::abs(tip.z() - 40) < 1e-6 && mv.axis.z() > 0.999;
+            onBack += std::abs(tip.z()) < 1e-6 && mv.axis.z() < -0.999;
+        }
+        EXPECT_GT(onNose, 3);
+        EXPECT_GT(onBack, 3);
+    }
+    // The boring mill's flutes (32 mm) do not reach through the 40 mm bore: the rest from the back.
+    ASSERT_TRUE(ops.count("bore_back"));
+    EXPECT_LT(ops["bore_back"]->moves.front().axis.z(), -0.999);
+
+    // Boring: the tool's side at the truth's bore radius all the way down.
+    const double boreRadius = s.part.truth.boreDiameter / 2;
+    for (const auto& mv : ops["bore"]->moves) {
+        if (mv.rapid) continue;
+        EXPECT_NEAR(std::hypot(mv.centre.x(), mv.centre.y()) + ops["bore"]->cutter.tipRadius, boreRadius, 1e-9);
+    }
+    // The drill leaves the allowance.
+    EXPECT_LE(ops["drill"]->cutter.tipRadius, boreRadius - AxialOptions{}.drillAllowance + 1e-9);
+
+    // Re-read from APT, checked again against the finished part, and posted as plain moves.
+    ImpellerProgram milled;
+    for (const char* name : {"drill", "bore"}) milled.operations.push_back(*ops[name]);
+    const std::string apt = post::writeApt(toClProgram(milled, "BORE"));
+    const auto reread = movesOf(post::readApt(apt), {*cutters.drill, *cutters.boringMill});
+    const auto again = checkProgram(s.part.shape, s.features, reread);
+    EXPECT_GT(again.positions, 20);
+    const auto machine = kinematics::loadMachineFile(std::string(AERONC_MACHINES) + "/AC-5AX.json");
+    post::NcOptions nc;
+    nc.programName = "BORE";
+    const auto posted = post::postApt(apt, machine, nc, {});
+    EXPECT_NE(posted.text.find("M30"), std::string::npos);
+}
+
+// Blades standing above the nose plane: the face mill would cut them, so it does not face that
+// plane and says so; what it does face touches nothing.
+TEST(ImpellerAxialOperations, FaceMillKeptOffTheBlades) {
+    testparts::ImpellerSpec spec;
+    spec.noseHeight = 30;
+    const auto part = testparts::makeImpeller(spec);
+    const auto f = impeller::recogniseImpeller(part.shape);
+    const auto d = impeller::measureImpeller(part.shape, f);
+    AxialCutters cutters;
+    cutters.faceMill = CutterShape{"FM-125", 4, 62.5, 0, 63.5, 62.5, 63, 1000, 500};
+    cutters.faceMill->flat = true;
+    const auto prog = axialToolpaths(part.shape, f, d, cutters);
+    bool noted = false;
+    for (const auto& n : prog.notes) noted = noted || n.find("cannot face plane") != std::string::npos;
+    EXPECT_TRUE(noted);
+    for (const auto& op : prog.operations)
+        for (const auto& mv : op.moves)
+            if (op.name == "face" && !mv.rapid) EXPECT_LT(mv.axis.z(), -0.999);  // the back face only
+    EXPECT_LE(prog.check.maxGouge, kGougeLimit);
 }

@@ -28,6 +28,7 @@ struct CutterShape {
     double shankRadius = 0;   // the shank and holder above the flutes, as a cylinder ...
     double reach = 0;         // ... up to this length from the tip
     double rpm = 0, feed = 0; // r/min, mm/min
+    bool flat = false;        // a flat-bottomed tool (face mill, flat end mill, drill) of radius tipRadius
     // Radius of the cutting part at distance h from the ball's centre along the axis.
     double radiusAt(double h) const;
 };
