@@ -21,6 +21,7 @@
 #include <aeronc/core/TextFile.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/impeller/Blank.h>
 #include <aeronc/kb/ImpellerRoute.h>
@@ -319,6 +320,31 @@ int impellerProgramCmd(int argc, char** argv) {
             tCheck = secs(t0);
         },
         part);
+    // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
+    impellerpath::AxialProgram axial;
+    std::string axialApt;
+    runCatchingOcctFaults(
+        [&] {
+            impellerpath::AxialCutters ac;
+            int number = filletBall ? 3 : 2;
+            for (const auto& s : route.steps) {
+                if (!s.tool || (s.operation != "face" && s.operation != "drill" && s.operation != "bore")) continue;
+                auto c = impellerpath::flatCutter(s.tool->id, ++number, s.tool->diameter, s.tool->fluteLength,
+                                                  s.tool->reach, 1, 1);
+                cuttingData(kb, material,
+                            s.operation == "face" ? "roughing" : s.operation == "drill" ? "drilling" : "finishing",
+                            *s.tool, c);
+                (s.operation == "face" ? ac.faceMill : s.operation == "drill" ? ac.drill : ac.boringMill) = c;
+            }
+            impellerpath::AxialOptions ao;
+            for (const auto& s : route.steps)
+                if (s.operation == "drill") ao.drillAllowance = s.allowance;
+            axial = impellerpath::axialToolpaths(solid, f, d, ac, ao);
+            impellerpath::ImpellerProgram p;
+            p.operations = axial.operations;
+            axialApt = post::writeApt(impellerpath::toClProgram(p, "IMPELLER_AXIAL"));
+        },
+        part);
     post::NcOptions nc;
     nc.programName = "IMPELLER";
     const auto posted = post::postApt(apt, machine, nc, {});
@@ -338,10 +364,22 @@ int impellerProgramCmd(int argc, char** argv) {
                         {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
                         {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
                         {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
+    nlohmann::json axialOps = nlohmann::json::object();
+    for (const auto& op : axial.operations) {
+        int cutting = 0;
+        for (const auto& m : op.moves) cutting += !m.rapid;
+        axialOps[op.name] = {{"tool", op.cutter.id}, {"moves", op.moves.size()}, {"cutting", cutting}};
+    }
+    doc["axialOperations"] = {{"operations", axialOps},
+                              {"positionsChecked", axial.check.positions},
+                              {"maxGougeMm", axial.check.maxGouge},
+                              {"holderCollisions", axial.check.holderCollisions},
+                              {"notes", axial.notes}};
     const std::filesystem::path dir(out);
     writeText((dir / "impeller.json").string(), doc.dump(1));
     writeText((dir / "IMPELLER.apt").string(), apt);
     writeText((dir / "IMPELLER.mpf").string(), posted.text);
+    writeText((dir / "IMPELLER_AXIAL.apt").string(), axialApt);
     std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
               << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
               << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
@@ -349,7 +387,8 @@ int impellerProgramCmd(int argc, char** argv) {
               << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D in "
               << (dir / "IMPELLER.mpf").string() << "\n";
     return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
-                   prog.check.linkCollisions == 0
+                   prog.check.linkCollisions == 0 && axial.check.maxGouge <= 0.01 &&
+                   axial.check.holderCollisions == 0
                ? 0
                : 1;
 }

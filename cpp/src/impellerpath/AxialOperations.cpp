@@ -105,6 +105,17 @@ void appendPass(std::vector<Move>& out, const std::vector<Move>& pass, double li
 
 }  // namespace
 
+CutterShape flatCutter(const std::string& id, int number, double diameter, double fluteLength, double reach,
+                       double rpm, double feed) {
+    CutterShape c;
+    c.id = id, c.number = number, c.tipRadius = 0.5 * diameter, c.flat = true;
+    c.fluteLength = std::max(fluteLength, c.tipRadius + 1);
+    c.reach = std::max(reach, c.fluteLength);
+    c.shankRadius = c.tipRadius;
+    c.rpm = rpm, c.feed = feed;
+    return c;
+}
+
 AxialProgram axialToolpaths(const TopoDS_Shape& part, const impeller::ImpellerFeatures& f,
                             const impeller::ImpellerDimensions& d, const AxialCutters& cutters,
                             const AxialOptions& opt) {

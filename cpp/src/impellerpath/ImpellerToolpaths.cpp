@@ -87,8 +87,8 @@ struct Checker {
 // Links between passes. A pass is entered and left along the tool axis at feed, from and to the
 // point where the whole tool is `clearance` outside the blank (the envelope of the part and of
 // any stock left); from there rapids run along the axis up to the clearance plane, and across
-// it to the next pass. Every link is checked: the feed stretches against the part, sampled
-// every millimetre; the rapids against the blank.
+// it to the next pass. Every link is checked: the feed stretches against the part (the tool
+// swept along its axis), the rapids against the blank.
 struct Links {
     const StockEnvelope& stock;
     double plane;      // axial height of the ball centre on the clearance plane
@@ -104,17 +104,17 @@ struct Links {
         const double up = plane - fr.axial(m.centre);
         return Move{m.centre + std::max(up, 0.0) / std::max(0.2, m.axis.dot(fr.z())) * m.axis, m.axis, true};
     }
-    // Feed from a to b: every millimetre of it measured against the part.
-    void checkFeed(const Move& a, const Move& b, Checker& check) const {
-        const int n = std::max(1, static_cast<int>(std::ceil((b.centre - a.centre).norm())));
-        bool touched = false;
-        for (int i = 1; i < n && !touched; ++i) {
-            const Vec3 c = a.centre + (b.centre - a.centre) * (double(i) / n);
-            const Clearance k = impellerpath::clearance(check.ch.obstacles(), check.cutter, c, a.axis);
-            touched = k.gouge > kGougeAim || k.holder;
-        }
+    // Feed along the tool axis between a cutting position and a point above it. Moving along its
+    // own axis, the tool sweeps what the tool at the cutting position covers with its shank longer
+    // by the distance (and no narrower than the flutes' top): one measure of that longer tool.
+    void checkFeed(const Move& cutting, const Move& above, Checker& check) const {
+        CutterShape longer = check.cutter;
+        longer.reach += (above.centre - cutting.centre).norm();
+        // Flutes wider than the shank sweep up through where the shank was.
+        longer.shankRadius = std::max(longer.shankRadius, longer.radiusAt(longer.fluteLength - longer.tipRadius));
+        const Clearance k = impellerpath::clearance(check.ch.obstacles(), longer, cutting.centre, cutting.axis);
         ++check.result.links;
-        check.result.linkCollisions += touched;
+        check.result.linkCollisions += k.gouge > kGougeAim || k.holder;
     }
     // A rapid from a to b: the tool outside the blank all along.
     void checkRapid(const Move& a, const Move& b, Checker& check) const {
@@ -129,7 +129,7 @@ struct Links {
         Move inRapid = in;
         inRapid.rapid = true;
         checkRapid(inTop, inRapid, check);
-        checkFeed(in, pass.front(), check);
+        checkFeed(pass.front(), in, check);
         checkFeed(pass.back(), out_, check);
         checkRapid(out_, outTop, check);
         check.tally(out_);

@@ -230,9 +230,8 @@ TEST(ImpellerAxialOperations, EveryRouteStepHasMoves) {
     int number = 3;
     for (const auto& st : kb::planImpellerRoute(kb, s.features, s.dims).steps) {
         if (!st.tool || (st.operation != "face" && st.operation != "drill" && st.operation != "bore")) continue;
-        CutterShape c = cutterOf(*st.tool, ++number, st.tool->diameter / 2);
-        c.flat = true;
-        c.fluteLength = std::max(c.fluteLength, c.tipRadius + 1);
+        const CutterShape c =
+            flatCutter(st.tool->id, ++number, st.tool->diameter, st.tool->fluteLength, st.tool->reach, 2000, 200);
         (st.operation == "face" ? cutters.faceMill : st.operation == "drill" ? cutters.drill : cutters.boringMill) = c;
     }
     ASSERT_TRUE(cutters.faceMill && cutters.drill && cutters.boringMill);
@@ -300,8 +299,7 @@ TEST(ImpellerAxialOperations, FaceMillKeptOffTheBlades) {
     const auto f = impeller::recogniseImpeller(part.shape);
     const auto d = impeller::measureImpeller(part.shape, f);
     AxialCutters cutters;
-    cutters.faceMill = CutterShape{"FM-125", 4, 62.5, 0, 63.5, 62.5, 63, 1000, 500};
-    cutters.faceMill->flat = true;
+    cutters.faceMill = flatCutter("FM-125", 4, 125, 6, 63, 1000, 500);
     const auto prog = axialToolpaths(part.shape, f, d, cutters);
     bool noted = false;
     for (const auto& n : prog.notes) noted = noted || n.find("cannot face plane") != std::string::npos;

@@ -23,6 +23,11 @@ struct AxialCutters {
     CutterShape turningInsert{"LATHE-R0.8", 9, 0.8, 0, 1.6, 0.8, 30, 2000, 200};
 };
 
+// A flat-bottomed tool as a CutterShape: radius, flat; a face mill's body (wider than its
+// flutes are long) counts as cutting part up to its radius above the tip.
+CutterShape flatCutter(const std::string& id, int number, double diameter, double fluteLength, double reach,
+                       double rpm, double feed);
+
 struct AxialOptions {
     double drillAllowance = 0.5;  // radial stock the drill leaves in the bore for boring (mm)
     double helixPitch = 2.0;      // boring: axial advance per turn (mm)
