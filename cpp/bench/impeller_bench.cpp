@@ -7,6 +7,7 @@
 // Usage: aeronc_impeller_bench [--blades 9] [--no-paths]
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
@@ -68,6 +69,20 @@ void paths() {
                 "in %.1f s (cpu %.1f s); deepest gouge %.4f mm, %d holder collisions, %d tilted, %d links touching\n",
                 p.operations.size(), moves, p.check.positions, p.check.links, secs(t0), cpu() - c0, p.check.maxGouge,
                 p.check.holderCollisions, p.check.tilted, p.check.linkCollisions);
+    // Turning, facing, drilling and boring with the default route's tools.
+    aeronc::impellerpath::AxialCutters axial;
+    axial.faceMill = aeronc::impellerpath::flatCutter("FM-125", 4, 125, 6, 63, 500, 1000);
+    axial.drill = aeronc::impellerpath::flatCutter("DR-18", 5, 18, 130, 145, 500, 100);
+    axial.boringMill = aeronc::impellerpath::flatCutter("EM-F16", 6, 16, 32, 45, 3000, 600);
+    const double c1 = cpu();
+    const auto t1 = Clock::now();
+    const auto a = aeronc::impellerpath::axialToolpaths(imp.shape, f, d, axial);
+    moves = 0;
+    for (const auto& op : a.operations) moves += op.moves.size();
+    std::printf("turn, face, drill, bore: %zu operations, %zu moves (%d positions checked) in %.1f s (cpu %.1f s); "
+                "deepest gouge %.4f mm, %d holder collisions\n",
+                a.operations.size(), moves, a.check.positions, secs(t1), cpu() - c1, a.check.maxGouge,
+                a.check.holderCollisions);
 }
 
 }  // namespace
