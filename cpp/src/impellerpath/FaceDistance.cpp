@@ -47,12 +47,16 @@ FaceDistance::FaceDistance(const TopoDS_Face& face) : face_(face), surface_(face
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) g.push_back(surface_.Value(u0 + (u1 - u0) * i / n, v0 + (v1 - v0) * j / n));
     auto at = [&](int i, int j) { return g[i * (n + 1) + j]; };
-    double diagonal = 0;
+    // A point of a cell is no farther from its nearest corner than the cell's longest side or
+    // diagonal; 0.1 mm more for the cell's bulge off its corners.
+    double longest = 0;
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
-            diagonal = std::max({diagonal, at(i, j).Distance(at(i + 1, j + 1)), at(i + 1, j).Distance(at(i, j + 1))});
+            longest = std::max({longest, at(i, j).Distance(at(i + 1, j + 1)), at(i + 1, j).Distance(at(i, j + 1)),
+                                at(i, j).Distance(at(i + 1, j)), at(i, j).Distance(at(i, j + 1)),
+                                at(i + 1, j).Distance(at(i + 1, j + 1)), at(i, j + 1).Distance(at(i + 1, j + 1))});
     for (const auto& q : g) grid_.push_back(q.XYZ());
-    reach_ = diagonal + 0.1;
+    reach_ = longest + 0.1;
 }
 
 double FaceDistance::lowerBound(const gp_Pnt& p) const {

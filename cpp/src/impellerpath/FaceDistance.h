@@ -29,8 +29,8 @@ public:
     // A box holding the face.
     const Bnd_Box& box() const { return box_; }
     // A distance the face is no nearer to p than: the nearest point of a grid over the surface's
-    // parameter bounds less the grid's reach (every point of a cell is within its longer
-    // diagonal of each corner, and the cells are small beside the surface's curvature).
+    // parameter bounds less the grid's reach (every point of a cell is within the cell's longest
+    // side or diagonal of a corner; the cells are small beside the surface's curvature).
     double lowerBound(const gp_Pnt& p) const;
 
 private:

@@ -311,12 +311,10 @@ void finishFillet(const Channel& ch, bool b, const CutterShape& cut, double fill
     const double tilt = 10 * kPi / 180;
     std::vector<Move> pass;
     const auto rs = stations(w.rMin + target + 1, w.rMax - target - 1, opt.stations);
-    double guess = ch.guessTheta(b, rs.front());
     for (size_t i = 0; i < rs.size(); ++i) {
         const double r = rs[b ? rs.size() - 1 - i : i];  // climb milling either side: A outwards, B inwards
         const double z0 = ch.hubZ(r) + target;
-        guess = ch.wallTheta(b, r, z0, ch.guessTheta(b, r));
-        Vec3 x = ch.frame().at(r, guess, z0), nW, nH;
+        Vec3 x = ch.frame().at(r, ch.wallTheta(b, r, z0, ch.guessTheta(b, r)), z0), nW, nH;
         ch.wallDistance(b, x, nW);
         x += target * nW;
         bool converged = false;
