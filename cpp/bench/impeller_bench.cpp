@@ -2,10 +2,12 @@
 // 1 s) and measuring its dimensions, for 2 x 5, 2 x 7 and 2 x 9 blades. Wall-clock and processor
 // time (recognition integrates face areas on two threads, so processor time can exceed the wall
 // clock); the median of five runs. Then the 5-axis toolpaths of the 2 x 9 impeller (every
-// channel, 24 stations a pass) with the route's tools, once: generation and check time.
+// channel and the inducers, 24 stations a pass, fillet finishing included) with the route's
+// tools, once: generation and check time.
 // Usage: aeronc_impeller_bench [--blades 9] [--no-paths]
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
@@ -57,15 +59,30 @@ void paths() {
     const auto d = aeronc::impeller::measureImpeller(imp.shape, f);
     aeronc::impellerpath::CutterShape rough{"EM-BALL8", 1, 4, 0, 16, 4, 25, 18000, 2160};
     aeronc::impellerpath::CutterShape finish{"TB-4-3", 2, 2, 3, 25, 5, 50, 18000, 4320};
+    aeronc::impellerpath::CutterShape fillet{"EM-BALL4", 3, 2, 0, 16, 2, 26, 18000, 1500};
     const double c0 = cpu();
     const auto t0 = Clock::now();
-    const auto p = aeronc::impellerpath::impellerToolpaths(imp.shape, f, d, rough, finish);
+    const auto p = aeronc::impellerpath::impellerToolpaths(imp.shape, f, d, {rough, finish, fillet});
     size_t moves = 0;
     for (const auto& op : p.operations) moves += op.moves.size();
-    std::printf("toolpaths 2 x 9 blades: %zu moves (%d positions of 2 channel kinds checked) in %.1f s (cpu %.1f s); "
-                "deepest gouge %.4f mm, %d holder collisions, %d tilted\n",
-                moves, p.check.positions, secs(t0), cpu() - c0, p.check.maxGouge, p.check.holderCollisions,
-                p.check.tilted);
+    std::printf("toolpaths 2 x 9 blades, %zu operations: %zu moves (%d positions of 3 channel kinds checked, %d links) "
+                "in %.1f s (cpu %.1f s); deepest gouge %.4f mm, %d holder collisions, %d tilted, %d links touching\n",
+                p.operations.size(), moves, p.check.positions, p.check.links, secs(t0), cpu() - c0, p.check.maxGouge,
+                p.check.holderCollisions, p.check.tilted, p.check.linkCollisions);
+    // Turning, facing, drilling and boring with the default route's tools.
+    aeronc::impellerpath::AxialCutters axial;
+    axial.faceMill = aeronc::impellerpath::flatCutter("FM-125", 4, 125, 6, 63, 500, 1000);
+    axial.drill = aeronc::impellerpath::flatCutter("DR-18", 5, 18, 130, 145, 500, 100);
+    axial.boringMill = aeronc::impellerpath::flatCutter("EM-F16", 6, 16, 32, 45, 3000, 600);
+    const double c1 = cpu();
+    const auto t1 = Clock::now();
+    const auto a = aeronc::impellerpath::axialToolpaths(imp.shape, f, d, axial);
+    moves = 0;
+    for (const auto& op : a.operations) moves += op.moves.size();
+    std::printf("turn, face, drill, bore: %zu operations, %zu moves (%d positions checked) in %.1f s (cpu %.1f s); "
+                "deepest gouge %.4f mm, %d holder collisions\n",
+                a.operations.size(), moves, a.check.positions, secs(t1), cpu() - c1, a.check.maxGouge,
+                a.check.holderCollisions);
 }
 
 }  // namespace

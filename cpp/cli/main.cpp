@@ -21,7 +21,9 @@
 #include <aeronc/core/TextFile.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/impeller/Blank.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kinematics/MachineModel.h>
 #include <aeronc/post/Apt.h>
@@ -52,6 +54,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <algorithm>
 #include <csignal>
@@ -276,6 +279,8 @@ int impellerProgramCmd(int argc, char** argv) {
     impellerpath::ImpellerProgram prog;
     impellerpath::CheckResult again;
     impellerpath::CutterShape rougher, finisher;
+    std::optional<impellerpath::CutterShape> filletBall;
+    impellerpath::CheckResult rapids;
     double tRecognise = 0, tPaths = 0, tCheck = 0;
     std::string apt;
     runCatchingOcctFaults(
@@ -288,8 +293,11 @@ int impellerProgramCmd(int argc, char** argv) {
             route = kb::planImpellerRoute(kb, f, d);
             int number = 0;
             for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades")) continue;
-                auto& c = s.operation == "rough_channels" ? rougher : finisher;
+                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades" &&
+                                s.operation != "finish_fillets"))
+                    continue;
+                if (s.operation == "finish_fillets") filletBall.emplace();
+                auto& c = s.operation == "rough_channels" ? rougher : s.operation == "finish_blades" ? finisher : *filletBall;
                 c.id = s.tool->id, c.number = ++number, c.tipRadius = s.tool->diameter / 2;
                 c.taperDeg = s.tool->taperDeg, c.fluteLength = s.tool->fluteLength, c.reach = s.tool->reach;
                 c.shankRadius = s.tool->shankDiameter / 2;
@@ -299,12 +307,42 @@ int impellerProgramCmd(int argc, char** argv) {
             if (rougher.id.empty() || finisher.id.empty())
                 throw inputError("the impeller route has no channel roughing or no blade finishing step");
             t0 = Clock::now();
-            prog = impellerpath::impellerToolpaths(solid, f, d, rougher, finisher, opt);
+            prog = impellerpath::impellerToolpaths(solid, f, d, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
             tPaths = secs(t0);
             apt = post::writeApt(impellerpath::toClProgram(prog, "IMPELLER"));
             t0 = Clock::now();
-            again = impellerpath::checkProgram(solid, f, impellerpath::movesOf(post::readApt(apt), {rougher, finisher}));
+            std::vector<impellerpath::CutterShape> cutters{rougher, finisher};
+            if (filletBall) cutters.push_back(*filletBall);
+            const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
+            again = impellerpath::checkProgram(solid, f, reread);
+            rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.blankAllowance), f, reread,
+                                               opt.rapidClearance - 1e-6);
             tCheck = secs(t0);
+        },
+        part);
+    // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
+    impellerpath::AxialProgram axial;
+    std::string axialApt;
+    runCatchingOcctFaults(
+        [&] {
+            impellerpath::AxialCutters ac;
+            int number = filletBall ? 3 : 2;
+            for (const auto& s : route.steps) {
+                if (!s.tool || (s.operation != "face" && s.operation != "drill" && s.operation != "bore")) continue;
+                auto c = impellerpath::flatCutter(s.tool->id, ++number, s.tool->diameter, s.tool->fluteLength,
+                                                  s.tool->reach, 1, 1);
+                cuttingData(kb, material,
+                            s.operation == "face" ? "roughing" : s.operation == "drill" ? "drilling" : "finishing",
+                            *s.tool, c);
+                (s.operation == "face" ? ac.faceMill : s.operation == "drill" ? ac.drill : ac.boringMill) = c;
+            }
+            impellerpath::AxialOptions ao;
+            for (const auto& s : route.steps)
+                if (s.operation == "drill") ao.drillAllowance = s.allowance;
+            axial = impellerpath::axialToolpaths(solid, f, d, ac, ao);
+            impellerpath::ImpellerProgram p;
+            p.operations = axial.operations;
+            axialApt = post::writeApt(impellerpath::toClProgram(p, "IMPELLER_AXIAL"));
         },
         part);
     post::NcOptions nc;
@@ -319,19 +357,40 @@ int impellerProgramCmd(int argc, char** argv) {
                         {"maxGougeMm", again.maxGouge},
                         {"holderCollisions", again.holderCollisions},
                         {"tilted", prog.check.tilted},
+                        {"links", prog.check.links},
+                        {"linkCollisions", prog.check.linkCollisions},
+                        {"rapidsChecked", rapids.links},
+                        {"rapidCollisions", rapids.linkCollisions},
                         {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
                         {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
                         {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
+    nlohmann::json axialOps = nlohmann::json::object();
+    for (const auto& op : axial.operations) {
+        int cutting = 0;
+        for (const auto& m : op.moves) cutting += !m.rapid;
+        axialOps[op.name] = {{"tool", op.cutter.id}, {"moves", op.moves.size()}, {"cutting", cutting}};
+    }
+    doc["axialOperations"] = {{"operations", axialOps},
+                              {"positionsChecked", axial.check.positions},
+                              {"maxGougeMm", axial.check.maxGouge},
+                              {"holderCollisions", axial.check.holderCollisions},
+                              {"notes", axial.notes}};
     const std::filesystem::path dir(out);
     writeText((dir / "impeller.json").string(), doc.dump(1));
     writeText((dir / "IMPELLER.apt").string(), apt);
     writeText((dir / "IMPELLER.mpf").string(), posted.text);
+    writeText((dir / "IMPELLER_AXIAL.apt").string(), axialApt);
     std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
               << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
               << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
-              << " holder collisions, " << prog.check.tilted << " tilted; " << posted.lines << " lines of 840D in "
+              << " holder collisions, " << prog.check.tilted << " tilted; " << rapids.links << " rapids, "
+              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D in "
               << (dir / "IMPELLER.mpf").string() << "\n";
-    return again.maxGouge <= 0.01 && again.holderCollisions == 0 ? 0 : 1;
+    return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
+                   prog.check.linkCollisions == 0 && axial.check.maxGouge <= 0.01 &&
+                   axial.check.holderCollisions == 0
+               ? 0
+               : 1;
 }
 
 int impellerPartCmd(int argc, char** argv) {

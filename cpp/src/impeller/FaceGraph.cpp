@@ -1,11 +1,11 @@
 #include "FaceGraph.h"
 
+#include "FaceProperties.h"
+
 #include <aeronc/core/Error.h>
 
 #include <BRepAdaptor_Surface.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom_Surface.hxx>
@@ -15,6 +15,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <atomic>
 #include <thread>
 
 namespace aeronc::impeller {
@@ -65,18 +66,18 @@ FaceGraph::FaceGraph(const TopoDS_Shape& shape) {
         info_[i - 1].face = TopoDS::Face(faces(i));
         info_[i - 1].type = BRepAdaptor_Surface(info_[i - 1].face, false).GetType();
     }
-    // Area and centroid: OCCT's integration over trimmed B-spline faces dominates recognition,
-    // so the faces are shared between two threads (each face's integration is independent).
-    auto integrate = [this](size_t from, size_t step) {
-        for (size_t i = from; i < info_.size(); i += step) {
-            GProp_GProps g;
-            BRepGProp::SurfaceProperties(info_[i].face, g);
-            info_[i].area = g.Mass();
-            info_[i].centroid = g.CentreOfMass();
+    // Area and centroid of each face are independent: two threads take the next face in turn
+    // (the faces trimmed by the hub and the shroud cost OCCT's boundary integration).
+    std::atomic<size_t> next{0};
+    auto integrate = [this, &next] {
+        for (size_t i; (i = next++) < info_.size();) {
+            const AreaAndCentroid a = areaAndCentroid(info_[i].face);
+            info_[i].area = a.area;
+            info_[i].centroid = a.centroid;
         }
     };
-    std::thread second(integrate, 1, 2);
-    integrate(0, 2);
+    std::thread second(integrate);
+    integrate();
     second.join();
 
     TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;

@@ -17,6 +17,8 @@
 #include <aeronc/core/Error.h>
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
 #include <TopExp_Explorer.hxx>
@@ -411,7 +413,18 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
     const int n = static_cast<int>(out.blades.size());
     double best = 1e300;
     int nearest = 1 % n;
-    for (int j = 1; j < n; ++j) {
+    // The neighbours first; a face whose bounding box is already farther needs no query.
+    auto box = [&](int j) {
+        Bnd_Box b;
+        BRepBndLib::Add(g[out.blades[j].shroud].face, b, false);
+        return b;
+    };
+    const Bnd_Box first = box(0);
+    std::vector<int> order{1};
+    if (n - 1 > 1) order.push_back(n - 1);
+    for (int j = 2; j < n - 1; ++j) order.push_back(j);
+    for (int j : order) {
+        if (first.Distance(box(j)) >= best) continue;
         const double d = shapeDistance(g[out.blades[0].shroud].face, g[out.blades[j].shroud].face);
         if (d < best) best = d, nearest = j;
     }

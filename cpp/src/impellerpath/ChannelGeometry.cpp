@@ -12,6 +12,7 @@
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Line.hxx>
+#include <Precision.hxx>
 #include <TopoDS.hxx>
 
 #include <algorithm>
@@ -57,33 +58,44 @@ Vec3 Frame::turnedVector(const Vec3& v, double angle) const {
 }
 Vec3 Frame::turned(const Vec3& p, double angle) const { return o_ + turnedVector(p - o_, angle); }
 
-Obstacles::Obstacles(std::vector<TopoDS_Face> faces, Handle(Geom_Surface) hub)
-    : faces_(std::move(faces)), hub_(std::move(hub)) {
-    for (const auto& f : faces_) {
-        Bnd_Box b;
-        BRepBndLib::AddOptimal(f, b, false, false);
-        boxes_.push_back(b);
-    }
+SurfaceProjection::SurfaceProjection(const Handle(Geom_Surface)& surface)
+    : projection_(std::make_unique<GeomAPI_ProjectPointOnSurf>()) {
+    double u0, u1, v0, v1;
+    surface->Bounds(u0, u1, v0, v1);
+    projection_->Init(surface, u0, u1, v0, v1, Precision::PConfusion());
+}
+
+bool SurfaceProjection::project(const gp_Pnt& p, double& u, double& v, double& distance, gp_Pnt& nearest) const {
+    projection_->Perform(p);
+    if (projection_->NbPoints() == 0) return false;
+    projection_->LowerDistanceParameters(u, v);
+    distance = projection_->LowerDistance();
+    nearest = projection_->NearestPoint();
+    return true;
+}
+
+Obstacles::Obstacles(const std::vector<TopoDS_Face>& faces, Handle(Geom_Surface) hub) {
+    for (const auto& f : faces) faces_.push_back(std::make_unique<FaceDistance>(f));
+    if (!hub.IsNull()) hub_ = std::make_unique<SurfaceProjection>(hub);
 }
 
 double Obstacles::distance(const Vec3& p, double limit, Vec3* nearest) const {
     double best = limit;
     if (nearest) *nearest = p;
     const gp_Pnt q = pnt(p);
-    if (!hub_.IsNull()) {
-        GeomAPI_ProjectPointOnSurf proj(q, hub_);
-        if (proj.NbPoints() > 0 && proj.LowerDistance() < best) {
-            best = proj.LowerDistance();
-            if (nearest) *nearest = vec(proj.NearestPoint());
-        }
+    double u, v, d;
+    gp_Pnt on;
+    if (hub_ && hub_->project(q, u, v, d, on) && d < best) {
+        best = d;
+        if (nearest) *nearest = vec(on);
     }
-    const TopoDS_Shape v = BRepBuilderAPI_MakeVertex(q).Shape();
-    for (size_t i = 0; i < faces_.size(); ++i) {
-        if (boxes_[i].Distance(Bnd_Box(q.XYZ(), q.XYZ())) >= best) continue;
-        BRepExtrema_DistShapeShape d(v, faces_[i]);
-        if (d.IsDone() && d.NbSolution() > 0 && d.Value() < best) {
-            best = d.Value();
-            if (nearest) *nearest = vec(d.PointOnShape2(1));
+    const Bnd_Box point(q.XYZ(), q.XYZ());
+    for (const auto& f : faces_) {
+        if (f->box().Distance(point) >= best || f->lowerBound(q) >= best) continue;
+        const double d = f->distance(q, on);
+        if (d < best) {
+            best = d;
+            if (nearest) *nearest = vec(on);
         }
     }
     return best;
@@ -126,15 +138,19 @@ Clearance clearance(const Obstacles& o, const CutterShape& c, const Vec3& centre
 }
 
 Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA)
+    : Channel(faces, f, bladeA, bladeA + 1) {}
+
+Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA, int bladeB)
     : frame_(f), obstacles_({}, {}) {
     const int n = static_cast<int>(f.blades.size());
-    const auto& A = f.blades[bladeA];
-    const auto& B = f.blades[(bladeA + 1) % n];
+    const auto& A = f.blades[bladeA % n];
+    const auto& B = f.blades[bladeB % n];
     auto face = [&](int i) { return TopoDS::Face(faces(i)); };
     auto makeWall = [&](int id) {
         Wall w;
         w.face = face(id);
         w.surface = BRep_Tool::Surface(w.face);
+        w.projection = std::make_unique<SurfaceProjection>(w.surface);
         double u0, u1, v0, v1;
         BRepTools::UVBounds(w.face, u0, u1, v0, v1);
         BRepAdaptor_Surface s(w.face);
@@ -151,14 +167,19 @@ Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::Impell
     b_ = makeWall(B.suction);
     rMin_ = std::max(a_.rMin, b_.rMin);
     rMax_ = std::min(a_.rMax, b_.rMax);
+    for (int k = bladeA + 1; k < bladeB; ++k)
+        for (int id : f.blades[k % n].walls) rMax_ = std::min(rMax_, makeWall(id).rMin);
     if (rMax_ <= rMin_)
         throw inputError("impeller toolpaths: blades " + std::to_string(bladeA) + " and " +
-                         std::to_string((bladeA + 1) % n) + " have no stretch of channel with both walls along it");
+                         std::to_string(bladeB % n) + " have no stretch of channel with both walls along it");
     hub_ = face(f.hub);
     hubSurface_ = BRep_Tool::Surface(hub_);
+    hubProjection_ = std::make_unique<SurfaceProjection>(hubSurface_);
     shroudSurface_ = BRep_Tool::Surface(face(A.shroud));
     std::vector<TopoDS_Face> obstacles;
-    for (const auto* b : {&A, &B}) {
+    std::vector<const impeller::Blade*> blades{&A, &B};
+    for (int k = bladeA + 1; k < bladeB; ++k) blades.push_back(&f.blades[k % n]);
+    for (const auto* b : blades) {
         for (int w : b->walls) obstacles.push_back(face(w));
         for (int w : b->fillets) obstacles.push_back(face(w));
         obstacles.push_back(face(b->shroud));
@@ -226,10 +247,9 @@ double Channel::wallTheta(bool b, double r, double z, double guess) const {
 
 void Channel::wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, double* uOut, double* vOut) const {
     const Wall& w = wall(b);
-    GeomAPI_ProjectPointOnSurf proj(pnt(p), w.surface);
-    if (proj.NbPoints() == 0) throw inputError("impeller toolpaths: cannot project onto a blade wall");
-    double u, v;
-    proj.LowerDistanceParameters(u, v);
+    double u, v, d;
+    gp_Pnt on;
+    if (!w.projection->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto a blade wall");
     gp_Pnt q;
     gp_Vec du, dv;
     w.surface->D1(u, v, q, du, dv);
@@ -246,16 +266,45 @@ void Channel::wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, doubl
 }
 
 Vec3 Channel::hubNormal(const Vec3& p) const {
-    GeomAPI_ProjectPointOnSurf proj(pnt(p), hubSurface_);
-    if (proj.NbPoints() == 0) throw inputError("impeller toolpaths: cannot project onto the hub");
-    double u, v;
-    proj.LowerDistanceParameters(u, v);
+    double u, v, d;
+    gp_Pnt on;
+    if (!hubProjection_->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto the hub");
     gp_Pnt q;
     gp_Vec du, dv;
     hubSurface_->D1(u, v, q, du, dv);
     Vec3 n = vec(du.Crossed(dv)).normalized();
     if (hub_.Orientation() == TopAbs_REVERSED) n = -n;
     return n;
+}
+
+}  // namespace aeronc::impellerpath
+
+namespace aeronc::impellerpath {
+
+double Channel::wallDistance(bool b, const Vec3& p, Vec3& normal) const {
+    const Wall& w = wall(b);
+    double u, v, d;
+    gp_Pnt on;
+    if (!w.projection->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto a blade wall");
+    gp_Pnt q;
+    gp_Vec du, dv;
+    w.surface->D1(u, v, q, du, dv);
+    gp_Vec n = du.Crossed(dv);
+    if (w.face.Orientation() == TopAbs_REVERSED) n.Reverse();
+    normal = vec(n).normalized();
+    return (p - vec(on)).dot(normal);
+}
+
+double Channel::hubDistance(const Vec3& p, Vec3& normal) const {
+    double u, v, d;
+    gp_Pnt on;
+    if (!hubProjection_->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto the hub");
+    gp_Pnt q;
+    gp_Vec du, dv;
+    hubSurface_->D1(u, v, q, du, dv);
+    normal = vec(du.Crossed(dv)).normalized();
+    if (hub_.Orientation() == TopAbs_REVERSED) normal = -normal;
+    return (p - vec(on)).dot(normal);
 }
 
 }  // namespace aeronc::impellerpath

@@ -5,12 +5,16 @@
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 
+#include "FaceDistance.h"
+
 #include <Bnd_Box.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_Surface.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Ax3.hxx>
 
+#include <memory>
 #include <vector>
 
 namespace aeronc::impellerpath {
@@ -33,28 +37,41 @@ private:
     Vec3 o_, x_, y_, z_;
 };
 
+// Projection of points onto a whole surface (GeomAPI_ProjectPointOnSurf over the surface's
+// bounds) with its search grid built once. Not for concurrent use.
+class SurfaceProjection {
+public:
+    explicit SurfaceProjection(const Handle(Geom_Surface)& surface);
+    // The nearest point's parameters and distance; false when the projection finds none.
+    bool project(const gp_Pnt& p, double& u, double& v, double& distance, gp_Pnt& nearest) const;
+
+private:
+    std::unique_ptr<GeomAPI_ProjectPointOnSurf> projection_;  // its extrema point into it: never moved
+};
+
 // Faces a cutter must not cut into, with their bounding boxes for quick rejection; and the hub,
 // measured to its whole surface of revolution (the hub face carries every blade's root loop, so
 // a distance to the face itself would measure to all those edges; its surface runs on under the
 // fillets and blades, inside the material, so it is never nearer to a point in a channel than
 // the face is).
+// Not for concurrent use: each thread measures with its own.
 class Obstacles {
 public:
-    Obstacles(std::vector<TopoDS_Face> faces, Handle(Geom_Surface) hub);
+    Obstacles(const std::vector<TopoDS_Face>& faces, Handle(Geom_Surface) hub);
     // Distance from p to the faces and the hub, up to `limit` (beyond it, `limit`); `nearest`,
     // when given, gets the nearest point found (p itself when nothing is within the limit).
     double distance(const Vec3& p, double limit, Vec3* nearest = nullptr) const;
 
 private:
-    std::vector<TopoDS_Face> faces_;
-    std::vector<Bnd_Box> boxes_;
-    Handle(Geom_Surface) hub_;
+    std::vector<std::unique_ptr<FaceDistance>> faces_;
+    std::unique_ptr<SurfaceProjection> hub_;
 };
 
 // A wall face and what the paths ask of it.
 struct Wall {
     TopoDS_Face face;
     Handle(Geom_Surface) surface;
+    std::unique_ptr<SurfaceProjection> projection;
     std::vector<Vec3> samples;  // points of the face on a parameter grid, for first guesses
     double rMin = 0, rMax = 0;
 };
@@ -62,6 +79,10 @@ struct Wall {
 class Channel {
 public:
     Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA);
+    // The channel between blade A and a later blade B (the inducer: from one main blade to the
+    // next, ahead of the splitter between them): the blades between are obstacles, and the
+    // channel ends where the innermost of them begins.
+    Channel(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f, int bladeA, int bladeB);
 
     const Frame& frame() const { return frame_; }
     double rMin() const { return rMin_; }
@@ -76,6 +97,10 @@ public:
     void wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, double* u = nullptr, double* v = nullptr) const;
     const Wall& wall(bool b) const { return b ? b_ : a_; }
     Vec3 hubNormal(const Vec3& p) const;
+    // Signed distance from p to a wall's surface and to the hub's, positive on the channel side,
+    // with the unit normal into the channel at the nearest point.
+    double wallDistance(bool b, const Vec3& p, Vec3& normal) const;
+    double hubDistance(const Vec3& p, Vec3& normal) const;
 
     // The two blades' faces and the hub.
     const Obstacles& obstacles() const { return obstacles_; }
@@ -85,6 +110,7 @@ private:
     Wall a_, b_;
     TopoDS_Face hub_;
     Handle(Geom_Surface) hubSurface_, shroudSurface_;
+    std::unique_ptr<SurfaceProjection> hubProjection_;
     Obstacles obstacles_;
     double rMin_ = 0, rMax_ = 0;
 };

@@ -2,6 +2,7 @@
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 
 #include "ChannelGeometry.h"
+#include "StockEnvelope.h"
 
 #include <aeronc/core/Error.h>
 
@@ -12,6 +13,9 @@
 #include <TopoDS.hxx>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -65,28 +69,77 @@ struct Checker {
                     }
                 }
         }
+        record(c, centre);
+        return Move{centre, axis, false};
+    }
+    // A position that is not moved, measured as the program's re-check measures it.
+    void tally(const Move& m) { record(clearance(ch.obstacles(), cutter, m.centre, m.axis), m.centre); }
+    void record(const Clearance& c, const Vec3& centre) {
         ++result.positions;
         if (c.holder) ++result.holderCollisions;
         if (c.gouge > result.maxGouge) {
             result.maxGouge = c.gouge;
             result.worstAt[0] = centre.x(), result.worstAt[1] = centre.y(), result.worstAt[2] = centre.z();
         }
-        return Move{centre, axis, false};
     }
 };
 
-// Retract along the axis to the safe height, for the start and the end of a pass.
-void appendPass(std::vector<Move>& out, const std::vector<Move>& pass, const Channel& ch, double safe) {
-    if (pass.empty()) return;
-    auto above = [&](const Move& m) {
-        const double up = safe - ch.frame().axial(m.centre);
-        const double along = up / std::max(0.2, m.axis.dot(ch.frame().z()));
-        return Move{m.centre + std::max(along, 0.0) * m.axis, m.axis, true};
-    };
-    out.push_back(above(pass.front()));
-    out.insert(out.end(), pass.begin(), pass.end());
-    out.push_back(above(pass.back()));
-}
+// Links between passes. A pass is entered and left along the tool axis at feed, from and to the
+// point where the whole tool is `clearance` outside the blank (the envelope of the part and of
+// any stock left); from there rapids run along the axis up to the clearance plane, and across
+// it to the next pass. Every link is checked: the feed stretches against the part (the tool
+// swept along its axis), the rapids against the blank.
+struct Links {
+    const StockEnvelope& stock;
+    double plane;      // axial height of the ball centre on the clearance plane
+    double clearance;  // mm the tool keeps outside the blank on rapids
+
+    // Up the tool axis from m until the tool is clear of the blank.
+    Move outside(const Move& m, const CutterShape& c) const {
+        double t = 0;
+        while (t < 500 && stock.clearance(c, m.centre + t * m.axis, m.axis) < clearance) t += 0.5;
+        return Move{m.centre + t * m.axis, m.axis, false};
+    }
+    Move onPlane(const Move& m, const Frame& fr) const {
+        const double up = plane - fr.axial(m.centre);
+        return Move{m.centre + std::max(up, 0.0) / std::max(0.2, m.axis.dot(fr.z())) * m.axis, m.axis, true};
+    }
+    // Feed along the tool axis between a cutting position and a point above it. Moving along its
+    // own axis, the tool sweeps what the tool at the cutting position covers with its shank longer
+    // by the distance (and no narrower than the flutes' top): one measure of that longer tool.
+    void checkFeed(const Move& cutting, const Move& above, Checker& check) const {
+        CutterShape longer = check.cutter;
+        longer.reach += (above.centre - cutting.centre).norm();
+        // Flutes wider than the shank sweep up through where the shank was.
+        longer.shankRadius = std::max(longer.shankRadius, longer.radiusAt(longer.fluteLength - longer.tipRadius));
+        const Clearance k = impellerpath::clearance(check.ch.obstacles(), longer, cutting.centre, cutting.axis);
+        ++check.result.links;
+        check.result.linkCollisions += k.gouge > kGougeAim || k.holder;
+    }
+    // A rapid from a to b: the tool outside the blank all along.
+    void checkRapid(const Move& a, const Move& b, Checker& check) const {
+        ++check.result.links;
+        check.result.linkCollisions += rapidClearance(stock, check.cutter, a, b) < 0;
+    }
+    void append(std::vector<Move>& out, const std::vector<Move>& pass, Checker& check) const {
+        if (pass.empty()) return;
+        const Frame& fr = check.ch.frame();
+        const Move in = outside(pass.front(), check.cutter), out_ = outside(pass.back(), check.cutter);
+        const Move inTop = onPlane(in, fr), outTop = onPlane(out_, fr);
+        Move inRapid = in;
+        inRapid.rapid = true;
+        checkRapid(inTop, inRapid, check);
+        checkFeed(pass.front(), in, check);
+        checkFeed(pass.back(), out_, check);
+        checkRapid(out_, outTop, check);
+        check.tally(out_);
+        out.push_back(inTop);
+        out.push_back(inRapid);
+        out.insert(out.end(), pass.begin(), pass.end());
+        out.push_back(out_);
+        out.push_back(outTop);
+    }
+};
 
 std::vector<double> stations(double a, double b, int n) {
     std::vector<double> s;
@@ -111,7 +164,7 @@ double arcMargin(const Channel& ch, bool b, double r, double theta, double z, do
     return keep / std::max(0.2, std::abs(normal.dot(tangential)));
 }
 
-void roughChannel(const Channel& ch, const CutterShape& cut, const PathOptions& opt, double safe,
+void roughChannel(const Channel& ch, const CutterShape& cut, const PathOptions& opt, const Links& links,
                   CheckResult& res, std::vector<Move>& out) {
     Checker check{ch, cut, opt, res, opt.roughAllowance};
     const double R = cut.tipRadius, keep = R + opt.roughAllowance;
@@ -158,12 +211,12 @@ void roughChannel(const Channel& ch, const CutterShape& cut, const PathOptions& 
                 const Vec3 c = ch.frame().at(r, theta, zs[j]);
                 pass.push_back(check.place(c, blendedAxis(ch, r, zs[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j]))));
             }
-            appendPass(out, pass, ch, safe);
+            links.append(out, pass, check);
         }
     }
 }
 
-void finishWall(const Channel& ch, bool b, const CutterShape& cut, const PathOptions& opt, double safe,
+void finishWall(const Channel& ch, bool b, const CutterShape& cut, const PathOptions& opt, const Links& links,
                 CheckResult& res, std::vector<Move>& out) {
     Checker check{ch, cut, opt, res};
     const Wall& w = ch.wall(b);
@@ -210,11 +263,11 @@ void finishWall(const Channel& ch, bool b, const CutterShape& cut, const PathOpt
         if (ch.frame().axial(c) - ch.hubZ(r) < cut.tipRadius - 1e-6) continue;
         pass.push_back(check.place(c, axis));
     }
-    appendPass(out, pass, ch, safe);
+    links.append(out, pass, check);
 }
 
-void finishHub(const Channel& ch, const CutterShape& cut, double filletRadius, const PathOptions& opt, double safe,
-               CheckResult& res, std::vector<Move>& out) {
+void finishHub(const Channel& ch, const CutterShape& cut, double filletRadius, const PathOptions& opt,
+               const Links& links, CheckResult& res, std::vector<Move>& out) {
     Checker check{ch, cut, opt, res};
     const double R = cut.tipRadius, keep = R + filletRadius;
     const auto rs = stations(ch.rMin() + keep, ch.rMax() - keep, opt.stations);
@@ -243,7 +296,53 @@ void finishHub(const Channel& ch, const CutterShape& cut, double filletRadius, c
             const Vec3 n = ch.hubNormal(onHub);
             pass.push_back(check.place(onHub + R * n, blendedAxis(ch, r, zh[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j]))));
         }
-        appendPass(out, pass, ch, safe);
+        links.append(out, pass, check);
+    }
+}
+
+// Along the root fillet of one wall: at each station the rolling ball of the fillet (the point
+// the fillet radius from both the wall and the hub, found by Newton steps on the two distances),
+// then the cutter's ball moved from it towards the corner until it touches the fillet.
+void finishFillet(const Channel& ch, bool b, const CutterShape& cut, double filletRadius, const PathOptions& opt,
+                  const Links& links, CheckResult& res, std::vector<Move>& out) {
+    Checker check{ch, cut, opt, res};
+    const Wall& w = ch.wall(b);
+    const double R = cut.tipRadius, target = std::max(R, filletRadius);
+    const double tilt = 10 * kPi / 180;
+    std::vector<Move> pass;
+    const auto rs = stations(w.rMin + target + 1, w.rMax - target - 1, opt.stations);
+    for (size_t i = 0; i < rs.size(); ++i) {
+        const double r = rs[b ? rs.size() - 1 - i : i];  // climb milling either side: A outwards, B inwards
+        const double z0 = ch.hubZ(r) + target;
+        Vec3 x = ch.frame().at(r, ch.wallTheta(b, r, z0, ch.guessTheta(b, r)), z0), nW, nH;
+        ch.wallDistance(b, x, nW);
+        x += target * nW;
+        bool converged = false;
+        for (int it = 0; it < 30 && !converged; ++it) {
+            const double ew = target - ch.wallDistance(b, x, nW), eh = target - ch.hubDistance(x, nH);
+            const double c = nW.dot(nH);
+            if (1 - c * c < 1e-6) break;  // wall and hub parallel: no corner here
+            x += (ew - c * eh) / (1 - c * c) * nW + (eh - c * ew) / (1 - c * c) * nH;
+            converged = std::abs(ew) < 1e-7 && std::abs(eh) < 1e-7;
+        }
+        if (!converged) continue;
+        const Vec3 centre = x - (target - R) * (nW + nH).normalized();
+        Vec3 ruling, normal;
+        ch.wallFrame(b, centre, ruling, normal);
+        pass.push_back(check.place(centre, (std::cos(tilt) * ruling + std::sin(tilt) * normal).normalized()));
+    }
+    links.append(out, pass, check);
+}
+
+void merge(CheckResult& into, const CheckResult& r) {
+    into.positions += r.positions;
+    into.holderCollisions += r.holderCollisions;
+    into.tilted += r.tilted;
+    into.links += r.links;
+    into.linkCollisions += r.linkCollisions;
+    if (r.maxGouge > into.maxGouge) {
+        into.maxGouge = r.maxGouge;
+        std::copy(r.worstAt, r.worstAt + 3, into.worstAt);
     }
 }
 
@@ -260,14 +359,26 @@ double CutterShape::radiusAt(double h) const {
 ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::ImpellerFeatures& f,
                                   const impeller::ImpellerDimensions& d, const CutterShape& rougher,
                                   const CutterShape& finisher, const PathOptions& opt) {
+    return impellerToolpaths(part, f, d, RouteCutters{rougher, finisher, std::nullopt}, opt);
+}
+
+ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::ImpellerFeatures& f,
+                                  const impeller::ImpellerDimensions& d, const RouteCutters& cutters,
+                                  const PathOptions& opt) {
+    const CutterShape& rougher = cutters.rougher;
+    const CutterShape& finisher = cutters.finisher;
     if (f.blades.size() < 2) throw inputError("impeller toolpaths: the part has fewer than two blades");
-    for (const auto* c : {&rougher, &finisher})
+    std::vector<const CutterShape*> all{&rougher, &finisher};
+    if (cutters.filletBall) all.push_back(&*cutters.filletBall);
+    for (const auto* c : all)
         if (!(c->tipRadius > 0) || !(c->fluteLength > c->tipRadius) || !(c->reach >= c->fluteLength) ||
             !(c->shankRadius >= c->tipRadius) || c->taperDeg < 0 || c->taperDeg >= 15 || !(c->feed > 0) || !(c->rpm > 0))
             throw inputError("impeller toolpaths: cutter " + c->id + " has impossible dimensions or cutting data");
     if (2 * rougher.tipRadius + 2 * opt.roughAllowance > d.minChannelWidth)
         throw inputError("impeller toolpaths: the roughing ball " + rougher.id + " with the allowance is wider than the "
                          "narrowest channel (" + std::to_string(d.minChannelWidth) + " mm)");
+    if (cutters.filletBall && !(d.filletRadius > 0))
+        throw inputError("impeller toolpaths: fillet finishing asked for a part without root fillets");
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(part, TopAbs_FACE, faces);
     const int n = static_cast<int>(f.blades.size());
@@ -277,27 +388,72 @@ ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::Impe
 
     ImpellerProgram prog;
     Operation rough{"rough_channels", rougher, {}}, blades{"finish_blades", finisher, {}}, hub{"finish_hub", finisher, {}};
-    std::vector<std::vector<Move>> baseRough(kinds), baseBlades(kinds), baseHub(kinds);
-    std::unique_ptr<Frame> frame;
-    for (int k = 0; k < kinds; ++k) {
-        const Channel ch(faces, f, k);
-        if (!frame) frame = std::make_unique<Frame>(ch.frame());
-        double safe = -1e300;
-        for (double r : {ch.rMin(), 0.5 * (ch.rMin() + ch.rMax()), ch.rMax()}) safe = std::max(safe, ch.shroudZ(r));
-        safe += opt.safeDistance;
-        roughChannel(ch, rougher, opt, safe, prog.check, baseRough[k]);
-        finishWall(ch, false, finisher, opt, safe, prog.check, baseBlades[k]);
-        finishWall(ch, true, finisher, opt, safe, prog.check, baseBlades[k]);
-        finishHub(ch, finisher, d.filletRadius, opt, safe, prog.check, baseHub[k]);
+    Operation fillets{"finish_fillets", cutters.filletBall.value_or(finisher), {}};
+    // Base moves by kind; kind `kinds` is the inducer (with splitters only), once per main blade.
+    const int bases = kinds + (kinds == 2 ? 1 : 0);
+    std::vector<std::vector<Move>> baseRough(bases), baseBlades(bases), baseHub(bases), baseFillets(bases);
+    const Frame frame(f);
+    // Each operation of each channel kind is independent: two threads take the next in turn,
+    // roughing (the most positions) first. Each measures with a channel of its own (the distance
+    // queries keep state); results are merged in a fixed order, so they do not depend on timing.
+    struct Task {
+        int kind, op;
+        CheckResult check;
+        std::exception_ptr error;
+    };
+    std::vector<Task> tasks;
+    for (int op = 0; op < 4; ++op)
+        for (int k = 0; k < bases; ++k) {
+            if (op == 2 && k == kinds) continue;  // the inducer's walls are the main blades', finished whole
+            if (op == 3 && (!cutters.filletBall || k == kinds)) continue;
+            tasks.push_back({k, op, {}, nullptr});
+        }
+    // The blank is meshed here, before the threads share the part.
+    const StockEnvelope stock(impeller::outerProfile(part, f, opt.blankAllowance), frame);
+    auto linksFor = [&](const CutterShape& c) { return Links{stock, stock.top() + c.tipRadius + opt.safeDistance, opt.rapidClearance}; };
+    const Links roughLinks = linksFor(rougher), finishLinks = linksFor(finisher);
+    const Links filletLinks = linksFor(fillets.cutter);
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t i; (i = next++) < tasks.size();) {
+            Task& t = tasks[i];
+            try {
+                const Channel ch = t.kind == kinds ? Channel(faces, f, 0, 2) : Channel(faces, f, t.kind);
+                if (t.op == 0) roughChannel(ch, rougher, opt, roughLinks, t.check, baseRough[t.kind]);
+                if (t.op == 1) finishHub(ch, finisher, d.filletRadius, opt, finishLinks, t.check, baseHub[t.kind]);
+                if (t.op == 2) {
+                    finishWall(ch, false, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
+                    finishWall(ch, true, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
+                }
+                if (t.op == 3) {
+                    finishFillet(ch, false, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
+                    finishFillet(ch, true, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
+                }
+            } catch (...) {
+                t.error = std::current_exception();
+            }
+        }
+    };
+    std::thread second(work);
+    work();
+    second.join();
+    for (const Task& t : tasks) {
+        if (t.error) std::rethrow_exception(t.error);
+        merge(prog.check, t.check);
     }
-    // The channels in angular order: channel c is its kind's base turned by its pattern step.
+    // The channels in angular order: channel c is its kind's base turned by its pattern step;
+    // the inducer ahead of a main blade's channel follows it.
     for (int c = 0; c < channels; ++c) {
         const int kind = c % kinds;
         const double angle = (c / kinds) * pitch;
-        for (auto [base, op] : {std::pair{&baseRough, &rough}, {&baseBlades, &blades}, {&baseHub, &hub}})
-            for (const auto& m : (*base)[kind]) op->moves.push_back(turnedMove(*frame, m, angle));
+        for (auto [base, op] : {std::pair{&baseRough, &rough}, {&baseBlades, &blades}, {&baseHub, &hub}, {&baseFillets, &fillets}}) {
+            for (const auto& m : (*base)[kind]) op->moves.push_back(turnedMove(frame, m, angle));
+            if (kind == 0 && bases > kinds)
+                for (const auto& m : (*base)[kinds]) op->moves.push_back(turnedMove(frame, m, angle));
+        }
     }
     prog.operations = {rough, blades, hub};
+    if (cutters.filletBall) prog.operations.push_back(fillets);
     return prog;
 }
 
@@ -327,6 +483,21 @@ CheckResult checkProgram(const TopoDS_Shape& part, const impeller::ImpellerFeatu
     return r;
 }
 
+CheckResult checkRapids(const impeller::BlankProfile& blank, const impeller::ImpellerFeatures& f,
+                        const std::vector<std::pair<CutterShape, std::vector<Move>>>& operations, double clearance) {
+    const StockEnvelope stock(blank, Frame(f));
+    CheckResult r;
+    for (const auto& [cutter, moves] : operations)
+        for (size_t i = 0; i < moves.size(); ++i) {
+            if (!moves[i].rapid) continue;
+            // The first move after a tool change starts from the tool change position: only its end counts.
+            const Move& from = i > 0 ? moves[i - 1] : moves[i];
+            ++r.links;
+            r.linkCollisions += rapidClearance(stock, cutter, from, moves[i]) < clearance;
+        }
+    return r;
+}
+
 kinematics::ClProgram toClProgram(const ImpellerProgram& p, const std::string& name) {
     using namespace kinematics;
     ClProgram cl;
@@ -343,7 +514,8 @@ kinematics::ClProgram toClProgram(const ImpellerProgram& p, const std::string& n
         add(label);
         ClRecord tool;
         tool.kind = ClKind::LoadTool;
-        tool.tool = ClTool{op.cutter.number, op.cutter.id, 2 * op.cutter.tipRadius, op.cutter.tipRadius, 0.0};
+        tool.tool = ClTool{op.cutter.number, op.cutter.id, 2 * op.cutter.tipRadius,
+                           op.cutter.flat ? 0.0 : op.cutter.tipRadius, 0.0};
         add(tool);
         ClRecord spindle;
         spindle.kind = ClKind::Spindle;

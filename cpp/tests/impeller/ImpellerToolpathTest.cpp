@@ -4,7 +4,9 @@
 // allowance; the program posts for the AC cradle 840D machine under TRAORI.
 #include <aeronc/core/Error.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/Blank.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
@@ -13,9 +15,19 @@
 #include <aeronc/post/Post.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
+#include <map>
 
 #include "ErrorOf.h"
 
@@ -44,7 +56,7 @@ struct Programmed {
     testparts::Impeller part = testparts::makeImpeller(testparts::ImpellerSpec{});
     impeller::ImpellerFeatures features = impeller::recogniseImpeller(part.shape);
     impeller::ImpellerDimensions dims = impeller::measureImpeller(part.shape, features);
-    CutterShape rougher, finisher;
+    CutterShape rougher, finisher, filletBall;
     Programmed() {
         const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_paths.sqlite";
         std::filesystem::remove(path);
@@ -55,6 +67,7 @@ struct Programmed {
             // Shank: the tool's own diameter for a ball; the tapered ball's is in its table (8 to 10 mm).
             if (s.operation == "rough_channels") rougher = cutterOf(*s.tool, 1, s.tool->diameter / 2);
             if (s.operation == "finish_blades") finisher = cutterOf(*s.tool, 2, 4.0);
+            if (s.operation == "finish_fillets") filletBall = cutterOf(*s.tool, 3, s.tool->diameter / 2);
         }
     }
 };
@@ -104,6 +117,26 @@ TEST(ImpellerToolpaths, NoGougeNoCollisionPostedUnderTraori) {
     grown.shankRadius = grown.tipRadius;
     EXPECT_LE(checkProgram(s.part.shape, s.features, {{grown, reread[0].second}}).maxGouge, 0.0);
 
+    // Passes are entered and left along the tool axis at feed until the tool is outside the blank;
+    // the rapids between them stay outside it, so they cut neither the part nor any stock left.
+    EXPECT_GT(prog.check.links, 20);
+    EXPECT_EQ(prog.check.linkCollisions, 0);
+    const auto blank = impeller::outerProfile(s.part.shape, s.features, quick().blankAllowance);
+    const auto rapids = checkRapids(blank, s.features, reread, quick().rapidClearance - 1e-6);
+    EXPECT_GT(rapids.links, 20);
+    EXPECT_EQ(rapids.linkCollisions, 0);
+    // Retracting at rapid straight from the last cutting position would run through the stock.
+    auto direct = reread;
+    int passes = 0;
+    for (auto& [cutter, moves] : direct)
+        for (size_t i = 1; i + 1 < moves.size(); ++i)
+            if (!moves[i - 1].rapid && !moves[i].rapid && moves[i + 1].rapid) {
+                moves.erase(moves.begin() + static_cast<long>(i));
+                ++passes;
+            }
+    EXPECT_GT(passes, 10);
+    EXPECT_GE(checkRapids(blank, s.features, direct).linkCollisions, passes);
+
     // Posted for the AC cradle machine with the 840D: TRAORI around the simultaneous moves.
     const auto machine = kinematics::loadMachineFile(std::string(AERONC_MACHINES) + "/AC-5AX.json");
     post::NcOptions nc;
@@ -133,4 +166,146 @@ TEST(ImpellerToolpaths, CollisionsReportedAndTooWideRefused) {
     wide.tipRadius = wide.shankRadius = s.dims.minChannelWidth / 2;
     const std::string msg = test::inputErrorOf([&] { impellerToolpaths(s.part.shape, s.features, s.dims, wide, s.finisher, o); });
     EXPECT_NE(msg.find("wider than the narrowest channel"), std::string::npos) << msg;
+}
+
+// Fillet finishing runs along the root fillets touching them, and the inducer ahead of the
+// splitters is roughed; no move of the program read back gouges a blade or the hub, and its
+// rapids stay outside the blank.
+TEST(ImpellerToolpaths, FilletsAndInducer) {
+    Programmed s;
+    ASSERT_GT(s.filletBall.tipRadius, 0);
+    ASSERT_LE(s.filletBall.tipRadius, s.dims.filletRadius + 1e-9);
+    const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, RouteCutters{s.rougher, s.finisher, s.filletBall},
+                                        quick());
+    ASSERT_EQ(prog.operations.size(), 4u);
+    EXPECT_EQ(prog.operations[3].name, "finish_fillets");
+    EXPECT_EQ(prog.check.linkCollisions, 0);
+
+    const std::string apt = post::writeApt(toClProgram(prog, "IMPELLER"));
+    const auto reread = movesOf(post::readApt(apt), {s.rougher, s.finisher, s.filletBall});
+    ASSERT_EQ(reread.size(), 4u);
+    const auto again = checkProgram(s.part.shape, s.features, reread);
+    EXPECT_LE(again.maxGouge, kGougeLimit);
+    EXPECT_EQ(again.holderCollisions, 0);
+    const auto blank = impeller::outerProfile(s.part.shape, s.features, quick().blankAllowance);
+    EXPECT_EQ(checkRapids(blank, s.features, reread, quick().rapidClearance - 1e-6).linkCollisions, 0);
+
+    // The fillet ball touches the fillet faces: its centre its radius from them.
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(s.part.shape, TopAbs_FACE, faces);
+    BRep_Builder b;
+    TopoDS_Compound fillets;
+    b.MakeCompound(fillets);
+    for (const auto& blade : s.features.blades)
+        for (int id : blade.fillets) b.Add(fillets, faces(id));
+    int touching = 0;
+    for (const auto& m : reread[3].second) {
+        if (m.rapid) continue;
+        BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(gp_Pnt(m.centre.x(), m.centre.y(), m.centre.z())).Vertex(),
+                                        fillets);
+        ASSERT_TRUE(dist.IsDone());
+        touching += std::abs(dist.Value() - s.filletBall.tipRadius) < 0.01;
+    }
+    // Two walls in each of the two channels, a pass of `stations` positions along each.
+    EXPECT_GE(touching, 4 * (quick().stations - 1));
+
+    // The inducer: roughing positions ahead of the splitters' leading edges (radius 38.6 mm).
+    const testparts::ImpellerSpec spec;
+    const double splitterStart = spec.leadingRadius + spec.splitterStart * (spec.trailingRadius - spec.leadingRadius);
+    int inducer = 0;
+    for (const auto& m : reread[0].second)
+        inducer += !m.rapid && std::hypot(m.centre.x(), m.centre.y()) < splitterStart - s.rougher.tipRadius;
+    EXPECT_GT(inducer, 2 * quick().stations);
+}
+
+// Turning, facing, drilling and boring with the route's tools on the generated impeller: every
+// step the part needs yields moves, none gouges the finished part, the bore is bored to its
+// truth radius, and the milled steps post as plain moves.
+TEST(ImpellerAxialOperations, EveryRouteStepHasMoves) {
+    Programmed s;
+    const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_axial.sqlite";
+    std::filesystem::remove(path);
+    const auto kb = kb::KnowledgeBase::openWithSqlFolder(path.string(), [] { return std::string(AERONC_RESOURCES) + "/kb"; });
+    AxialCutters cutters;
+    int number = 3;
+    for (const auto& st : kb::planImpellerRoute(kb, s.features, s.dims).steps) {
+        if (!st.tool || (st.operation != "face" && st.operation != "drill" && st.operation != "bore")) continue;
+        const CutterShape c =
+            flatCutter(st.tool->id, ++number, st.tool->diameter, st.tool->fluteLength, st.tool->reach, 2000, 200);
+        (st.operation == "face" ? cutters.faceMill : st.operation == "drill" ? cutters.drill : cutters.boringMill) = c;
+    }
+    ASSERT_TRUE(cutters.faceMill && cutters.drill && cutters.boringMill);
+    const auto prog = axialToolpaths(s.part.shape, s.features, s.dims, cutters);
+    std::map<std::string, const Operation*> ops;
+    for (const auto& op : prog.operations) ops[op.name] = &op;
+    for (const char* name : {"turn", "face", "drill", "bore"}) {
+        SCOPED_TRACE(name);
+        ASSERT_TRUE(ops.count(name));
+        int cutting = 0;
+        for (const auto& mv : ops[name]->moves) cutting += !mv.rapid;
+        EXPECT_GT(cutting, 5);
+    }
+    EXPECT_LE(prog.check.maxGouge, kGougeLimit) << prog.check.worstAt[0] << " " << prog.check.worstAt[1] << " "
+                                                 << prog.check.worstAt[2];
+    EXPECT_EQ(prog.check.holderCollisions, 0);
+    // Both planes faced: the face mill's tip on the nose plane (z 40) and on the back face (z 0),
+    // its axis away from the part; the lathe's insert over both too.
+    for (const char* name : {"face", "turn"}) {
+        SCOPED_TRACE(name);
+        const auto& op = *ops[name];
+        int onNose = 0, onBack = 0;
+        for (const auto& mv : op.moves) {
+            if (mv.rapid) continue;
+            const kinematics::Vec3 tip = mv.centre - op.cutter.tipRadius * mv.axis;
+            onNose += std::abs(tip.z() - 40) < 1e-6 && mv.axis.z() > 0.999;
+            onBack += std::abs(tip.z()) < 1e-6 && mv.axis.z() < -0.999;
+        }
+        EXPECT_GT(onNose, 3);
+        EXPECT_GT(onBack, 3);
+    }
+    // The boring mill's flutes (32 mm) do not reach through the 40 mm bore: the rest from the back.
+    ASSERT_TRUE(ops.count("bore_back"));
+    EXPECT_LT(ops["bore_back"]->moves.front().axis.z(), -0.999);
+
+    // Boring: the tool's side at the truth's bore radius all the way down.
+    const double boreRadius = s.part.truth.boreDiameter / 2;
+    for (const auto& mv : ops["bore"]->moves) {
+        if (mv.rapid) continue;
+        EXPECT_NEAR(std::hypot(mv.centre.x(), mv.centre.y()) + ops["bore"]->cutter.tipRadius, boreRadius, 1e-9);
+    }
+    // The drill leaves the allowance.
+    EXPECT_LE(ops["drill"]->cutter.tipRadius, boreRadius - AxialOptions{}.drillAllowance + 1e-9);
+
+    // Re-read from APT, checked again against the finished part, and posted as plain moves.
+    ImpellerProgram milled;
+    for (const char* name : {"drill", "bore"}) milled.operations.push_back(*ops[name]);
+    const std::string apt = post::writeApt(toClProgram(milled, "BORE"));
+    const auto reread = movesOf(post::readApt(apt), {*cutters.drill, *cutters.boringMill});
+    const auto again = checkProgram(s.part.shape, s.features, reread);
+    EXPECT_GT(again.positions, 20);
+    const auto machine = kinematics::loadMachineFile(std::string(AERONC_MACHINES) + "/AC-5AX.json");
+    post::NcOptions nc;
+    nc.programName = "BORE";
+    const auto posted = post::postApt(apt, machine, nc, {});
+    EXPECT_NE(posted.text.find("M30"), std::string::npos);
+}
+
+// Blades standing above the nose plane: the face mill would cut them, so it does not face that
+// plane and says so; what it does face touches nothing.
+TEST(ImpellerAxialOperations, FaceMillKeptOffTheBlades) {
+    testparts::ImpellerSpec spec;
+    spec.noseHeight = 30;
+    const auto part = testparts::makeImpeller(spec);
+    const auto f = impeller::recogniseImpeller(part.shape);
+    const auto d = impeller::measureImpeller(part.shape, f);
+    AxialCutters cutters;
+    cutters.faceMill = flatCutter("FM-125", 4, 125, 6, 63, 1000, 500);
+    const auto prog = axialToolpaths(part.shape, f, d, cutters);
+    bool noted = false;
+    for (const auto& n : prog.notes) noted = noted || n.find("cannot face plane") != std::string::npos;
+    EXPECT_TRUE(noted);
+    for (const auto& op : prog.operations)
+        for (const auto& mv : op.moves)
+            if (op.name == "face" && !mv.rapid) EXPECT_LT(mv.axis.z(), -0.999);  // the back face only
+    EXPECT_LE(prog.check.maxGouge, kGougeLimit);
 }
