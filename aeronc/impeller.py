@@ -39,10 +39,13 @@ def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
     check_solid(shape, label)
     if not allowance >= 0:
         raise RecognitionError("{}: the blank allowance must be zero or more, not {}".format(label, allowance))
+    import os
+    kb_path = kb_path or knowledge_base.user_kb_path()
+    os.makedirs(os.path.dirname(kb_path) or ".", exist_ok=True)  # the user's folder on first use
     core = _core()
     with from_core(RecognitionError, label):
         text, blank_brep = core.impeller_program_data(
-            shape.exportBrepToString(), float(allowance), kb_path or knowledge_base.user_kb_path(),
+            shape.exportBrepToString(), float(allowance), kb_path,
             knowledge_base.sql_folder(), route)
     blank = Part.Shape()
     blank.importBrepFromString(blank_brep)

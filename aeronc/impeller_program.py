@@ -28,6 +28,7 @@ from aeronc import impeller, knowledge_base, pathcompat
 from aeronc.errors import AeroNCError, ImpellerError, from_core
 from aeronc.makers import face_links
 from aeronc.objects.base import attach_views, descendants
+from aeronc.objects.impeller_blank import ImpellerBlank
 from aeronc.objects.impeller_features import DIMENSIONS, ImpellerFeature, ImpellerFeatures
 from aeronc.objects.impeller_program import ImpellerProgram, edits_of, route_of
 from aeronc.objects.transaction import in_transaction
@@ -296,11 +297,20 @@ def _features(doc, part, result):
     return group, nodes
 
 
-def _blank(doc, part, shape):
-    obj = doc.addObject("Part::Feature", "Blank")
-    obj.Shape = shape
+def _blank(doc, part, c):
+    obj = doc.addObject("Part::FeaturePython", "Blank")
+    ImpellerBlank(obj)
+    _fill_blank(obj, c)
     obj.Label = "Blank ({})".format(part.Label)
     return obj
+
+
+def _fill_blank(obj, c):
+    obj.Shape = c.blank
+    profile = c.result.get("blank") or {}
+    obj.Allowance = c.settings["allowance"]
+    obj.ProfileAxial = [float(v) for v in profile.get("axial", [])]
+    obj.ProfileRadius = [float(v) for v in profile.get("radius", [])]
 
 
 def _job(doc, part, blank):
@@ -443,7 +453,7 @@ def create(doc, part_obj, allowance=2.0, material=MATERIAL, machine=MACHINE, kb_
 
     def work():
         group, nodes = _features(doc, part_obj, c.result)
-        blank = _blank(doc, part_obj, c.blank)
+        blank = _blank(doc, part_obj, c)
         job = _job(doc, part_obj, blank)
         ops = _operations(doc, job, c.steps, c.paths, c.cutting)
         prog = doc.addObject("App::FeaturePython", "ImpellerProgram")
@@ -488,9 +498,9 @@ def update(prog, edits=None, allowance=None, title="Edit impeller route", out_di
             pathcompat.remove_tool_controller(doc, tc)
         if abs(prog.Allowance.Value - allowance) > 1e-12 or prog.Blank is None:
             if prog.Blank is not None:
-                prog.Blank.Shape = c.blank
+                _fill_blank(prog.Blank, c)
             else:
-                prog.Blank = _blank(doc, part, c.blank)
+                prog.Blank = _blank(doc, part, c)
                 pathcompat.set_job_stock_object(job, prog.Blank)
         ops = _operations(doc, job, c.steps, c.paths, c.cutting)
         _fill_program(prog, c, edits)

@@ -97,7 +97,9 @@ class ProgramImpellerTest(unittest.TestCase):
         job, blank = self.prog.Job, self.prog.Blank
         self.assertTrue(pathcompat.is_job(job))
         self.assertIs(job.Stock, blank)
-        self.assertEqual(blank.TypeId, "Part::Feature")
+        self.assertEqual(blank.TypeId, "Part::FeaturePython")
+        self.assertEqual(blank.Allowance.Value, 2.5)
+        self.assertAlmostEqual(max(blank.ProfileRadius), blank.Shape.BoundBox.XMax, delta=0.05)
         self.assertEqual(self.prog.Allowance.Value, 2.5)
         shape = self.part.Shape
         self.assertLess(shape.cut(blank.Shape).Volume, 1e-6 * shape.Volume)
