@@ -21,6 +21,7 @@ facing, drilling, boring, fillet finishing) become switched-off operations witho
 import json
 import math
 import os
+import time
 
 import FreeCAD
 
@@ -154,6 +155,7 @@ class Computed:
         self.paths = None       # the core's toolpaths JSON: operations, check
         self.cutting = {}       # tool id -> cutting data of its ToolController
         self.settings = {}
+        self.seconds = {}       # stage -> seconds: recognise (with blank and route), toolpaths, cutting
 
 
 def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACHINE, kb_path=None,
@@ -164,7 +166,9 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
     c = Computed()
     c.settings = dict(allowance=float(allowance), material=material, machine=machine, kb_path=kb_path or "",
                       stations=int(stations), channels=int(channels))
+    t0 = time.perf_counter()
     c.result, c.blank = impeller.program_data(part_obj, allowance, kb_path=kb_path)
+    c.seconds["recognise"] = time.perf_counter() - t0
     c.route = route or c.result["route"]
     c.steps = _steps_with_tools(c.route, edits, kb_path)
     by_op = {s["operation"]: s for s in c.steps}
@@ -179,10 +183,13 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
         "options": {"roughAllowance": float(rough["allowance"]), "stations": int(stations), "channels": int(channels)},
     }
     shape, label = part_obj.Shape, part_obj.Label
+    t0 = time.perf_counter()
     with from_core(ImpellerError, label):
         c.paths = json.loads(_core().impeller_toolpaths(shape.exportBrepToString(),
                                                         kb_path or knowledge_base.user_kb_path(),
                                                         knowledge_base.sql_folder(), json.dumps(request)))
+    c.seconds["toolpaths"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
     kb = knowledge_base.open_kb(kb_path)
     if material not in kb.workpiece_materials():
         raise ImpellerError("unknown workpiece material {!r}; the knowledge base has {}".format(
@@ -213,6 +220,7 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
                             cut["length"])
         data["steps"] = cut["steps"]
         c.cutting[tool_id] = data
+    c.seconds["cutting"] = time.perf_counter() - t0
     return c
 
 
@@ -409,6 +417,7 @@ def _fill_program(prog, c, edits):
     prog.CuttingData = ["{} (steps {}): {}".format(tool, ", ".join(str(p) for p in d["steps"]), _cutting_text(d))
                         for tool, d in c.cutting.items()]
     prog.Skipped = list(c.route.get("skipped", []))
+    prog.Timings = json.dumps(c.seconds, separators=(",", ":"))
 
 
 def _post_into(prog):
@@ -467,7 +476,9 @@ def create(doc, part_obj, allowance=2.0, material=MATERIAL, machine=MACHINE, kb_
         blank.Visibility = False
         attach_views(made)
         doc.recompute()
+        t0 = time.perf_counter()
         _post_into(prog)
+        prog.Timings = json.dumps(dict(c.seconds, post=time.perf_counter() - t0), separators=(",", ":"))
         return prog
 
     prog = in_transaction(doc, "Program impeller", work)

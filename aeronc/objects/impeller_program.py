@@ -60,6 +60,8 @@ class ImpellerProgram(BaseProxy):
         declare_property(obj, "App::PropertyString", "Edits", g, "The user's edits of the route (JSON)", hidden=True)
         declare_property(obj, "App::PropertyString", "Cutting", g, "Cutting data per tool (JSON)", hidden=True)
         declare_property(obj, "App::PropertyString", "Posted", g, "The posted 840D program", hidden=True)
+        declare_property(obj, "App::PropertyString", "Timings", g,
+                         "Seconds of the last computation's stages (JSON)", hidden=True)
 
     def execute(self, obj):
         pass
