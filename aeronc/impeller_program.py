@@ -501,7 +501,7 @@ def update(prog, edits=None, allowance=None, title="Edit impeller route", out_di
     def work():
         job = prog.Job
         old_ops = [o for o in pathcompat.job_operations(job) if is_impeller_operation(o)]
-        old_tcs = pathcompat.tool_controllers(job)
+        old_tcs = [tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, "AeroNCTool")]  # ours only
         pathcompat.set_job_operations(job, [o for o in pathcompat.job_operations(job) if o not in old_ops])
         for o in old_ops:
             doc.removeObject(o.Name)

@@ -116,6 +116,10 @@ class ImpellerPanel:
         return form
 
     def _show_program(self):
+        try:
+            self.program is not None and self.program.Name
+        except ReferenceError:  # undone or deleted meanwhile: back to programming the part
+            self.program = None
         p = self.program
         self.part_label.setText("Part: <b>{}</b>".format(self.part.Label if self.part is not None else "?"))
         has = p is not None
