@@ -135,7 +135,9 @@ class ImpellerPanel:
                 self.summary.setText("Choose the blank allowance and press Program.")
                 return
             steps = impeller_program.steps_of(p)
-            library = sorted(impeller_program.tool_library(self.kb_path))
+            # The channel roughing and blade finishing take balls and tapered balls only.
+            library = sorted(k for k, t in impeller_program.tool_library(self.kb_path).items()
+                             if t["type"] in ("ball", "tapered_ball"))
             self.table.setRowCount(len(steps))
             for row, s in enumerate(steps):
                 self._fill_row(row, s, library)

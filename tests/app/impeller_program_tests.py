@@ -15,7 +15,7 @@ import FreeCAD
 import Part
 
 from aeronc import impeller, impeller_program, pathcompat
-from aeronc.errors import AeroNCError, RecognitionError
+from aeronc.errors import ImpellerError, RecognitionError
 from aeronc.objects.impeller_features import is_impeller_feature, is_impeller_features
 from aeronc.objects.impeller_program import cutting_of, is_impeller_program
 from aeronc.operations.impeller_operation import is_impeller_operation
@@ -161,6 +161,24 @@ class ProgramImpellerTest(unittest.TestCase):
         self.assertLessEqual(again["maxGougeMm"], 0.01)
         self.assertEqual(again["holderCollisions"], 0)
 
+    def test_bad_edits_are_refused_unchanged(self):
+        before = _state(self.doc), self.prog.Edits, self.prog.Posted
+        rough = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "rough_channels"][0]
+        blades = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "finish_blades"][0]
+        with self.assertRaisesRegex(ImpellerError, "needs a ball or tapered ball end mill; FM-125 is a face tool"):
+            impeller_program.set_step_tool(self.prog, rough.Position, "FM-125")
+        with self.assertRaisesRegex(ImpellerError, "no tool NO-SUCH-TOOL"):
+            impeller_program.set_step_tool(self.prog, rough.Position, "NO-SUCH-TOOL")
+        with self.assertRaisesRegex(ImpellerError, "only the channel roughing's allowance"):
+            impeller_program.set_step_allowance(self.prog, blades.Position, 0.3)
+        with self.assertRaisesRegex(ImpellerError, "must be zero or more"):
+            impeller_program.set_step_allowance(self.prog, rough.Position, -0.1)
+        with self.assertRaisesRegex(ImpellerError, "the route has no step 99"):
+            impeller_program.set_step_enabled(self.prog, 99, False)
+        with self.assertRaisesRegex(ImpellerError, "blank allowance must be zero or more"):
+            impeller_program.set_allowance(self.prog, float("nan"))
+        self.assertEqual((_state(self.doc), self.prog.Edits, self.prog.Posted), before)
+
     def test_save_and_reopen(self):
         path = os.path.join(self.dir, "impeller.FCStd")
         self.doc.saveCopy(path)  # the class's document stays open for the other tests
@@ -217,10 +235,6 @@ class EditAndUndoTest(unittest.TestCase):
             FreeCAD.closeDocument(doc.Name)
             shutil.rmtree(d, ignore_errors=True)
 
-    def test_bad_edits_are_refused_unchanged(self):
-        # Refused before any work: no program is needed to reach these checks' messages.
-        with self.assertRaisesRegex(AeroNCError, "allowance must be zero or more"):
-            impeller_program.set_allowance(None, -1)
 
 
 class BadPartsTest(unittest.TestCase):
