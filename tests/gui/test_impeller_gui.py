@@ -172,6 +172,33 @@ def run():
     panel.reject()
     pump()
 
+    # Save and reopen: the program, its Job and the colours come back; double-click edits it.
+    import tempfile
+    path = os.path.join(tempfile.mkdtemp(prefix="aeronc_impeller_gui_"), "impeller.FCStd")
+    doc.saveAs(path)
+    posted = prog.Posted
+    FreeCAD.closeDocument(doc.Name)
+    pump()
+    doc = FreeCAD.openDocument(path)
+    pump(1.0)
+    progs = [o for o in doc.Objects if is_impeller_program(o)]
+    check("reopened: the program with its posted text and Job", len(progs) == 1 and progs[0].Posted == posted
+          and progs[0].Job.Stock is progs[0].Blank)
+    if progs:
+        part = progs[0].Features.Source
+        colours = part.ViewObject.DiffuseColor
+        check("reopened: the part is coloured by role", len(colours) == len(part.Shape.Faces)
+              and all(abs(a - b) < 0.01 for a, b in zip(colours[hub - 1][:3], ROLE_COLOURS["hub"])), colours[:2])
+        opened = progs[0].ViewObject.Proxy.doubleClicked(progs[0].ViewObject)
+        pump()
+        panel = ImpellerPanel.current
+        check("reopened: double-click opens the route panel", opened and panel is not None
+              and panel.program is progs[0] and panel.table.rowCount() == 8)
+        if panel is not None:
+            panel.reject()
+            pump()
+    FreeCAD.closeDocument(doc.Name)
+
 
 # Three programs of the impeller take a minute or two on a loaded machine.
 harness.TIMEOUT_S = 600
