@@ -7,6 +7,7 @@
     CuttingOptimisationError   the cutting-parameter optimisation cannot run or write
     MachiningChainError        the machining chain cannot be built or updated
     PostError                  a post failed; names the operation and the move
+    ImpellerError              an impeller cannot be programmed (route, tools, toolpaths)
 
 The C++ core (aeronc._core) raises exceptions of its own; `from_core` turns them into these
 at the call, so the rest of the Python side (commands, panels, scripts) catches AeroNCError
@@ -41,6 +42,10 @@ class MachiningChainError(AeroNCError):
 
 class PostError(AeroNCError):
     """A post failed; the message names the operation and the move, and says what to change."""
+
+
+class ImpellerError(AeroNCError):
+    """An impeller's route, tools or toolpaths cannot be made; the message says why."""
 
 
 # RuntimeErrors that are bugs in Python, not messages from the core.

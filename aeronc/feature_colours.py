@@ -18,4 +18,15 @@ ROLE_COLOURS = {
     "stock": (0.55, 0.55, 0.55),             # grey
     "unclaimed": (0.10, 0.10, 0.10),         # near black: stands out as "not recognised"
 }
+# Impeller roles (aeronc.impeller.face_role_names).
+ROLE_COLOURS.update({
+    "main_blade": (0.25, 0.45, 0.95),        # blue
+    "splitter_blade": (0.20, 0.75, 0.25),    # green
+    "root_fillet": (0.15, 0.85, 0.90),       # cyan
+    "shroud": (0.95, 0.55, 0.10),            # orange
+    "hub": (0.95, 0.85, 0.15),               # yellow
+    "bore": (0.90, 0.15, 0.15),              # red
+    "plane": (0.80, 0.80, 0.80),
+    "turned": (0.60, 0.55, 0.70),
+})
 UNKNOWN_ROLE = (1.0, 1.0, 1.0)

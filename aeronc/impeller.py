@@ -39,10 +39,13 @@ def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
     check_solid(shape, label)
     if not allowance >= 0:
         raise RecognitionError("{}: the blank allowance must be zero or more, not {}".format(label, allowance))
+    import os
+    kb_path = kb_path or knowledge_base.user_kb_path()
+    os.makedirs(os.path.dirname(kb_path) or ".", exist_ok=True)  # the user's folder on first use
     core = _core()
     with from_core(RecognitionError, label):
         text, blank_brep = core.impeller_program_data(
-            shape.exportBrepToString(), float(allowance), kb_path or knowledge_base.user_kb_path(),
+            shape.exportBrepToString(), float(allowance), kb_path,
             knowledge_base.sql_folder(), route)
     blank = Part.Shape()
     blank.importBrepFromString(blank_brep)
@@ -80,3 +83,33 @@ def face_roles(result):
         for f in b["fillets"]:
             roles[f] = tag + " fillet"
     return roles
+
+
+def face_role_names(result):
+    """The colour role of every face, FaceN order (index N-1): hub, bore, hole_wall, plane,
+    turned, main_blade, splitter_blade, root_fillet, shroud (aeronc.feature_colours)."""
+    roles = ["unclaimed"] * int(result["faceCount"])
+
+    def put(faces, role):
+        for f in faces:
+            if 1 <= f <= len(roles):
+                roles[f - 1] = role
+
+    put([result["hub"]], "hub")
+    if result.get("bore"):
+        put([result["bore"]], "bore")
+    put(result.get("holes", []), "hole_wall")
+    put(result.get("planes", []), "plane")
+    put(result.get("turned", []), "turned")
+    for b in result["blades"]:
+        put(blade_wall_faces(b), b["kind"] + "_blade")
+        put(b["fillets"], "root_fillet")
+        put([b["shroud"]], "shroud")
+    return roles
+
+
+def blade_wall_faces(blade):
+    """The wall faces of one blade of the result: pressure, suction, leading, trailing and
+    any other walls (edge rounds), each once."""
+    faces = [blade[k] for k in ("pressure", "suction", "leading", "trailing") if blade.get(k)]
+    return faces + [f for f in blade.get("walls", []) if f not in faces]

@@ -369,6 +369,18 @@ def set_job_stock_box(job, box):
     return stock
 
 
+def set_job_stock_object(job, stock):
+    """Make a document object with a Shape (a revolved blank) the Job's Stock, removing the stock
+    the Job had. Path's own stock kinds are boxes, cylinders and grown models; FreeCAD lists
+    another object's kind as "Unknown" and uses its shape like theirs."""
+    doc = job.Document
+    old = job.Stock
+    job.Stock = stock
+    if old is not None and old is not stock and doc.getObject(old.Name) is not None:
+        doc.removeObject(old.Name)
+    return stock
+
+
 def job_height_offsets(job):
     """(safe height offset, clearance height offset) of the Job's setup sheet, mm."""
     sheet = getattr(job, "SetupSheet", None)

@@ -28,7 +28,7 @@ def part_edges_in_frame(shape, frame, samples=2000):
     return lines
 
 
-def draw(setups, path, title=""):
+def draw(setups, path, title="", panel_title="setup {} (looking down the tool axis)"):
     """Write one PNG with a panel per setup; returns path.
 
     setups: [{"name": "+Z", "edges": [[(u, v), ...], ...],
@@ -71,7 +71,7 @@ def draw(setups, path, title=""):
                            edgecolors=c, linewidths=1.2, zorder=4)
         ax.autoscale()
         ax.set_aspect("equal")
-        ax.set_title("setup {} (looking down the tool axis)".format(s["name"]))
+        ax.set_title(panel_title.format(s["name"]))
         ax.set_xlabel("u (mm)")
         ax.set_ylabel("v (mm)")
     handles = [Line2D([0], [0], color=colour_of[t], lw=2, label=t) for t in tools]

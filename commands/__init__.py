@@ -8,7 +8,7 @@ they do is imported when they run. base.py holds what every command shares.
 import FreeCADGui
 
 COMMANDS = ["AeroNC_RecogniseFeatures", "AeroNC_SelectTools", "AeroNC_OptimiseCutting", "AeroNC_MachiningChain",
-            "AeroNC_EditKnowledgeBase"]
+            "AeroNC_ProgramImpeller", "AeroNC_EditKnowledgeBase"]
 # Datum holes and compensated drilling (commands/datum_holes.py).
 DRILLING_COMMANDS = ["AeroNC_DefineDatumHoles", "AeroNC_CameraProgram", "AeroNC_ImportMeasurements",
                      "AeroNC_CompensatedDrilling"]
@@ -19,6 +19,7 @@ def register():
     from aeronc.commands.edit_knowledge_base import EditKnowledgeBase
     from aeronc.commands.machining_chain import MachiningChain
     from aeronc.commands.optimise_cutting import OptimiseCutting
+    from aeronc.commands.program_impeller import ProgramImpeller
     from aeronc.commands.recognise_features import RecogniseFeatures
     from aeronc.commands.select_tools import SelectTools
     known = FreeCADGui.listCommands()
@@ -26,6 +27,7 @@ def register():
                           ("AeroNC_SelectTools", SelectTools),
                           ("AeroNC_OptimiseCutting", OptimiseCutting),
                           ("AeroNC_MachiningChain", MachiningChain),
+                          ("AeroNC_ProgramImpeller", ProgramImpeller),
                           ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
         if name not in known:
             FreeCADGui.addCommand(name, command())

@@ -58,6 +58,7 @@ def extend(wb):
                 original(recipient)  # Path's own items (its errors still reach FreeCAD)
             finally:
                 from aeronc.commands.machining_chain import selected_chain_source
+                from aeronc.commands.program_impeller import selected_program
                 from aeronc.commands.optimise_cutting import selected_target
                 from aeronc.commands.recognise_features import selected_solid
                 from aeronc.commands.select_tools import selected_machining_features
@@ -68,6 +69,8 @@ def extend(wb):
                     wb.appendContextMenu("", ["Separator"] + DRILLING_COMMANDS[1:])
                 elif selected_machining_features() is not None:
                     wb.appendContextMenu("", ["Separator", "AeroNC_SelectTools", "AeroNC_MachiningChain"])
+                elif selected_program() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_ProgramImpeller"])
                 elif selected_chain_source() is not None:
                     wb.appendContextMenu("", ["Separator", "AeroNC_MachiningChain"])
                 elif FreeCADGui.Selection.getSelection() and selected_target() is not None:

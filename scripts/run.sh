@@ -5,7 +5,8 @@
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
-#   scripts/run.sh impeller  a generated 2 x 9 impeller programmed -> out/impeller/ (docs/impeller.md)
+#   scripts/run.sh impeller  a generated 2 x 9 impeller programmed in FreeCAD -> out/impeller/:
+#                            document, 840D program, report.html with pictures (docs/impeller.md)
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
@@ -48,8 +49,9 @@ case "${1:-}" in
   impeller)
     out=$ROOT/out/impeller
     mkdir -p "$out"
-    "$BUILD/cpp/aeronc" impeller-part "$out/impeller.step" --truth "$out/truth.json"
-    "$BUILD/cpp/aeronc" impeller-program "$out/impeller.step" --kb "$out/kb.sqlite" --out "$out"
+    # AERONC_IMPELLER_SPEC, AERONC_ALLOWANCE, AERONC_STATIONS, AERONC_CHANNELS change the run.
+    HOME=$(fc_home impeller) AERONC_OUT=$out freecadcmd "$ROOT/scripts/impeller.py" 2>&1 |
+      awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
     ;;
   test)
     ctest --test-dir "$BUILD" --output-on-failure

@@ -4,7 +4,9 @@
 
 The addon is found on FreeCAD's Mod path (user Mods: $HOME/.local/share/FreeCAD/Mod) or in
 env AERONC_MOD_DIR (the folder holding aeronc/, i.e. <Mod>/AeroNC). Prints one line per test,
-then "N passed, N failed", and ends with exit code 0 when all passed, 1 otherwise.
+then "N passed, N failed", and ends with exit code 0 when all passed, 1 otherwise. Env
+AERONC_APP_TEST_PATTERN picks other files than test_*.py (the impeller's slower tests,
+impeller_*_tests.py, run as a CTest of their own).
 freecadcmd runs this file as a module (not __main__), so the code runs at import.
 """
 import os
@@ -32,7 +34,8 @@ def _main():
     print("aeronc from {}".format(aeronc.PACKAGE_DIR))
     tests_dir = os.path.join(aeronc.PACKAGE_DIR, "tests", "app")
     top = os.path.dirname(aeronc.PACKAGE_DIR)
-    suite = unittest.defaultTestLoader.discover(tests_dir, pattern="test_*.py", top_level_dir=top)
+    pattern = os.environ.get("AERONC_APP_TEST_PATTERN") or "test_*.py"
+    suite = unittest.defaultTestLoader.discover(tests_dir, pattern=pattern, top_level_dir=top)
     result = unittest.TextTestRunner(stream=sys.stdout, verbosity=2).run(suite)
     failed = len(result.failures) + len(result.errors) + len(result.unexpectedSuccesses)
     return result.testsRun - failed, failed

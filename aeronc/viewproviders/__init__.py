@@ -19,9 +19,17 @@ def attach(obj, restoring=False):
     from aeronc.objects import DOMAIN_ELEMENT, MACHINING_FEATURES, SETUP_DIRECTION
     from aeronc.objects import compensated_drilling, measured_hole_set, photo_hole_set
     from aeronc.objects.machining_chain import TYPE as MACHINING_CHAIN
+    from aeronc.objects import impeller_features, impeller_program
     from aeronc.operations import TYPES as OPERATIONS
+    from aeronc.operations.impeller_operation import TYPE as IMPELLER_OPERATION
     t = proxy_type(obj)
-    if t == photo_hole_set.TYPE:
+    if t == impeller_features.TYPE:
+        from aeronc.viewproviders.view_impeller import ViewImpellerFeatures as cls
+    elif t == impeller_features.NODE_TYPE:
+        from aeronc.viewproviders.view_impeller import ViewImpellerFeature as cls
+    elif t == impeller_program.TYPE:
+        from aeronc.viewproviders.view_impeller import ViewImpellerProgram as cls
+    elif t == photo_hole_set.TYPE:
         from aeronc.viewproviders.view_photo_hole_set import ViewPhotoHoleSet as cls
     elif t == measured_hole_set.TYPE:
         from aeronc.viewproviders.view_measured_hole_set import ViewMeasuredHoleSet as cls
@@ -35,7 +43,7 @@ def attach(obj, restoring=False):
         from aeronc.viewproviders.view_domain_element import ViewDomainElement as cls
     elif t == MACHINING_CHAIN:
         from aeronc.viewproviders.view_machining_chain import ViewMachiningChain as cls
-    elif t in OPERATIONS:
+    elif t in OPERATIONS or t == IMPELLER_OPERATION:
         from aeronc.viewproviders.view_operation import ViewOperation as cls
     else:
         return
@@ -45,11 +53,11 @@ def attach(obj, restoring=False):
         # come in hidden; show the tree and colour the part once the document is open (the
         # part's view provider resets its colours when it gets its shape during opening).
         vobj.Visibility = True
-        if t == MACHINING_FEATURES and obj.Result:
+        if t in (MACHINING_FEATURES, impeller_features.TYPE) and obj.Result:
             from PySide import QtCore
             name, doc = obj.Name, obj.Document
             QtCore.QTimer.singleShot(0, lambda: _colour_later(doc, name))
-    elif t == MACHINING_FEATURES and obj.Result and vobj.Visibility:
+    elif t in (MACHINING_FEATURES, impeller_features.TYPE) and obj.Result and vobj.Visibility:
         vobj.Proxy.colour_source(obj)
 
 

@@ -12,6 +12,9 @@
 #include <aeronc/impeller/ProcessRoute.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/core/Error.h>
+#include <aeronc/impellerpath/ImpellerToolpaths.h>
+#include <aeronc/post/Apt.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
 #include <BRepTools.hxx>
@@ -23,6 +26,67 @@
 
 namespace py = pybind11;
 using namespace aeronc;
+
+namespace {
+
+nlohmann::json toolToJson(const impeller::CuttingTool& t) {
+    return {{"id", t.id},         {"type", t.type},   {"material", t.material},         {"diameter", t.diameter},
+            {"taperDeg", t.taperDeg}, {"reach", t.reach}, {"fluteLength", t.fluteLength}, {"shankDiameter", t.shankDiameter},
+            {"flutes", t.flutes}};
+}
+
+double number(const nlohmann::json& j, const char* key, const std::string& where) {
+    if (!j.contains(key) || !j[key].is_number()) throw inputError(where + ": \"" + key + "\" must be a number");
+    return j[key].get<double>();
+}
+
+// A cutter of the request ({"tool": id, "number", "rpm", "feed"}) with its shape from the
+// knowledge base's tool of that id.
+impellerpath::CutterShape cutterOf(const nlohmann::json& request, const char* role,
+                                   const std::vector<impeller::CuttingTool>& tools) {
+    if (!request.contains(role) || !request[role].is_object()) throw inputError(std::string("impeller toolpaths: no ") + role);
+    const auto& r = request[role];
+    const std::string where = std::string("impeller toolpaths: ") + role;
+    if (!r.contains("tool") || !r["tool"].is_string()) throw inputError(where + ": \"tool\" must be a tool id");
+    const std::string id = r["tool"].get<std::string>();
+    const impeller::CuttingTool* t = nullptr;
+    for (const auto& c : tools)
+        if (c.id == id) t = &c;
+    if (!t) throw inputError(where + ": no tool " + id + " in the knowledge base");
+    if (t->type != "ball" && t->type != "tapered_ball")
+        throw inputError(where + ": tool " + id + " is a " + t->type + " tool; the channels need a ball or tapered ball");
+    impellerpath::CutterShape c;
+    c.id = id;
+    c.number = static_cast<int>(number(r, "number", where));
+    c.tipRadius = t->diameter / 2, c.taperDeg = t->taperDeg, c.fluteLength = t->fluteLength, c.reach = t->reach;
+    c.shankRadius = t->shankDiameter / 2;
+    c.rpm = number(r, "rpm", where), c.feed = number(r, "feed", where);
+    return c;
+}
+
+nlohmann::json cutterToJson(const impellerpath::CutterShape& c) {
+    return {{"id", c.id},           {"number", c.number},   {"tipRadius", c.tipRadius}, {"taperDeg", c.taperDeg},
+            {"fluteLength", c.fluteLength}, {"shankRadius", c.shankRadius}, {"reach", c.reach}, {"rpm", c.rpm},
+            {"feed", c.feed}};
+}
+
+nlohmann::json checkToJson(const impellerpath::CheckResult& r) {
+    return {{"maxGougeMm", r.maxGouge}, {"holderCollisions", r.holderCollisions}, {"tilted", r.tilted},
+            {"positions", r.positions}, {"worstAt", {r.worstAt[0], r.worstAt[1], r.worstAt[2]}}};
+}
+
+impellerpath::CutterShape cutterFromJson(const nlohmann::json& j) {
+    const std::string where = "impeller check: cutter";
+    impellerpath::CutterShape c;
+    c.id = j.value("id", std::string());
+    c.number = static_cast<int>(number(j, "number", where));
+    c.tipRadius = number(j, "tipRadius", where), c.taperDeg = number(j, "taperDeg", where);
+    c.fluteLength = number(j, "fluteLength", where), c.shankRadius = number(j, "shankRadius", where);
+    c.reach = number(j, "reach", where);
+    return c;
+}
+
+}  // namespace
 
 void bindImpeller(py::module_& m) {
     m.def(
@@ -96,4 +160,119 @@ void bindImpeller(py::module_& m) {
         },
         py::arg("spec_json") = std::string(),
         "Build a generated impeller (spec keys: ImpellerSpec's fields): (brep_text, truth_json).");
+
+    m.def(
+        "impeller_tools",
+        [](const std::string& kbPath, const std::string& sqlFolder) {
+            return python::guarded([&] {
+                const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
+                auto list = nlohmann::json::array();
+                for (const auto& t : kb::impellerTools(kb)) list.push_back(toolToJson(t));
+                return list.dump(1);
+            });
+        },
+        py::arg("kb_path"), py::arg("sql_folder"),
+        "The tools the impeller route may choose (face mills, flat and ball end mills, drills, tapered balls) "
+        "as JSON text: [{id, type, material, diameter, taperDeg, reach, fluteLength, shankDiameter, flutes}].");
+
+    m.def(
+        "impeller_toolpaths",
+        [](const std::string& brep, const std::string& kbPath, const std::string& sqlFolder,
+           const std::string& requestJson) {
+            return python::guarded([&] {
+                nlohmann::json request;
+                try {
+                    request = nlohmann::json::parse(requestJson);
+                } catch (const nlohmann::json::exception& e) {
+                    throw inputError(std::string("impeller toolpaths: the request is not JSON: ") + e.what());
+                }
+                const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
+                const auto tools = kb::impellerTools(kb);
+                const auto rougher = cutterOf(request, "rougher", tools);
+                const auto finisher = cutterOf(request, "finisher", tools);
+                impellerpath::PathOptions opt;
+                const auto o = request.value("options", nlohmann::json::object());
+                const std::string where = "impeller toolpaths: options";
+                auto opt_num = [&](const char* key, double& field) {
+                    if (o.contains(key)) field = number(o, key, where);
+                };
+                opt_num("roughAllowance", opt.roughAllowance);
+                opt_num("stepDown", opt.stepDown);
+                opt_num("stepOver", opt.stepOver);
+                opt_num("finishStep", opt.finishStep);
+                opt_num("safeDistance", opt.safeDistance);
+                opt_num("maxTiltDeg", opt.maxTiltDeg);
+                double stations = opt.stations, channels = opt.channels;
+                opt_num("stations", stations);
+                opt_num("channels", channels);
+                if (!(stations >= 2 && stations <= 200)) throw inputError(where + ": stations wants 2 to 200");
+                if (!(channels >= 0 && channels <= 1000)) throw inputError(where + ": channels wants 0 (all) or more");
+                if (!(opt.roughAllowance >= 0) || !(opt.stepDown > 0) || !(opt.stepOver > 0 && opt.stepOver <= 1) ||
+                    !(opt.finishStep > 0) || !(opt.safeDistance > 0) || !(opt.maxTiltDeg >= 0 && opt.maxTiltDeg < 90))
+                    throw inputError(where + ": allowance >= 0, step-down > 0, step-over in (0, 1], finishing step > 0, "
+                                             "safe distance > 0 and tilt 0-90 degrees");
+                opt.stations = static_cast<int>(stations), opt.channels = static_cast<int>(channels);
+                nlohmann::json out;
+                {
+                    py::gil_scoped_release nogil;
+                    runCatchingOcctFaults(
+                        [&] {
+                            const TopoDS_Shape part = partFromBrepText(brep);
+                            const auto features = impeller::recogniseImpeller(part);
+                            const auto dims = impeller::measureImpeller(part, features);
+                            const auto prog = impellerpath::impellerToolpaths(part, features, dims, rougher, finisher, opt);
+                            auto ops = nlohmann::json::array();
+                            for (const auto& op : prog.operations) {
+                                // Moves as the posts take them: the tool tip and the unit axis.
+                                auto moves = nlohmann::json::array();
+                                for (const auto& mv : op.moves) {
+                                    const auto tip = mv.centre - op.cutter.tipRadius * mv.axis;
+                                    moves.push_back({tip.x(), tip.y(), tip.z(), mv.axis.x(), mv.axis.y(), mv.axis.z(),
+                                                     mv.rapid ? 1 : 0});
+                                }
+                                ops.push_back({{"name", op.name}, {"cutter", cutterToJson(op.cutter)}, {"moves", moves}});
+                            }
+                            out = {{"operations", ops}, {"check", checkToJson(prog.check)}};
+                        },
+                        "computing the impeller toolpaths");
+                }
+                return out.dump();
+            });
+        },
+        py::arg("brep_text"), py::arg("kb_path"), py::arg("sql_folder"), py::arg("request_json"),
+        "5-axis toolpaths of the impeller in brep_text (docs/impeller.md §5). request_json: {rougher: {tool, "
+        "number, rpm, feed}, finisher: {...}, options: {roughAllowance, stepDown, stepOver, finishStep, stations, "
+        "safeDistance, maxTiltDeg, channels}}; the cutters' shapes come from the knowledge base's tools. Returns "
+        "JSON text: {operations: [{name, cutter, moves: [[x, y, z, i, j, k, rapid]]}], check: {maxGougeMm, "
+        "holderCollisions, tilted, positions, worstAt}}, moves as tool tip and unit tool axis.");
+
+    m.def(
+        "impeller_check_apt",
+        [](const std::string& brep, const std::string& aptText, const std::string& cuttersJson) {
+            return python::guarded([&] {
+                std::vector<impellerpath::CutterShape> cutters;
+                try {
+                    for (const auto& j : nlohmann::json::parse(cuttersJson)) cutters.push_back(cutterFromJson(j));
+                } catch (const nlohmann::json::exception& e) {
+                    throw inputError(std::string("impeller check: the cutters are not JSON: ") + e.what());
+                }
+                nlohmann::json out;
+                {
+                    py::gil_scoped_release nogil;
+                    runCatchingOcctFaults(
+                        [&] {
+                            const TopoDS_Shape part = partFromBrepText(brep);
+                            const auto features = impeller::recogniseImpeller(part);
+                            const auto ops = impellerpath::movesOf(post::readApt(aptText), cutters);
+                            out = checkToJson(impellerpath::checkProgram(part, features, ops));
+                        },
+                        "checking the impeller program");
+                }
+                return out.dump();
+            });
+        },
+        py::arg("brep_text"), py::arg("apt_text"), py::arg("cutters_json"),
+        "Check an APT program of the impeller (read back) against its blades and hub: the cutters "
+        "([{number, tipRadius, taperDeg, fluteLength, shankRadius, reach}]) by tool number; returns JSON text "
+        "{maxGougeMm, holderCollisions, positions, worstAt}.");
 }

@@ -80,3 +80,60 @@ class ImpellerRecognitionTest(unittest.TestCase):
     def test_bad_spec(self):
         with self.assertRaisesRegex(RecognitionError, "unknown key blades"):
             impeller.make_test_impeller({"blades": 4})
+
+
+class ImpellerToolpathRequestTest(unittest.TestCase):
+    """_core.impeller_toolpaths and impeller_check_apt refuse a bad request by name, before any
+    geometry is read (the part here is a box: reaching recognition would say so instead)."""
+
+    @classmethod
+    def setUpClass(cls):
+        import os
+        import tempfile
+        from aeronc import _core, knowledge_base
+        cls.core = _core
+        cls.dir = tempfile.mkdtemp(prefix="aeronc_impeller_request_")
+        cls.kb = os.path.join(cls.dir, "kb.sqlite")
+        cls.sql = knowledge_base.sql_folder()
+        cls.brep = Part.makeBox(10, 20, 30).exportBrepToString()
+
+    @classmethod
+    def tearDownClass(cls):
+        import shutil
+        shutil.rmtree(cls.dir, ignore_errors=True)
+
+    def request(self, **changes):
+        import json
+        r = {"rougher": {"tool": "EM-BALL8", "number": 1, "rpm": 10000, "feed": 1000},
+             "finisher": {"tool": "TB-4-3", "number": 2, "rpm": 10000, "feed": 1000}, "options": {}}
+        r.update(changes)
+        return json.dumps(r)
+
+    def refused(self, text, message):
+        with self.assertRaisesRegex(RuntimeError, message):
+            self.core.impeller_toolpaths(self.brep, self.kb, self.sql, text)
+
+    def test_bad_requests(self):
+        self.refused("{not json", "the request is not JSON")
+        self.refused('{"finisher": {}}', "no rougher")
+        self.refused(self.request(rougher={"tool": "NOPE", "number": 1, "rpm": 1, "feed": 1}), "no tool NOPE")
+        self.refused(self.request(rougher={"tool": "FM-125", "number": 1, "rpm": 1, "feed": 1}),
+                     "FM-125 is a face tool")
+        self.refused(self.request(finisher={"tool": "TB-4-3", "rpm": 1, "feed": 1}), "\"number\" must be a number")
+        self.refused(self.request(options={"stations": 1}), "stations wants 2 to 200")
+        self.refused(self.request(options={"stepOver": 1.5}), "step-over in \\(0, 1\\]")
+        # A good request reaches the part, which is no impeller.
+        self.refused(self.request(), "not an impeller")
+
+    def test_tool_list(self):
+        import json
+        tools = {t["id"]: t for t in json.loads(self.core.impeller_tools(self.kb, self.sql))}
+        self.assertEqual(tools["TB-4-3"]["type"], "tapered_ball")
+        self.assertEqual((tools["TB-4-3"]["diameter"], tools["TB-4-3"]["taperDeg"]), (4.0, 3.0))
+        self.assertEqual(tools["EM-BALL8"]["type"], "ball")
+
+    def test_check_refuses_bad_cutters(self):
+        with self.assertRaisesRegex(RuntimeError, "the cutters are not JSON"):
+            self.core.impeller_check_apt(self.brep, "", "[{")
+        with self.assertRaisesRegex(RuntimeError, "\"tipRadius\" must be a number"):
+            self.core.impeller_check_apt(self.brep, "", '[{"number": 1}]')

@@ -1,0 +1,168 @@
+"""The impeller report: one HTML page on a programmed impeller (aeronc.impeller_job).
+
+Dimensions measured against the generator's truth, the features, the blank, the process route
+with its operations, the tools, the cutting data the optimiser chose (next to the knowledge
+base's), the gouge and holder checks of the toolpaths and of the program read back, the posted
+program's head, and the pictures beside the page (linked by file name).
+"""
+import os
+
+from aeronc.chain_report import _STYLE, _e, _num, _verdict
+from aeronc.post.output import write_atomically
+
+LIMIT_GOUGE_MM = 0.01
+DIMENSIONS = [("boreDiameter", "bore diameter"), ("boreDepth", "bore depth"), ("filletRadius", "root fillet radius"),
+              ("bladeHeight", "main blade height"), ("minChannelWidth", "narrowest channel")]
+
+
+def _table(head, rows, numeric=()):
+    out = ["<table><tr>{}</tr>".format("".join("<th>{}</th>".format(_e(h)) for h in head))]
+    for r in rows:
+        out.append("<tr>{}</tr>".format("".join(
+            "<td class='n'>{}</td>".format(c) if i in numeric else "<td>{}</td>".format(c) for i, c in enumerate(r))))
+    out.append("</table>")
+    return "".join(out)
+
+
+def _summary(run):
+    r, t = run["result"], run["truth"]
+    sec = run.get("seconds", {})
+    rows = [("Part", "generated impeller, spec {}".format(_e(run["spec"] or "default (2 x 9 blades)"))),
+            ("Faces", run["faces"]),
+            ("Blades", "{} main + {} splitter (truth: {} + {})".format(
+                r["bladeCount"], r["splitterCount"], t["bladeCount"], sum(1 for b in t["blades"] if b["splitter"]))),
+            ("Material / machine", "{} / {} (Sinumerik 840D, TRAORI)".format(_e(run["material"]), _e(run["machine"]))),
+            ("Blank", "outer profile + {} mm, revolved: \u00d8{} x {} mm, {} cm\u00b3".format(
+                _num(run["blank"]["allowance"], 2), _num(run["blank"]["diameter"], 2), _num(run["blank"]["length"], 2),
+                _num(run["blank"]["volume"] / 1000.0, 1))),
+            ("Toolpath detail", "{} stations a pass, {} channels".format(
+                run["stations"], run["channels"] or "all")),
+            ("Times", "; ".join("{} {:.1f} s".format(k, v) for k, v in sec.items())),
+            ("Stages", "; ".join("{} {:.1f} s".format(n, s) for n, s in run.get("stages", [])))]
+    return "<table class='summary'>{}</table>".format(
+        "".join("<tr><td>{}</td><td>{}</td></tr>".format(_e(a), b) for a, b in rows))
+
+
+def _dimensions(run):
+    d, t = run["result"]["dimensions"], run["truth"]
+    rows = []
+    for key, name in DIMENSIONS:
+        diff = abs(float(d[key]) - float(t[key]))
+        rows.append((_e(name), _num(d[key], 6), _num(t[key], 6), "{:.2e}".format(diff), _verdict(diff <= 1e-3)))
+    for key, name in (("splitterHeight", "splitter height"), ("outerRadius", "outer radius"),
+                      ("axialLength", "axial length")):
+        rows.append((_e(name), _num(d.get(key), 6), "&ndash;", "&ndash;", ""))
+    return "<h2>Dimensions against the generator's truth (1e-3 mm)</h2>" + _table(
+        ["dimension", "measured (mm)", "truth (mm)", "difference", ""], rows, numeric=(1, 2, 3))
+
+
+def _features(run):
+    r, t = run["result"], run["truth"]
+    truth_by_shroud = {b["shroud"]: b for b in t["blades"]}
+    rows = []
+    exact = True
+    for i, b in enumerate(r["blades"]):
+        tb = truth_by_shroud.get(b["shroud"], {})
+        same = bool(tb) and all(b.get(k) == tb.get(k) for k in ("pressure", "suction", "leading", "trailing")) \
+            and sorted(b["fillets"]) == sorted(tb.get("fillets", [])) and (b["kind"] == "splitter") == tb.get("splitter")
+        exact &= same
+        rows.append((i, _e(b["kind"]), _num(b.get("angleDeg"), 2), b.get("pressure"), b.get("suction"),
+                     b.get("leading"), b.get("trailing"), b["shroud"], ", ".join(str(f) for f in b["fillets"]),
+                     _verdict(same)))
+    singles = [("hub", [r["hub"]], [t["hub"]]), ("bore", [r.get("bore")], [t.get("bore")]),
+               ("planes", sorted(r.get("planes", [])), sorted(t.get("planes", [])))]
+    other = []
+    for name, got, want in singles:
+        exact &= got == want
+        other.append((_e(name), ", ".join("Face{}".format(f) for f in got), _verdict(got == want)))
+    return ("<h2>Features (FaceN of the part) against the truth: {}</h2>".format(_verdict(exact)) +
+            _table(["blade", "kind", "angle (deg)", "pressure", "suction", "leading", "trailing", "shroud",
+                    "fillets", "truth"], rows, numeric=(0, 2)) +
+            _table(["feature", "faces", "truth"], other))
+
+
+def _route(run):
+    rows = []
+    for o in run["operations"]:
+        rows.append((o["position"], _e(o["operation"].replace("_", " ")), _e(o["strategy"]), _e(o["tool"] or "-"),
+                     "T{}".format(o["toolNumber"]) if o["toolNumber"] else "", _num(o["allowance"], 2),
+                     "on" if o["active"] else "<span class='muted'>off</span>", o["moves"] or "",
+                     _num(o["cutLength"], 0) if o["moves"] else "", _e(o["cycleTime"] if o["moves"] else ""),
+                     "<span class='small'>{}</span>".format(_e(o["note"]))))
+    skipped = run["route"].get("skipped") or []
+    return ("<h2>Process route (knowledge base rule library) and the Job's operations</h2>" +
+            _table(["step", "operation", "strategy", "tool", "T", "allowance (mm)", "active", "moves",
+                    "cut length (mm)", "time", "note"], rows, numeric=(0, 5, 7, 8)) +
+            ("<p class='small'>Rules that do not apply: {}</p>".format(_e("; ".join(skipped))) if skipped else ""))
+
+
+def _tools(run):
+    rows = [(_e(t["id"]), _e(t.get("type", "")), _num(t.get("diameter"), 2), _num(t.get("taperDeg"), 1),
+             _num(t.get("fluteLength"), 1), _num(t.get("shankDiameter"), 1), _num(t.get("reach"), 1),
+             t.get("flutes", ""), ", ".join(str(s) for s in t.get("steps", [])),
+             "<span class='small'>{}</span>".format(_e(t.get("reason", ""))))
+            for t in run["tools"]]
+    return "<h2>Tools</h2>" + _table(["id", "type", "\u00d8 (mm)", "taper (deg)", "flute length", "shank \u00d8",
+                                      "reach", "flutes", "steps", "why this tool"], rows, numeric=(2, 3, 4, 5, 6, 7))
+
+
+def _cutting(run):
+    rows = []
+    for tool, c in run["cutting"].items():
+        rows.append((_e(tool), ", ".join(str(s) for s in c.get("steps", [])), _e(c["operation"]),
+                     _num(c["rpm"], 0), _num(c["fz"], 4), _num(c["feed"], 0), _num(c["plungeFeed"], 0),
+                     _num(c["ap"], 2), _num(c["ae"], 2), _num(c["length"], 0), _e(", ".join(c.get("active", []))),
+                     _num(c.get("kbFz"), 4), _num(c.get("kbVc"), 0)))
+    return ("<h2>Cutting data from the cutting-parameter optimiser</h2>"
+            "<p class='small'>One ToolController per tool; its speeds serve every step it cuts, so the deepest "
+            "a<sub>p</sub> and the widest a<sub>e</sub> of those steps meet the limits. The knowledge base's "
+            "f<sub>z</sub> and v<sub>c</sub> are shown for comparison.</p>" +
+            _table(["tool", "steps", "operation", "n (r/min)", "f_z (mm)", "v_f (mm/min)", "plunge (mm/min)",
+                    "a_p (mm)", "a_e (mm)", "cut length (mm)", "active limits", "KB f_z", "KB v_c (m/min)"],
+                   rows, numeric=(3, 4, 5, 6, 7, 8, 9, 11, 12)))
+
+
+def _checks(run):
+    c, a = run["check"], run["recheck"]
+    rows = [("toolpaths as computed (every channel kind)", c["positions"], "{:.5f}".format(c["maxGougeMm"]),
+             c["holderCollisions"], c["tilted"],
+             _verdict(c["maxGougeMm"] <= LIMIT_GOUGE_MM and c["holderCollisions"] == 0)),
+            ("the Job's program, written as APT and read back", a["positions"], "{:.5f}".format(a["maxGougeMm"]),
+             a["holderCollisions"], "&ndash;",
+             _verdict(a["maxGougeMm"] <= LIMIT_GOUGE_MM and a["holderCollisions"] == 0))]
+    return ("<h2>Gouge and holder checks (OCCT distance queries; gouge limit {} mm)</h2>".format(LIMIT_GOUGE_MM) +
+            _table(["program", "cutting positions", "deepest gouge (mm)", "holder collisions", "tilted", ""],
+                   rows, numeric=(1, 2, 3, 4)) +
+            "<p class='small'>Rapids between passes are not checked.</p>")
+
+
+def _program(run):
+    p = run["program"]
+    return ("<h2>Posted program</h2><p>{} ({} lines), AeroNC's 840D post for {}: simultaneous moves under "
+            "TRAORI with the tool axis of every move.</p><pre class='small'>{}\n...</pre>".format(
+                _e(os.path.basename(p["file"] or "")), p["lines"], _e(run["machine"]), _e("\n".join(p["head"]))))
+
+
+def _pictures(run):
+    return "".join("<h2>{}</h2><img src='{}' alt='{}'>".format(_e(c), _e(os.path.basename(p)), _e(c))
+                   for c, p in run["pictures"])
+
+
+def _display_note():
+    return ("<h2>What FreeCAD shows</h2><p class='small'>Each operation's Path holds G0/G1 moves to the tool tip "
+            "(X Y Z) with the tool axis as U V W on every move; FreeCAD saves them with the document and AeroNC's "
+            "posts read the axis from there. FreeCAD's 3-D view draws the tool tip's path only, not the axis; "
+            "FreeCAD's own posts and simulator ignore U V W. Steps without a toolpath (turning, facing, drilling, "
+            "boring, fillet finishing) are operations switched off, with the reason in their Note.</p>")
+
+
+def render(run):
+    return "".join(["<!DOCTYPE html><html><head><meta charset='utf-8'><title>AeroNC impeller run</title>",
+                    "<style>{}</style></head><body>".format(_STYLE), "<h1>AeroNC impeller run</h1>",
+                    _summary(run), _checks(run), _dimensions(run), _features(run), _route(run), _tools(run),
+                    _cutting(run), _pictures(run), _program(run), _display_note(), "</body></html>"])
+
+
+def write(path, run):
+    write_atomically(path, render(run))
+    return path

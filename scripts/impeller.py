@@ -1,0 +1,37 @@
+"""The impeller run on a generated impeller, headless, against the installed addon:
+
+    HOME=<a FreeCAD home with AeroNC installed> AERONC_OUT=out/impeller freecadcmd scripts/impeller.py
+
+(`scripts/run.sh impeller` does this.) Runs aeronc.impeller_job: a generated 2 x 9 impeller
+programmed in FreeCAD by Program impeller (recognition nodes, blank as the Job's stock, the
+route's operations with 5-axis toolpaths, cutting data from the optimiser, the 840D program),
+the document saved, the program re-read and checked, pictures and report.html in AERONC_OUT
+(see aeronc/impeller_job.py for the list). AERONC_IMPELLER_SPEC (JSON, ImpellerSpec's keys),
+AERONC_ALLOWANCE (mm), AERONC_STATIONS and AERONC_CHANNELS (0: all) change the defaults.
+Exit code 0 on success, 1 with the failed stage named.
+"""
+import os
+
+
+def main():
+    import json
+    import sys
+
+    from aeronc import impeller_job
+    from aeronc.errors import AeroNCError
+
+    try:
+        impeller_job.run(os.environ.get("AERONC_OUT", "out/impeller"),
+                         spec=json.loads(os.environ.get("AERONC_IMPELLER_SPEC") or "{}"),
+                         allowance=float(os.environ.get("AERONC_ALLOWANCE", "2.0")),
+                         stations=int(os.environ.get("AERONC_STATIONS", "24")),
+                         channels=int(os.environ.get("AERONC_CHANNELS", "0")))
+    except AeroNCError as e:  # a stage failed for a reason the user can act on: one line, no traceback
+        print("impeller run failed: {}".format(e), file=sys.stderr)
+        sys.stderr.flush()
+        os._exit(1)
+
+
+from aeronc.tests.script import run  # noqa: E402  (on the path from the installed addon)
+
+run(main)
