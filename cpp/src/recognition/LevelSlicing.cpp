@@ -79,11 +79,12 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
     // Material over the region starts above an underside between the slice and the top: a
-    // plane facing down, or a curved face (the vault of a hole across the axis) ending there.
+    // plane facing down, an inclined plane (a dovetail) or a curved face (the vault of a hole
+    // across the axis) ending there.
     std::vector<double> heights;
     for (int i = 0; i < faces_.size(); ++i) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(i)];
-        if (s.att != Attitude::Down && s.att != Attitude::Curved) continue;
+        if (s.att != Attitude::Down && s.att != Attitude::Curved && s.att != Attitude::Inclined) continue;
         if (!(s.hi > z + tol && s.hi < top - tol)) continue;
         // Over the region at all: its box seen along the axis overlaps the region's.
         const Vec3 &a = faces_[i].boxMin, &b = faces_[i].boxMax;
