@@ -124,7 +124,7 @@ std::vector<Pass> passesOf(const PocketUnit& unit, const PocketParameters& p) {
 }
 
 struct PassPlan {
-    clip::Paths region, centres;
+    clip::Paths centres;
     ClearingPlan plan;
 };
 
@@ -156,38 +156,55 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     // Over a lower island's top the tool's flat reaches past its edge by a quarter of its width.
     const double margin = 0.25 * std::max(R - cutter.cornerRadius, 0.1 * R);
 
+    // The tool-centre region with the islands in the way (and the material they leave for a
+    // plunge), once per set of islands.
+    struct Centres {
+        clip::Paths centres, entryArea;
+    };
+    std::map<std::vector<bool>, Centres> centresBySet;
+    auto centresOf = [&](const std::vector<bool>& present) -> const Centres& {
+        const auto found = centresBySet.find(present);
+        if (found != centresBySet.end()) return found->second;
+        PocketUnit inWay = unit;
+        inWay.islands.clear();
+        for (std::size_t i = 0; i < unit.islands.size(); ++i)
+            if (present[i]) inWay.islands.push_back(unit.islands[i]);
+        const PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
+        Centres c;
+        c.centres = clip::offset(area.region, -off, tol);
+        if (!(clip::area(c.centres) > 0))
+            throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
+                             ") does not fit in the pocket");
+        // Beyond an open edge a plunge meets no material.
+        if (!unit.openEdges.empty())
+            c.entryArea = clip::subtract(c.centres, clip::offset(area.material, R + 2 * tol, tol));
+        return centresBySet.emplace(present, std::move(c)).first->second;
+    };
     std::map<std::pair<std::vector<bool>, std::vector<bool>>, PassPlan> plans;
     auto planOf = [&](const Pass& ps) -> const PassPlan& {
         const auto key = std::make_pair(ps.present, ps.faced);
         const auto found = plans.find(key);
         if (found != plans.end()) return found->second;
-        PocketUnit inWay = unit;
-        inWay.islands.clear();
-        clip::Paths faced;
-        for (std::size_t i = 0; i < unit.islands.size(); ++i) {
-            if (ps.present[i]) inWay.islands.push_back(unit.islands[i]);
-            if (!ps.faced.empty() && ps.faced[i]) faced.push_back(clip::toPath(unit.islands[i]));
-        }
-        const PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
+        const Centres& whole = centresOf(ps.present);
         PassPlan pp;
-        pp.region = area.region;
-        if (!faced.empty()) {
-            for (auto& f : faced)
-                if (!ClipperLib::Orientation(f)) ClipperLib::ReversePath(f);
-            pp.region = clip::intersect(pp.region, clip::offset(faced, off + margin, tol));
-        }
-        pp.centres = clip::offset(pp.region, -off, tol);
-        if (!(clip::area(pp.centres) > 0)) {
-            if (!faced.empty())
+        pp.centres = whole.centres;
+        clip::Paths entryArea = whole.entryArea;
+        if (!ps.faced.empty()) {
+            // Round the lower islands only: the centres within the margin of them.
+            clip::Paths faced;
+            for (std::size_t i = 0; i < unit.islands.size(); ++i)
+                if (ps.faced[i]) {
+                    clip::Path f = clip::toPath(unit.islands[i]);
+                    if (!ClipperLib::Orientation(f)) ClipperLib::ReversePath(f);
+                    faced.push_back(f);
+                }
+            const clip::Paths near = clip::offset(faced, margin, tol);
+            pp.centres = clip::intersect(whole.centres, near);
+            if (!entryArea.empty()) entryArea = clip::intersect(entryArea, near);
+            if (!(clip::area(pp.centres) > 0))
                 throw inputError("the cutter (D " + mm(cutter.diameter) + ") cannot reach the top of a lower island at " +
                                  mm(ps.level));
-            throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
-                             ") does not fit in the pocket");
         }
-        // Beyond an open edge a plunge meets no material.
-        clip::Paths entryArea;
-        if (!unit.openEdges.empty())
-            entryArea = clip::subtract(pp.centres, clip::offset(area.material, R + 2 * tol, tol));
         pp.plan = planClearing(pp.centres, pp.centres, entryArea, o);
         return plans.emplace(key, std::move(pp)).first->second;
     };
