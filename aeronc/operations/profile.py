@@ -65,11 +65,20 @@ class Profile(MachiningOperation):
         out = []
         runs = wall_runs(contour, unit.get("openEdges") or []) if len(contour) >= 3 else []
         ccw = signed_area(contour) > 0 if len(contour) >= 3 else True
+        walls = []  # (drive, closed, side)
         for run, closed in runs:
             side = "inside" if closed else "left" if ccw else "right"  # the pocket's side of the wall
-            out.append(dict(base, contour=run, closed=closed, side=side))
+            walls.append((run, closed, side))
         for island in unit.get("islands") or []:
-            out.append(dict(base, contour=[list(p) for p in island], closed=True, side="outside"))
+            walls.append(([list(p) for p in island], True, "outside"))
+        # Each wall's leads keep as clear of the element's other walls as of its own.
+        as_polyline = [w + [w[0]] if closed else w for w, closed, _ in walls]
+        for k, (run, closed, side) in enumerate(walls):
+            others = [p for j, p in enumerate(as_polyline) if j != k]
+            data = dict(base, contour=run, closed=closed, side=side)
+            if others:
+                data["clearOf"] = others
+            out.append(data)
         if not out:
             raise ValueError("{}: no wall to profile (the contour is open all round)".format(obj.Label))
         for i, data in enumerate(out):

@@ -130,8 +130,9 @@ struct Cut {
 
 class Leads {
 public:
-    Leads(const Polyline& drive, bool closed, ToolSide side, double d, const ProfileParameters& p)
-        : drive_(drive), closed_(closed), side_(side), d_(d), p_(p) {
+    Leads(const Polyline& drive, bool closed, ToolSide side, double d, const ProfileParameters& p,
+          const std::vector<Polyline>& clearOf)
+        : drive_(drive), closed_(closed), side_(side), d_(d), p_(p), clearOf_(clearOf) {
         if (closed) {
             region_ = {clip::toPath(drive)};
             if (!ClipperLib::Orientation(region_[0])) ClipperLib::ReversePath(region_[0]);  // for contains()
@@ -180,6 +181,8 @@ private:
             const double dist = closed_ ? clip::nearestOnLoop(drive_, q).distance : project(drive_, q).distance;
             if (dist < d_ - tol) return false;
             if (closed_ && (clip::contains(region_, q) != (side_ == ToolSide::Inside)) && dist > tol) return false;
+            for (const Polyline& wall : clearOf_)
+                if (project(wall, q).distance < d_ - tol) return false;
         }
         return true;
     }
@@ -189,8 +192,63 @@ private:
     ToolSide side_;
     double d_;
     const ProfileParameters& p_;
+    const std::vector<Polyline>& clearOf_;
     clip::Paths region_;
 };
+
+// The stretches of a path (closed: ending where it starts) that keep at least `keep` from every
+// polyline of clearOf: the cutter runs along a wall only where it fits beside the element's
+// other walls. Segments are split where the distance (1-Lipschitz along them) could dip below.
+std::vector<Polyline> clearStretches(const Polyline& path, const std::vector<Polyline>& clearOf, double keep) {
+    if (clearOf.empty() || path.size() < 2) return {path};
+    auto clearance = [&](const Point& q) {
+        double d = 1e300;
+        for (const Polyline& wall : clearOf) d = std::min(d, project(wall, q).distance);
+        return d;
+    };
+    std::vector<Point> pts;
+    std::vector<bool> good;
+    auto add = [&](const Point& q, double c) { pts.push_back(q), good.push_back(c >= keep); };
+    double ca = clearance(path[0]);
+    add(path[0], ca);
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        const Point a = path[i - 1], b = path[i];
+        const double cb = clearance(b);
+        const double len = clip::distance(a, b);
+        // Nowhere below keep between a and b when (ca + cb - len) / 2 >= keep.
+        if ((ca + cb - len) / 2 < keep && len > 0.05) {
+            const int n = int(std::ceil(len / 0.05));
+            for (int k = 1; k < n; ++k) {
+                const Point q{a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n};
+                add(q, clearance(q));
+            }
+        }
+        add(b, cb);
+        ca = cb;
+    }
+    if (std::all_of(good.begin(), good.end(), [](bool g) { return g; })) return {path};
+    const bool closed = clip::distance(path.front(), path.back()) < 1e-9;
+    std::size_t start = 0;
+    if (closed) {
+        pts.pop_back(), good.pop_back();  // the closing point is the first one
+        while (good[start]) ++start;      // from a point in the way, round again to it
+    }
+    std::vector<Polyline> out;
+    Polyline run;
+    const std::size_t n = pts.size();
+    for (std::size_t k = 0; k <= n; ++k) {
+        const std::size_t j = closed ? (start + k) % n : k;
+        if (k < n && good[j]) {
+            run.push_back(pts[j]);
+            continue;
+        }
+        if (run.size() >= 2) out.push_back(run);
+        run.clear();
+        if (!closed && k >= n) break;
+        if (closed && k == n) break;
+    }
+    return out;
+}
 
 // A closed loop as a path from the middle of its longest edge round to there again.
 Polyline fromLongestEdge(const Loop& loop) {
@@ -246,7 +304,14 @@ Toolpath profile(const ProfileUnit& unit, const Cutter& cutter, const ProfilePar
             if ((side == ToolSide::Left) == p.climb) std::reverse(path.begin(), path.end());
             cuts.push_back({path, {}, {}});
         }
-        const Leads leads(drive, unit.closed, side, d, p);
+        // Where the element's other walls leave the cutter no room, the pass is broken off.
+        if (!unit.clearOf.empty()) {
+            std::vector<Cut> kept;
+            for (const Cut& c : cuts)
+                for (Polyline& piece : clearStretches(c.path, unit.clearOf, d - tol)) kept.push_back({piece, {}, {}});
+            cuts = std::move(kept);
+        }
+        const Leads leads(drive, unit.closed, side, d, p, unit.clearOf);
         for (Cut& c : cuts) leads.add(c, leadRadius);
         return cuts;
     };
@@ -268,8 +333,14 @@ Toolpath profile(const ProfileUnit& unit, const Cutter& cutter, const ProfilePar
     const double approach = std::min(p.clearance, 1.0);
     Toolpath tp;
     MoveWriter w(tp);
-    const Cut& c0 = cutsOfLevel.front()->front();
-    const Point& first = c0.leadIn.empty() ? c0.path.front() : c0.leadIn.front();
+    const Cut* c0 = nullptr;
+    for (const auto* cuts : cutsOfLevel)
+        if (!cuts->empty()) {
+            c0 = &cuts->front();
+            break;
+        }
+    if (!c0) throw inputError("the cutter finds no room along the wall beside the element's other walls");
+    const Point& first = c0->leadIn.empty() ? c0->path.front() : c0->leadIn.front();
     w.rapid(first[0], first[1], hs.safe);
     for (std::size_t i = 0; i < levels.size(); ++i)
         for (const Cut& c : *cutsOfLevel[i]) {

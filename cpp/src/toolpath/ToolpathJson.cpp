@@ -7,6 +7,8 @@
 #include <aeronc/toolpath/Profile.h>
 #include <aeronc/toolpath/RestCorners.h>
 
+#include "Validate.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -29,7 +31,8 @@ std::set<std::string> keysOf(const std::string& op) {
     if (op == "pocket" || op == "rest") add({"contour", "islands", "islandTops", "faceIslandTops", "openEdges", "floorFilletRadius", "finishingPass",
                                              "finishingAllowance"});
     if (op == "rest") add({"previousCutter"});
-    if (op == "profile") add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit", "floorFilletRadius"});
+    if (op == "profile")
+        add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit", "floorFilletRadius", "clearOf"});
     if (op == "helix") add({"holes", "finishingAllowance", "breakThrough"});
     if (op == "drill") add({"holes", "retractHeight", "peck", "dwell", "pointAngle", "breakThrough"});
     return k;
@@ -151,6 +154,18 @@ Toolpath compute(const json& j) {
         u.bottom = required(j, "bottom");
         get(j, "floorFilletRadius", u.floorFilletRadius);
         if (u.floorFilletRadius < 0) throw inputError("floorFilletRadius must be at least 0");
+        if (j.contains("clearOf")) {
+            if (!j.at("clearOf").is_array()) throw inputError("\"clearOf\" must be a list of polylines");
+            for (const auto& w : j.at("clearOf")) {
+                Loop l = loop(w);
+                if (l.size() < 2) throw inputError("a polyline of \"clearOf\" needs two points at least");
+                for (const Point& q : l) {
+                    requireFinite(q[0], "a point of clearOf");
+                    requireFinite(q[1], "a point of clearOf");
+                }
+                u.clearOf.push_back(std::move(l));
+            }
+        }
         if (j.contains("startLimit")) u.startLimit = point(j.at("startLimit"));
         if (j.contains("endLimit")) u.endLimit = point(j.at("endLimit"));
         p.side = u.closed ? ToolSide::Outside : ToolSide::Left;

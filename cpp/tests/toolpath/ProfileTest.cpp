@@ -213,3 +213,71 @@ TEST(Profile, LeadsKeepTheAllowanceAcrossANarrowSlot) {
     }
     EXPECT_GT(leadMoves, 0u);
 }
+
+// Two bosses 20 mm in front of the long walls' middles: a D16 cutter's quarter-arc lead of
+// radius R would come 3.8 mm from one; told of them (clearOf), the leads keep R + allowance from
+// them too (the path itself passes 11.8 mm off).
+TEST(Profile, LeadsKeepClearOfTheElementsOtherWalls) {
+    const Loop drive = rectangle(0, 0, 100, 60);
+    const std::vector<Loop> bosses{rectangle(40, 20, 60, 26), rectangle(40, 34, 60, 40)};
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    p.radialAllowance = 0.2;
+    p.stepDown = 5;
+    ProfileUnit u{drive, true, {}, {}, 0, -5};
+    auto nearest = [&](const Toolpath& t) {
+        double d = 1e9;
+        for (std::size_t i = 1; i < t.moves.size(); ++i) {
+            const Move& a = t.moves[i - 1];
+            const Move& b = t.moves[i];
+            if (b.kind == Move::Kind::Rapid || std::max(a.h, b.h) >= 0) continue;
+            for (const Loop& boss : bosses) d = std::min(d, loopSegmentDistance(boss, {a.u, a.v}, {b.u, b.v}));
+        }
+        return d;
+    };
+    // Alone the lead comes near a boss (the check can fail) ...
+    EXPECT_LT(nearest(profile(u, {16, 0}, p)), 8.2 - 0.01);
+    // ... told of the bosses, never nearer than R + allowance.
+    for (const Loop& b : bosses) {
+        std::vector<Point> closed(b.begin(), b.end());
+        closed.push_back(b.front());
+        u.clearOf.push_back(closed);
+    }
+    EXPECT_GE(nearest(profile(u, {16, 0}, p)), 8.2 - p.chordTolerance - 1e-9);
+}
+
+// A boss 10 mm from the wall leaves a D16 cutter no room there: told of it, the pass breaks off
+// on both sides of it, never nearer the boss than R + allowance, and runs on elsewhere.
+TEST(Profile, PassBreaksOffWhereAnotherWallLeavesNoRoom) {
+    const Loop drive = rectangle(0, 0, 100, 60);
+    const Loop boss = rectangle(40, 10, 60, 20);
+    ProfileParameters p;
+    p.side = ToolSide::Inside;
+    p.radialAllowance = 0.2;
+    p.stepDown = 5;
+    ProfileUnit u{drive, true, {}, {}, 0, -5};
+    u.clearOf = {{{40, 10}, {60, 10}, {60, 20}, {40, 20}, {40, 10}}};
+    const Toolpath t = profile(u, {16, 0}, p);
+    double nearest = 1e9, length = 0;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move& a = t.moves[i - 1];
+        const Move& b = t.moves[i];
+        if (b.kind == Move::Kind::Rapid || std::max(a.h, b.h) >= 0) continue;
+        nearest = std::min(nearest, loopSegmentDistance(boss, {a.u, a.v}, {b.u, b.v}));
+        length += dist({a.u, a.v}, {b.u, b.v});
+    }
+    EXPECT_GE(nearest, 8.2 - p.chordTolerance - 1e-9);
+    // Most of the 2 (83.6 + 43.6) mm round is still cut.
+    EXPECT_GT(length, 200);
+    // Without it the pass runs 1.8 mm from the boss (the check can fail).
+    u.clearOf.clear();
+    const Toolpath plain = profile(u, {16, 0}, p);
+    double plainNearest = 1e9;
+    for (std::size_t i = 1; i < plain.moves.size(); ++i) {
+        const Move& a = plain.moves[i - 1];
+        const Move& b = plain.moves[i];
+        if (b.kind == Move::Kind::Rapid || std::max(a.h, b.h) >= 0) continue;
+        plainNearest = std::min(plainNearest, loopSegmentDistance(boss, {a.u, a.v}, {b.u, b.v}));
+    }
+    EXPECT_LT(plainNearest, 2);
+}

@@ -13,6 +13,9 @@ struct ProfileUnit {
     // Of the floor's edge along the wall: near the floor the cutter keeps out of it, level by
     // level (FloorFillet.h wallFilletOffset).
     double floorFilletRadius = 0;
+    // The element's other walls (its other wall runs and its islands, closed loops with the
+    // first point repeated): the leads keep the cutter as far from them as from the drive.
+    std::vector<std::vector<Point>> clearOf;
 };
 
 // The side of the drive that the cutter runs on, the side of the material it removes.
