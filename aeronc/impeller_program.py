@@ -238,7 +238,7 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
     # and the widest engagement of its steps meet the limits (as Optimise cutting does).
     cuts = {}
     for s in c.steps:
-        if s["operation"] in ("face", "drill", "bore") and s["operation"] in ops:
+        if s["operation"] in ("face", "drill", "bore") and s["operation"] in ops and s.get("tool"):
             data = kb_cutting_data(kb, material, machine, s, _cut_length(ops[s["operation"]]["moves"]))
             data["steps"] = [s["position"]]
             c.cutting.setdefault(s["tool"]["id"], data)
