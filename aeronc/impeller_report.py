@@ -124,16 +124,31 @@ def _cutting(run):
 
 def _checks(run):
     c, a = run["check"], run["recheck"]
-    rows = [("toolpaths as computed (every channel kind)", c["positions"], "{:.5f}".format(c["maxGougeMm"]),
-             c["holderCollisions"], c["tilted"],
-             _verdict(c["maxGougeMm"] <= LIMIT_GOUGE_MM and c["holderCollisions"] == 0)),
-            ("the Job's program, written as APT and read back", a["positions"], "{:.5f}".format(a["maxGougeMm"]),
-             a["holderCollisions"], "&ndash;",
-             _verdict(a["maxGougeMm"] <= LIMIT_GOUGE_MM and a["holderCollisions"] == 0))]
-    return ("<h2>Gouge and holder checks (OCCT distance queries; gouge limit {} mm)</h2>".format(LIMIT_GOUGE_MM) +
-            _table(["program", "cutting positions", "deepest gouge (mm)", "holder collisions", "tilted", ""],
-                   rows, numeric=(1, 2, 3, 4)) +
-            "<p class='small'>Rapids between passes are not checked.</p>")
+    parts = c.get("parts") or {}
+    five, axial, rapids = parts.get("fiveAxis") or c, parts.get("axial") or {}, parts.get("rapids") or {}
+    rows = [("5-axis operations as computed (every channel kind)", five["positions"],
+             "{:.5f}".format(five["maxGougeMm"]), five["holderCollisions"], five.get("tilted", 0),
+             "{} / {}".format(five.get("links", 0), five.get("linkCollisions", 0)),
+             _verdict(five["maxGougeMm"] <= LIMIT_GOUGE_MM and five["holderCollisions"] == 0
+                      and not five.get("linkCollisions"))),
+            ("their rapids against the blank", "&ndash;", "&ndash;", "&ndash;", "&ndash;",
+             "{} / {}".format(rapids.get("checked", 0), rapids.get("collisions", 0)),
+             _verdict(not rapids.get("collisions")))]
+    if axial:
+        rows.append(("turning, facing, drilling, boring as computed (against every face)", axial["positions"],
+                     "{:.5f}".format(axial["maxGougeMm"]), axial["holderCollisions"], "&ndash;", "&ndash;",
+                     _verdict(axial["maxGougeMm"] <= LIMIT_GOUGE_MM and axial["holderCollisions"] == 0)))
+    rows.append(("the Job's program (posted operations), written as APT and read back", a["positions"],
+                 "{:.5f}".format(a["maxGougeMm"]), a["holderCollisions"], "&ndash;", "&ndash;",
+                 _verdict(a["maxGougeMm"] <= LIMIT_GOUGE_MM and a["holderCollisions"] == 0)))
+    notes = parts.get("axialNotes") or []
+    return ("<h2>Gouge, holder and link checks (OCCT distance queries; gouge limit {} mm)</h2>".format(
+                LIMIT_GOUGE_MM) +
+            _table(["program", "cutting positions", "deepest gouge (mm)", "holder collisions", "tilted",
+                    "links checked / touching", ""], rows, numeric=(1, 2, 3, 4)) +
+            "<p class='small'>Feed links are checked against the part, rapids against the blank. The read-back "
+            "check measures every cutting position of the posted operations against the blades and the hub."
+            "{}</p>".format("".join(" " + _e(n) + "." for n in notes)))
 
 
 def _program(run):
@@ -152,8 +167,9 @@ def _display_note():
     return ("<h2>What FreeCAD shows</h2><p class='small'>Each operation's Path holds G0/G1 moves to the tool tip "
             "(X Y Z) with the tool axis as U V W on every move; FreeCAD saves them with the document and AeroNC's "
             "posts read the axis from there. FreeCAD's 3-D view draws the tool tip's path only, not the axis; "
-            "FreeCAD's own posts and simulator ignore U V W. Steps without a toolpath (turning, facing, drilling, "
-            "boring, fillet finishing) are operations switched off, with the reason in their Note.</p>")
+            "FreeCAD's own posts and simulator ignore U V W. Every step has its toolpath; the lathe's turning moves "
+            "and what is cut from the back face in a second setup (facing, drilling, boring from the back) are "
+            "operations switched off and not posted, with the reason in their Note.</p>")
 
 
 def render(run):

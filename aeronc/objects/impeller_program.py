@@ -44,6 +44,13 @@ class ImpellerProgram(BaseProxy):
                          read_only=True)
         declare_property(obj, "App::PropertyInteger", "PositionsChecked", g, "Cutting positions checked",
                          read_only=True)
+        declare_property(obj, "App::PropertyInteger", "LinksChecked", g,
+                         "Links checked: feed approaches and retracts against the part, rapids against the blank",
+                         read_only=True)
+        declare_property(obj, "App::PropertyInteger", "LinkCollisions", g,
+                         "Feed links that touch the part and rapids that enter the blank", read_only=True)
+        declare_property(obj, "App::PropertyString", "Checks", g,
+                         "The core's check figures: 5-axis, rapids, axial steps (JSON)", hidden=True)
         g = "Program"
         declare_property(obj, "App::PropertyString", "ProgramName", g, "Name of the posted program", "IMPELLER")
         declare_property(obj, "App::PropertyString", "ProgramFile", g,

@@ -3,9 +3,9 @@
 Its Path is the core's 5-axis toolpath: G0/G1 to the tool tip (X Y Z) with the tool axis on
 every move as U V W (aeronc/post/orientation.py), which Path.Command keeps and the document
 saves; AeroNC's posts read the axis from there. FreeCAD's 3-D view draws X Y Z only: the
-tip's path, not the axis. Steps for which AeroNC makes no toolpath (turning, facing, drilling,
-boring, fillet finishing) are operations with an empty Path, switched off, with the reason in
-Note. The Path is made by aeronc.impeller_program, never by recompute: the toolpaths come
+tip's path, not the axis. Every step has its toolpath; the lathe's turning and what a step cuts
+from the back face in a second setup (Operation "<step>_back") are switched off and kept out of
+the 5-axis program, with the reason in Note. The Path is made by aeronc.impeller_program, never by recompute: the toolpaths come
 from the whole route at once and take seconds to minutes.
 """
 from aeronc.objects.base import BaseProxy, declare_property, proxy_type
@@ -41,7 +41,7 @@ class ImpellerOperation(BaseProxy):
         declare_property(obj, "App::PropertyLength", "StepAllowance", g, "Stock the step leaves", read_only=True)
         declare_property(obj, "App::PropertyIntegerList", "FaceNumbers", g, "FaceN of the part the step machines",
                          read_only=True)
-        declare_property(obj, "App::PropertyString", "Note", g, "Why the step has no toolpath, if it has none",
+        declare_property(obj, "App::PropertyString", "Note", g, "Why the step is not posted or has no toolpath",
                          read_only=True)
         g = "Result"
         declare_property(obj, "App::PropertyInteger", "MoveCount", g, "Moves of the toolpath", read_only=True)

@@ -13,6 +13,7 @@
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/core/Error.h>
+#include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/post/Apt.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
@@ -21,6 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -40,39 +42,58 @@ double number(const nlohmann::json& j, const char* key, const std::string& where
     return j[key].get<double>();
 }
 
-// A cutter of the request ({"tool": id, "number", "rpm", "feed"}) with its shape from the
-// knowledge base's tool of that id.
+// The knowledge base's tool named by a request's cutter ({"tool": id, "number", "rpm", "feed"}).
+const impeller::CuttingTool& requestedTool(const nlohmann::json& r, const std::string& where,
+                                           const std::vector<impeller::CuttingTool>& tools) {
+    if (!r.is_object()) throw inputError(where + " must be an object {tool, number, rpm, feed}");
+    if (!r.contains("tool") || !r["tool"].is_string()) throw inputError(where + ": \"tool\" must be a tool id");
+    const std::string id = r["tool"].get<std::string>();
+    for (const auto& c : tools)
+        if (c.id == id) return c;
+    throw inputError(where + ": no tool " + id + " in the knowledge base");
+}
+
+// A ball or tapered ball cutter of the request with its shape from the knowledge base's tool.
+impellerpath::CutterShape ballCutter(const nlohmann::json& r, const std::string& where,
+                                     const std::vector<impeller::CuttingTool>& tools) {
+    const auto& t = requestedTool(r, where, tools);
+    if (t.type != "ball" && t.type != "tapered_ball")
+        throw inputError(where + ": tool " + t.id + " is a " + t.type + " tool; the channels need a ball or tapered ball");
+    impellerpath::CutterShape c;
+    c.id = t.id;
+    c.number = static_cast<int>(number(r, "number", where));
+    c.tipRadius = t.diameter / 2, c.taperDeg = t.taperDeg, c.fluteLength = t.fluteLength, c.reach = t.reach;
+    c.shankRadius = t.shankDiameter / 2;
+    c.rpm = number(r, "rpm", where), c.feed = number(r, "feed", where);
+    return c;
+}
+
 impellerpath::CutterShape cutterOf(const nlohmann::json& request, const char* role,
                                    const std::vector<impeller::CuttingTool>& tools) {
     if (!request.contains(role) || !request[role].is_object()) throw inputError(std::string("impeller toolpaths: no ") + role);
-    const auto& r = request[role];
-    const std::string where = std::string("impeller toolpaths: ") + role;
-    if (!r.contains("tool") || !r["tool"].is_string()) throw inputError(where + ": \"tool\" must be a tool id");
-    const std::string id = r["tool"].get<std::string>();
-    const impeller::CuttingTool* t = nullptr;
-    for (const auto& c : tools)
-        if (c.id == id) t = &c;
-    if (!t) throw inputError(where + ": no tool " + id + " in the knowledge base");
-    if (t->type != "ball" && t->type != "tapered_ball")
-        throw inputError(where + ": tool " + id + " is a " + t->type + " tool; the channels need a ball or tapered ball");
-    impellerpath::CutterShape c;
-    c.id = id;
-    c.number = static_cast<int>(number(r, "number", where));
-    c.tipRadius = t->diameter / 2, c.taperDeg = t->taperDeg, c.fluteLength = t->fluteLength, c.reach = t->reach;
-    c.shankRadius = t->shankDiameter / 2;
-    c.rpm = number(r, "rpm", where), c.feed = number(r, "feed", where);
-    return c;
+    return ballCutter(request[role], std::string("impeller toolpaths: ") + role, tools);
+}
+
+// A flat-bottomed cutter of the request (face mill, drill, flat end mill) for the axial steps.
+impellerpath::CutterShape flatCutterOf(const nlohmann::json& r, const std::string& where,
+                                       const std::vector<impeller::CuttingTool>& tools) {
+    const auto& t = requestedTool(r, where, tools);
+    if (t.type == "ball" || t.type == "tapered_ball")
+        throw inputError(where + ": tool " + t.id + " is a " + t.type + " tool; this step needs a flat-bottomed tool");
+    return impellerpath::flatCutter(t.id, static_cast<int>(number(r, "number", where)), t.diameter, t.fluteLength,
+                                    t.reach, number(r, "rpm", where), number(r, "feed", where));
 }
 
 nlohmann::json cutterToJson(const impellerpath::CutterShape& c) {
     return {{"id", c.id},           {"number", c.number},   {"tipRadius", c.tipRadius}, {"taperDeg", c.taperDeg},
             {"fluteLength", c.fluteLength}, {"shankRadius", c.shankRadius}, {"reach", c.reach}, {"rpm", c.rpm},
-            {"feed", c.feed}};
+            {"feed", c.feed}, {"flat", c.flat}};
 }
 
 nlohmann::json checkToJson(const impellerpath::CheckResult& r) {
     return {{"maxGougeMm", r.maxGouge}, {"holderCollisions", r.holderCollisions}, {"tilted", r.tilted},
-            {"positions", r.positions}, {"worstAt", {r.worstAt[0], r.worstAt[1], r.worstAt[2]}}};
+            {"positions", r.positions}, {"worstAt", {r.worstAt[0], r.worstAt[1], r.worstAt[2]}},
+            {"links", r.links}, {"linkCollisions", r.linkCollisions}};
 }
 
 impellerpath::CutterShape cutterFromJson(const nlohmann::json& j) {
@@ -83,6 +104,7 @@ impellerpath::CutterShape cutterFromJson(const nlohmann::json& j) {
     c.tipRadius = number(j, "tipRadius", where), c.taperDeg = number(j, "taperDeg", where);
     c.fluteLength = number(j, "fluteLength", where), c.shankRadius = number(j, "shankRadius", where);
     c.reach = number(j, "reach", where);
+    c.flat = j.value("flat", false);
     return c;
 }
 
@@ -190,6 +212,23 @@ void bindImpeller(py::module_& m) {
                 const auto tools = kb::impellerTools(kb);
                 const auto rougher = cutterOf(request, "rougher", tools);
                 const auto finisher = cutterOf(request, "finisher", tools);
+                std::optional<impellerpath::CutterShape> filletBall;
+                if (request.contains("filletBall") && !request["filletBall"].is_null())
+                    filletBall = ballCutter(request["filletBall"], "impeller toolpaths: filletBall", tools);
+                // The axial steps (turning, facing, drilling, boring), when the request has "axial".
+                std::optional<impellerpath::AxialCutters> axialCutters;
+                impellerpath::AxialOptions axialOpt;
+                if (request.contains("axial") && !request["axial"].is_null()) {
+                    const auto& a = request["axial"];
+                    const std::string aw = "impeller toolpaths: axial";
+                    if (!a.is_object()) throw inputError(aw + " must be an object {faceMill, drill, boringMill}");
+                    axialCutters.emplace();
+                    for (auto [key, slot] : {std::pair{"faceMill", &axialCutters->faceMill},
+                                             {"drill", &axialCutters->drill}, {"boringMill", &axialCutters->boringMill}})
+                        if (a.contains(key) && !a[key].is_null()) *slot = flatCutterOf(a[key], aw + ": " + key, tools);
+                    if (a.contains("drillAllowance")) axialOpt.drillAllowance = number(a, "drillAllowance", aw);
+                    if (!(axialOpt.drillAllowance >= 0)) throw inputError(aw + ": drillAllowance must be >= 0");
+                }
                 impellerpath::PathOptions opt;
                 const auto o = request.value("options", nlohmann::json::object());
                 const std::string where = "impeller toolpaths: options";
@@ -220,19 +259,37 @@ void bindImpeller(py::module_& m) {
                             const TopoDS_Shape part = partFromBrepText(brep);
                             const auto features = impeller::recogniseImpeller(part);
                             const auto dims = impeller::measureImpeller(part, features);
-                            const auto prog = impellerpath::impellerToolpaths(part, features, dims, rougher, finisher, opt);
-                            auto ops = nlohmann::json::array();
-                            for (const auto& op : prog.operations) {
-                                // Moves as the posts take them: the tool tip and the unit axis.
-                                auto moves = nlohmann::json::array();
-                                for (const auto& mv : op.moves) {
-                                    const auto tip = mv.centre - op.cutter.tipRadius * mv.axis;
-                                    moves.push_back({tip.x(), tip.y(), tip.z(), mv.axis.x(), mv.axis.y(), mv.axis.z(),
-                                                     mv.rapid ? 1 : 0});
+                            const auto prog = impellerpath::impellerToolpaths(
+                                part, features, dims, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
+                            // Moves as the posts take them: the tool tip and the unit axis.
+                            auto opsToJson = [](const std::vector<impellerpath::Operation>& operations) {
+                                auto ops = nlohmann::json::array();
+                                for (const auto& op : operations) {
+                                    auto moves = nlohmann::json::array();
+                                    for (const auto& mv : op.moves) {
+                                        const auto tip = mv.centre - op.cutter.tipRadius * mv.axis;
+                                        moves.push_back({tip.x(), tip.y(), tip.z(), mv.axis.x(), mv.axis.y(),
+                                                         mv.axis.z(), mv.rapid ? 1 : 0});
+                                    }
+                                    ops.push_back({{"name", op.name}, {"cutter", cutterToJson(op.cutter)}, {"moves", moves}});
                                 }
-                                ops.push_back({{"name", op.name}, {"cutter", cutterToJson(op.cutter)}, {"moves", moves}});
+                                return ops;
+                            };
+                            // The rapids against the blank, as a program read back is checked.
+                            std::vector<std::pair<impellerpath::CutterShape, std::vector<impellerpath::Move>>> byOp;
+                            for (const auto& op : prog.operations) byOp.push_back({op.cutter, op.moves});
+                            const auto rapids = impellerpath::checkRapids(
+                                impeller::outerProfile(part, features, opt.blankAllowance), features, byOp,
+                                opt.rapidClearance - 1e-6);
+                            out = {{"operations", opsToJson(prog.operations)},
+                                   {"check", checkToJson(prog.check)},
+                                   {"rapids", {{"checked", rapids.links}, {"collisions", rapids.linkCollisions}}}};
+                            if (axialCutters) {
+                                const auto axial = impellerpath::axialToolpaths(part, features, dims, *axialCutters, axialOpt);
+                                out["axial"] = {{"operations", opsToJson(axial.operations)},
+                                                {"check", checkToJson(axial.check)},
+                                                {"notes", axial.notes}};
                             }
-                            out = {{"operations", ops}, {"check", checkToJson(prog.check)}};
                         },
                         "computing the impeller toolpaths");
                 }
@@ -241,10 +298,13 @@ void bindImpeller(py::module_& m) {
         },
         py::arg("brep_text"), py::arg("kb_path"), py::arg("sql_folder"), py::arg("request_json"),
         "5-axis toolpaths of the impeller in brep_text (docs/impeller.md §5). request_json: {rougher: {tool, "
-        "number, rpm, feed}, finisher: {...}, options: {roughAllowance, stepDown, stepOver, finishStep, stations, "
-        "safeDistance, maxTiltDeg, channels}}; the cutters' shapes come from the knowledge base's tools. Returns "
-        "JSON text: {operations: [{name, cutter, moves: [[x, y, z, i, j, k, rapid]]}], check: {maxGougeMm, "
-        "holderCollisions, tilted, positions, worstAt}}, moves as tool tip and unit tool axis.");
+        "number, rpm, feed}, finisher: {...}, filletBall: {...} (optional: finish_fillets), axial: {faceMill, drill, "
+        "boringMill: {...}, drillAllowance} (optional: turn, face, drill, bore, drill_back, bore_back), options: "
+        "{roughAllowance, stepDown, stepOver, finishStep, stations, safeDistance, maxTiltDeg, channels}}; the "
+        "cutters' shapes come from the knowledge base's tools. Returns JSON text: {operations: [{name, cutter, "
+        "moves: [[x, y, z, i, j, k, rapid]]}], check: {maxGougeMm, holderCollisions, tilted, positions, worstAt, "
+        "links, linkCollisions}, rapids: {checked, collisions}, axial: {operations, check, notes}}, moves as tool "
+        "tip and unit tool axis.");
 
     m.def(
         "impeller_check_apt",

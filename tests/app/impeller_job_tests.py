@@ -44,13 +44,16 @@ class ImpellerJobTest(unittest.TestCase):
         with open(os.path.join(self.out, "report.html")) as f:
             page = f.read()
         for text in ("Dimensions against the generator's truth", "Process route", "Cutting data from the "
-                     "cutting-parameter optimiser", "Gouge and holder checks", "features.png", "toolpaths.png",
+                     "cutting-parameter optimiser", "Gouge, holder and link checks", "features.png", "toolpaths.png",
                      "EM-BALL12", "TB-4-3"):
             self.assertIn(text, page)
         # Every dimension within 1e-3 mm of the truth, features exact, both checks pass.
         self.assertNotIn("FAIL", page)
-        # 5 dimensions, the features verdict, 6 blades, hub, bore, planes, 2 checks.
-        self.assertEqual(page.count('<span class="ok">pass</span>'), 5 + 1 + 6 + 3 + 2)
+        # 5 dimensions, the features verdict, 6 blades, hub, bore, planes, 4 checks (5-axis, their
+        # rapids, the axial steps, the program read back).
+        self.assertEqual(page.count('<span class="ok">pass</span>'), 5 + 1 + 6 + 3 + 4)
+        self.assertEqual(self.data["check"]["linkCollisions"], 0)
+        self.assertGreater(self.data["check"]["links"], 0)
         d, t = self.data["result"]["dimensions"], self.data["truth"]
         for key in impeller_job.DIMENSION_KEYS:
             self.assertAlmostEqual(d[key], t[key], delta=1e-3, msg=key)

@@ -6,6 +6,8 @@ whole program kept by save and reopen.
 A small impeller (3 + 3 blades) and coarse toolpaths (4 stations a pass, one channel) keep the
 suite quick; `scripts/run.sh impeller` programs the full 2 x 9 one."""
 import glob
+import json
+import math
 import os
 import shutil
 import tempfile
@@ -111,24 +113,79 @@ class ProgramImpellerTest(unittest.TestCase):
     def test_operations_in_route_order_with_5_axis_paths(self):
         ops = [o for o in pathcompat.job_operations(self.prog.Job) if is_impeller_operation(o)]
         route = impeller_program.route_of(self.prog)["steps"]
-        self.assertEqual([o.Position for o in ops], [s["position"] for s in route])
-        self.assertEqual([o.Operation for o in ops], [s["operation"] for s in route])
-        with_paths = [o for o in ops if len(o.Path.Commands)]
-        self.assertEqual([o.Operation for o in with_paths], ["rough_channels", "finish_blades", "finish_hub"])
-        for o in with_paths:
-            self.assertTrue(o.Active)
-            self.assertIsNotNone(o.ToolController)
-            tilted = 0
+        # Each route step in order, what a step cuts from the back face right after it.
+        self.assertEqual([o.Position for o in ops if not o.Operation.endswith("_back")],
+                         [s["position"] for s in route])
+        self.assertEqual([o.Operation for o in ops if not o.Operation.endswith("_back")],
+                         [s["operation"] for s in route])
+        for o in ops:
+            if o.Operation.endswith("_back"):
+                self.assertEqual(o.Position, ops[ops.index(o) - 1].Position)
+                self.assertEqual(o.Operation, ops[ops.index(o) - 1].Operation + "_back")
+        # Every step of the route has its toolpath now.
+        self.assertTrue(all(len(o.Path.Commands) and o.MoveCount == len(o.Path.Commands) for o in ops),
+                        [(o.Label, o.MoveCount) for o in ops])
+        five = [o for o in ops if o.Operation in impeller_program.FIVE_AXIS_STEPS]
+        self.assertEqual([o.Operation for o in five], ["rough_channels", "finish_blades", "finish_hub",
+                                                       "finish_fillets"])
+        axis = impeller_program_result(self.prog)["axis"]["direction"]
+        for o in ops:
+            axial = o.Operation not in impeller_program.FIVE_AXIS_STEPS
+            tilted, against = 0, 0
             for cmd in o.Path.Commands:
                 p = cmd.Parameters
                 self.assertTrue(all(k in p for k in "XYZUVW"), cmd)
                 self.assertAlmostEqual(p["U"] ** 2 + p["V"] ** 2 + p["W"] ** 2, 1.0, delta=1e-5)
-                tilted += p["W"] < 0.9999
-            self.assertGreater(tilted, 0, o.Label)  # 5-axis: the axis leaves +Z
-        for o in ops:
-            if not len(o.Path.Commands):
+                dot = p["U"] * axis[0] + p["V"] * axis[1] + p["W"] * axis[2]
+                tilted += abs(dot) < 0.9999
+                against += dot < 0
+            if not axial:
+                self.assertGreater(tilted, 0, o.Label)  # 5-axis: the axis leaves the impeller's
+                self.assertTrue(o.Active, o.Label)
+                self.assertIsNotNone(o.ToolController)
+                self.assertIn(o.Label, self.prog.Posted)
+            elif o.Operation == "turn":  # the lathe: in a meridian plane, not posted
                 self.assertFalse(o.Active)
-                self.assertTrue(o.Note, o.Label)
+                self.assertIn("not posted", o.Note)
+                self.assertNotIn(o.Label, self.prog.Posted)
+            elif o.Operation.endswith("_back"):  # second setup: every axis against the impeller's
+                self.assertEqual(against, len(o.Path.Commands), o.Label)
+                self.assertFalse(o.Active)
+                self.assertIn("second setup", o.Note)
+                self.assertNotIn(o.Label, self.prog.Posted)
+            else:  # facing, drilling, boring from the front: a fixed axis along the impeller's, posted
+                self.assertEqual((tilted, against), (0, 0), o.Label)
+                self.assertTrue(o.Active, o.Label)
+                self.assertIsNotNone(o.ToolController)
+                self.assertIn(o.Label, self.prog.Posted)
+
+    def test_new_steps_checked_without_gouge(self):
+        checks = json.loads(self.prog.Checks)
+        five, axial, rapids = checks["fiveAxis"], checks["axial"], checks["rapids"]
+        # The fillet finishing is among the 5-axis positions: more than roughing, blades and hub alone.
+        fillets = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "finish_fillets"][0]
+        self.assertGreater(fillets.MoveCount, 0)
+        self.assertLessEqual(five["maxGougeMm"], 0.002)
+        self.assertEqual(five["holderCollisions"], 0)
+        self.assertGreater(five["links"], 0)
+        self.assertEqual(five["linkCollisions"], 0)
+        self.assertGreater(rapids["checked"], 0)
+        self.assertEqual(rapids["collisions"], 0)
+        axial_moves = sum(o.MoveCount for o in pathcompat.job_operations(self.prog.Job)
+                          if o.Operation not in impeller_program.FIVE_AXIS_STEPS)
+        self.assertGreater(axial["positions"], 0)
+        self.assertLessEqual(axial["positions"], axial_moves)
+        self.assertLessEqual(axial["maxGougeMm"], 0.002)
+        self.assertEqual(axial["holderCollisions"], 0)
+        self.assertEqual(self.prog.PositionsChecked, five["positions"] + axial["positions"])
+        self.assertEqual(self.prog.LinkCollisions, 0)
+        self.assertEqual(self.prog.LinksChecked, five["links"] + rapids["checked"])
+        # The bore is bored to its size: the boring tool's tip runs at the bore radius less its own.
+        bore = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "bore"][0]
+        r_tool = impeller_program.tool_library(self.kb)[bore.Tool]["diameter"] / 2
+        r_bore = self.truth["boreDiameter"] / 2
+        radii = [math.hypot(c.Parameters["X"], c.Parameters["Y"]) for c in bore.Path.Commands if c.Name == "G1"]
+        self.assertAlmostEqual(max(radii), r_bore - r_tool, delta=1e-3)
 
     def test_cutting_data_from_the_optimiser(self):
         cutting = cutting_of(self.prog)
@@ -198,7 +255,9 @@ class ProgramImpellerTest(unittest.TestCase):
             self.assertEqual(prog.Posted, posted)
             move = [o for o in pathcompat.job_operations(prog.Job) if len(o.Path.Commands)][0].Path.Commands[1]
             self.assertEqual(move.Parameters, first_move.Parameters)
-            self.assertEqual(len(impeller_program.route_of(prog)["steps"]), len(expected))
+            self.assertEqual(len(impeller_program.route_of(prog)["steps"]),
+                             len([o for o in pathcompat.job_operations(prog.Job) if not o.Operation.endswith("_back")]))
+            self.assertEqual(prog.Checks, self.prog.Checks)
         finally:
             FreeCAD.closeDocument(doc.Name)
 
@@ -229,6 +288,21 @@ class EditAndUndoTest(unittest.TestCase):
             hub = [o for o in pathcompat.job_operations(prog.Job) if o.Operation == "finish_hub"][0]
             self.assertTrue(hub.Active)
             self.assertIn("finish hub", prog.Posted)
+            # A switched-off fillet finishing or drilling step keeps its moves, leaves the program,
+            # and the other steps are posted as before.
+            for operation in ("finish_fillets", "drill"):
+                op = [o for o in pathcompat.job_operations(prog.Job) if o.Operation == operation][0]
+                self.assertIn(op.Label, prog.Posted)
+                impeller_program.set_step_enabled(prog, op.Position, False)
+                ops = pathcompat.job_operations(prog.Job)
+                op = [o for o in ops if o.Operation == operation][0]
+                self.assertFalse(op.Active)
+                self.assertGreater(len(op.Path.Commands), 0)
+                self.assertNotIn(op.Label, prog.Posted)
+                for o in ops:
+                    if o.Active:
+                        self.assertIn(o.Label, prog.Posted)
+                doc.undo()
             doc.undo()
             self.assertEqual(sorted(o.Name for o in doc.Objects), names)
         finally:

@@ -122,8 +122,21 @@ class ImpellerToolpathRequestTest(unittest.TestCase):
         self.refused(self.request(finisher={"tool": "TB-4-3", "rpm": 1, "feed": 1}), "\"number\" must be a number")
         self.refused(self.request(options={"stations": 1}), "stations wants 2 to 200")
         self.refused(self.request(options={"stepOver": 1.5}), "step-over in \\(0, 1\\]")
+        # The fillet ball and the axial steps' tools, by role.
+        self.refused(self.request(filletBall={"tool": "EM-F16", "number": 3, "rpm": 1, "feed": 1}),
+                     "filletBall: tool EM-F16 is a flat tool")
+        self.refused(self.request(filletBall="EM-BALL4"), "filletBall must be an object")
+        self.refused(self.request(axial={"drill": {"tool": "EM-BALL4", "number": 4, "rpm": 1, "feed": 1}}),
+                     "axial: drill: tool EM-BALL4 is a ball tool; this step needs a flat-bottomed tool")
+        self.refused(self.request(axial={"boringMill": {"tool": "NOPE", "number": 4, "rpm": 1, "feed": 1}}),
+                     "axial: boringMill: no tool NOPE")
+        self.refused(self.request(axial={"drillAllowance": -1}), "drillAllowance must be >= 0")
+        self.refused(self.request(axial=[]), "axial must be an object")
         # A good request reaches the part, which is no impeller.
         self.refused(self.request(), "not an impeller")
+        self.refused(self.request(filletBall={"tool": "EM-BALL4", "number": 3, "rpm": 1, "feed": 1},
+                                  axial={"drill": {"tool": "DR-18", "number": 4, "rpm": 1, "feed": 1}}),
+                     "not an impeller")
 
     def test_tool_list(self):
         import json

@@ -127,9 +127,12 @@ def run():
     check("the panel shows the checks", "deepest gouge" in panel.summary.text() and "holder collisions" in
           panel.summary.text(), panel.summary.text())
     ops = {o.Operation: o for o in pathcompat.job_operations(prog.Job)}
-    check("the Job holds the route's operations with paths",
-          len(ops) == 8 and all(len(ops[k].Path.Commands) > 0 for k in ("rough_channels", "finish_blades",
-                                                                         "finish_hub")))
+    steps = [k for k in ops if not k.endswith("_back")]  # what a step cuts from the back: an operation after it
+    check("the Job holds the route's operations, each with its path",
+          len(steps) == 8 and all(len(o.Path.Commands) > 0 for o in ops.values())
+          and all(ops[k].Active for k in ("rough_channels", "finish_blades", "finish_hub", "finish_fillets",
+                                          "face", "drill", "bore")) and not ops["turn"].Active,
+          [(k, len(o.Path.Commands), o.Active) for k, o in ops.items()])
     Gui.Selection.clearSelection()
     Gui.activeDocument().activeView().viewIsometric()
     Gui.SendMsgToActiveView("ViewFit")

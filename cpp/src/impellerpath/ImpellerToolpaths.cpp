@@ -467,19 +467,42 @@ CheckResult checkProgram(const TopoDS_Shape& part, const impeller::ImpellerFeatu
         for (int w : b.fillets) obstacles.push_back(TopoDS::Face(faces(w)));
         obstacles.push_back(TopoDS::Face(faces(b.shroud)));
     }
-    const Obstacles o(obstacles, BRep_Tool::Surface(TopoDS::Face(faces(f.hub))));
-    CheckResult r;
+    const Handle(Geom_Surface) hub = BRep_Tool::Surface(TopoDS::Face(faces(f.hub)));
+    // The cutting positions in program order, measured on two threads, each half with distance
+    // queries of its own (they keep state); the halves merge in order, as one thread would.
+    std::vector<std::pair<const CutterShape*, const Move*>> cuts;
     for (const auto& [cutter, moves] : operations)
-        for (const auto& m : moves) {
-            if (m.rapid) continue;
-            const Clearance c = clearance(o, cutter, m.centre, m.axis);
-            ++r.positions;
-            if (c.holder) ++r.holderCollisions;
-            if (c.gouge > r.maxGouge) {
-                r.maxGouge = c.gouge;
-                r.worstAt[0] = m.centre.x(), r.worstAt[1] = m.centre.y(), r.worstAt[2] = m.centre.z();
+        for (const auto& m : moves)
+            if (!m.rapid) cuts.push_back({&cutter, &m});
+    CheckResult half[2];
+    std::exception_ptr error[2];
+    auto work = [&](int part) {
+        try {
+            const Obstacles o(obstacles, hub);
+            CheckResult& r = half[part];
+            const size_t from = part == 0 ? 0 : cuts.size() / 2, to = part == 0 ? cuts.size() / 2 : cuts.size();
+            for (size_t i = from; i < to; ++i) {
+                const Move& m = *cuts[i].second;
+                const Clearance c = clearance(o, *cuts[i].first, m.centre, m.axis);
+                ++r.positions;
+                if (c.holder) ++r.holderCollisions;
+                if (c.gouge > r.maxGouge) {
+                    r.maxGouge = c.gouge;
+                    r.worstAt[0] = m.centre.x(), r.worstAt[1] = m.centre.y(), r.worstAt[2] = m.centre.z();
+                }
             }
+        } catch (...) {
+            error[part] = std::current_exception();
         }
+    };
+    std::thread second(work, 1);
+    work(0);
+    second.join();
+    CheckResult r;
+    for (int i = 0; i < 2; ++i) {
+        if (error[i]) std::rethrow_exception(error[i]);
+        merge(r, half[i]);
+    }
     return r;
 }
 
