@@ -22,6 +22,12 @@ using namespace ClipperLib;
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double segmentDistance(const P2& p, const P2& a, const P2& b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+    const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
 }  // namespace
 
 LevelSlicing::LevelSlicing(const SetupView& view, RegionWidths& widths, std::vector<std::string>& warnings)
@@ -55,12 +61,8 @@ double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top
         if (!L || L->pts.empty()) continue;
         const P2 p = L->pts.front();
         double d = kInf;
-        for (std::size_t i = 0; i < hole.size(); ++i) {
-            const P2 a = toP2(hole[i]), b = toP2(hole[(i + 1) % hole.size()]);
-            const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-            const double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-            d = std::min(d, std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy));
-        }
+        for (std::size_t i = 0; i < hole.size(); ++i)
+            d = std::min(d, segmentDistance(p, toP2(hole[i]), toP2(hole[(i + 1) % hole.size()])));
         if (d < best) best = d, loop = L;
     }
     if (!loop) return top;
@@ -181,12 +183,8 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
     // The walls it still has: faces with a piece of section on the new boundary.
     auto onBoundary = [&](const P2& m) {
         auto near = [&](const Path& path) {
-            for (std::size_t i = 0; i < path.size(); ++i) {
-                const P2 a = toP2(path[i]), q = toP2(path[(i + 1) % path.size()]);
-                const double dx = q.x - a.x, dy = q.y - a.y, l2 = dx * dx + dy * dy;
-                const double t = l2 > 0 ? std::clamp(((m.x - a.x) * dx + (m.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
-                if (std::hypot(m.x - a.x - t * dx, m.y - a.y - t * dy) <= tol) return true;
-            }
+            for (std::size_t i = 0; i < path.size(); ++i)
+                if (segmentDistance(m, toP2(path[i]), toP2(path[(i + 1) % path.size()])) <= tol) return true;
             return false;
         };
         if (near(r.outer)) return true;
