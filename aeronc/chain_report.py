@@ -72,9 +72,12 @@ def _summary(run):
         rows.append(("Rapid travel", "{} mm in rule order &rarr; {} mm sequenced ({}% saved)".format(
             _num(travel.get("rulesOnly"), 0), _num(travel.get("optimised"), 0), _num(travel.get("savedPercent"), 1))))
     for p in run.get("programs", []):
+        zero = p.get("partZero")
+        where = (" &middot; program zero at ({}) from the table's reference point: the blank centred on the "
+                 "table".format(", ".join(_num(v, 3) for v in zero)) if zero else "")
         rows.append(("Program " + _e(p.get("setup", "")), '<a href="{0}">{0}</a> <span class="muted small">'
-                     '{1} &middot; {2} lines</span>'.format(_e(os.path.basename(p["path"])), _e(p.get("dialect", "")),
-                                                          _e(p.get("lines", "")))))
+                     '{1} &middot; {2} lines{3}</span>'.format(_e(os.path.basename(p["path"])), _e(p.get("dialect", "")),
+                                                             _e(p.get("lines", "")), where)))
     body = "".join("<tr><td>{}</td><td>{}</td></tr>".format(k, v) for k, v in rows)
     return '<table class="summary">{}</table>'.format(body)
 
@@ -188,7 +191,7 @@ def write(path, run):
     """Write the report of `run` to `path` (temporary name, then renamed); returns path.
 
     run: {"part", "source", "recognition": result, "chain": chain dict, "operations": [{"unit", "setup",
-    "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines"}], "verification":
+    "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines", "partZero"}], "verification":
     [{"check", "node", "ok", "detail"}], "coverage": [{"setup", "element", "area", "leftArea", "maxLeft"}],
     "pictures": [(caption, file)], "stages": [(name, seconds)]}"""
     write_atomically(path, render(run))

@@ -99,7 +99,7 @@ def part_zero(blank, frame):
     underside in the frame. Parts modelled far from their origin then stay within the travel."""
     from aeronc import setup_job
     box = setup_job.box_in_frame(blank, frame)
-    return [-(box[0] + box[3]) / 2, -(box[1] + box[4]) / 2, -box[2]]
+    return [0.0 - (box[0] + box[3]) / 2, 0.0 - (box[1] + box[4]) / 2, 0.0 - box[2]]  # no -0.0
 
 
 def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,

@@ -20,6 +20,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import impeller_program
+from aeronc.panels.narrow import widen_dock
 from aeronc.errors import AeroNCError
 
 COLUMNS = ["On", "Step", "Tool", "Allowance"]
@@ -44,14 +45,7 @@ class ImpellerPanel:
         self.form = self._build_form()
         self._show_program()
         ImpellerPanel.current = self
-        QtCore.QTimer.singleShot(0, self._widen)
-
-    @staticmethod
-    def _widen():
-        mw = FreeCADGui.getMainWindow()
-        for dock in mw.findChildren(QtGui.QDockWidget):
-            if dock.isVisible() and dock.objectName() in ("Combo View", "Tasks") and dock.width() < DOCK_WIDTH:
-                mw.resizeDocks([dock], [DOCK_WIDTH], QtCore.Qt.Horizontal)
+        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
 
     # --- the form ----------------------------------------------------------------------------
 

@@ -19,6 +19,7 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 from aeronc import chain_edits, knowledge_base
+from aeronc.panels.narrow import widen_dock
 from aeronc import machining_chain as mc
 
 COLUMNS = ["Chain", "Element", "Operation", "Tool", "Top", "Bottom", "Radial", "Axial", "Est. time"]
@@ -60,17 +61,10 @@ class MachiningChainPanel:
         self.notes = []
         self.form = self._build_form()
         MachiningChainPanel.current = self
-        QtCore.QTimer.singleShot(0, self._widen)
+        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
         if self.built:
             self.chain = mc.check(chain_edits.apply(self.built, self.edits)[0])
             self._refresh()
-
-    @staticmethod
-    def _widen():
-        mw = FreeCADGui.getMainWindow()
-        for dock in mw.findChildren(QtGui.QDockWidget):
-            if dock.isVisible() and dock.objectName() in ("Combo View", "Tasks") and dock.width() < DOCK_WIDTH:
-                mw.resizeDocks([dock], [DOCK_WIDTH], QtCore.Qt.Horizontal)
 
     # -- the form ---------------------------------------------------------------------------
     def _build_form(self):

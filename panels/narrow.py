@@ -5,6 +5,16 @@ dock wider."""
 from PySide import QtCore, QtGui
 
 
+def widen_dock(width):
+    """Widen the visible combo view or task dock to `width` pixels when it is narrower (a panel
+    whose table needs more than FreeCAD's default width)."""
+    import FreeCADGui
+    mw = FreeCADGui.getMainWindow()
+    for dock in mw.findChildren(QtGui.QDockWidget):
+        if dock.isVisible() and dock.objectName() in ("Combo View", "Tasks") and dock.width() < width:
+            mw.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
+
+
 class ElidedLabel(QtGui.QLabel):
     """A one-line label that shows as much of its text as fits, eliding the middle (where a
     path's least telling part is); the whole text is its tooltip and can be copied."""

@@ -20,6 +20,18 @@ from aeronc.operations import moves
 COOLANT_MODES = ["None", "Flood", "Mist"]
 
 
+def declare_path_properties(obj):
+    """The properties FreeCAD's Path Job and posts read of any operation."""
+    g = "Path"
+    declare_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
+    declare_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
+    if "CoolantMode" not in obj.PropertiesList:
+        declare_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation", COOLANT_MODES)
+        obj.CoolantMode = "Flood"
+    declare_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
+                     read_only=True)
+
+
 class Parameter:
     """An editable parameter: a property standing for one field of the toolpath input."""
 
@@ -90,15 +102,7 @@ class MachiningOperation(BaseProxy):
 
     def declare(self, obj):
         cls = type(self)
-        g = "Path"
-        declare_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
-        declare_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
-        if "CoolantMode" not in obj.PropertiesList:
-            declare_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation",
-                             COOLANT_MODES)
-            obj.CoolantMode = "Flood"
-        declare_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
-                         read_only=True)
+        declare_path_properties(obj)
         g = "Machining unit"
         declare_property(obj, "App::PropertyInteger", "UnitId", g, "Unit of the machining chain", read_only=True)
         declare_property(obj, "App::PropertyInteger", "ElementId", g, "Domain element the unit machines", read_only=True)

@@ -9,9 +9,9 @@ the 5-axis program, with the reason in Note. The Path is made by aeronc.impeller
 from the whole route at once and take seconds to minutes.
 """
 from aeronc.objects.base import BaseProxy, declare_property, proxy_type
+from aeronc.operations.base import declare_path_properties
 
 TYPE = "AeroNC::ImpellerOperation"
-COOLANT_MODES = ["None", "Flood", "Mist"]
 
 
 class ImpellerOperation(BaseProxy):
@@ -23,15 +23,7 @@ class ImpellerOperation(BaseProxy):
         self.declare(obj)
 
     def declare(self, obj):
-        g = "Path"
-        declare_property(obj, "App::PropertyBool", "Active", g, "Make False to leave the operation out of the program")
-        declare_property(obj, "App::PropertyLink", "ToolController", g, "The tool controller the operation uses")
-        if "CoolantMode" not in obj.PropertiesList:
-            declare_property(obj, "App::PropertyEnumeration", "CoolantMode", g, "Coolant of the operation",
-                             COOLANT_MODES)
-            obj.CoolantMode = "Flood"
-        declare_property(obj, "App::PropertyString", "CycleTime", g, "Estimated machining time (HH:MM:SS)",
-                         read_only=True)
+        declare_path_properties(obj)
         g = "Route step"
         declare_property(obj, "App::PropertyInteger", "Position", g, "Position in the process route", read_only=True)
         declare_property(obj, "App::PropertyString", "Operation", g, "Operation of the route step", read_only=True)

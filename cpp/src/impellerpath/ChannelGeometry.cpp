@@ -28,6 +28,19 @@ gp_Pnt pnt(const Vec3& v) { return gp_Pnt(v.x(), v.y(), v.z()); }
 Vec3 vec(const gp_Pnt& p) { return Vec3(p.X(), p.Y(), p.Z()); }
 Vec3 vec(const gp_Vec& p) { return Vec3(p.X(), p.Y(), p.Z()); }
 
+// The foot of p on a face's surface (its parameters, point and derivatives) and the face's
+// outward unit normal there.
+Vec3 footAndNormal(const SurfaceProjection& projection, const Handle(Geom_Surface)& surface, const TopoDS_Face& face,
+                   const Vec3& p, const char* what, double& u, double& v, gp_Pnt& on, gp_Vec& du, gp_Vec& dv) {
+    double d;
+    if (!projection.project(pnt(p), u, v, d, on))
+        throw inputError(std::string("impeller toolpaths: cannot project onto ") + what);
+    gp_Pnt q;
+    surface->D1(u, v, q, du, dv);
+    const Vec3 n = vec(du.Crossed(dv)).normalized();
+    return face.Orientation() == TopAbs_REVERSED ? Vec3(-n) : n;
+}
+
 double wrapAngle(double a) { return std::remainder(a, 2 * kPi); }
 
 }  // namespace
@@ -247,15 +260,10 @@ double Channel::wallTheta(bool b, double r, double z, double guess) const {
 
 void Channel::wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, double* uOut, double* vOut) const {
     const Wall& w = wall(b);
-    double u, v, d;
+    double u, v;
     gp_Pnt on;
-    if (!w.projection->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto a blade wall");
-    gp_Pnt q;
     gp_Vec du, dv;
-    w.surface->D1(u, v, q, du, dv);
-    gp_Vec n = du.Crossed(dv);
-    if (w.face.Orientation() == TopAbs_REVERSED) n.Reverse();
-    normal = vec(n).normalized();
+    normal = footAndNormal(*w.projection, w.surface, w.face, p, "a blade wall", u, v, on, du, dv);
     // The ruling: the parameter direction closer to the axis, upward.
     const Vec3 a = vec(du).normalized(), c = vec(dv).normalized();
     ruling = std::abs(a.dot(frame_.z())) > std::abs(c.dot(frame_.z())) ? a : c;
@@ -266,15 +274,10 @@ void Channel::wallFrame(bool b, const Vec3& p, Vec3& ruling, Vec3& normal, doubl
 }
 
 Vec3 Channel::hubNormal(const Vec3& p) const {
-    double u, v, d;
+    double u, v;
     gp_Pnt on;
-    if (!hubProjection_->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto the hub");
-    gp_Pnt q;
     gp_Vec du, dv;
-    hubSurface_->D1(u, v, q, du, dv);
-    Vec3 n = vec(du.Crossed(dv)).normalized();
-    if (hub_.Orientation() == TopAbs_REVERSED) n = -n;
-    return n;
+    return footAndNormal(*hubProjection_, hubSurface_, hub_, p, "the hub", u, v, on, du, dv);
 }
 
 }  // namespace aeronc::impellerpath
@@ -283,27 +286,18 @@ namespace aeronc::impellerpath {
 
 double Channel::wallDistance(bool b, const Vec3& p, Vec3& normal) const {
     const Wall& w = wall(b);
-    double u, v, d;
+    double u, v;
     gp_Pnt on;
-    if (!w.projection->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto a blade wall");
-    gp_Pnt q;
     gp_Vec du, dv;
-    w.surface->D1(u, v, q, du, dv);
-    gp_Vec n = du.Crossed(dv);
-    if (w.face.Orientation() == TopAbs_REVERSED) n.Reverse();
-    normal = vec(n).normalized();
+    normal = footAndNormal(*w.projection, w.surface, w.face, p, "a blade wall", u, v, on, du, dv);
     return (p - vec(on)).dot(normal);
 }
 
 double Channel::hubDistance(const Vec3& p, Vec3& normal) const {
-    double u, v, d;
+    double u, v;
     gp_Pnt on;
-    if (!hubProjection_->project(pnt(p), u, v, d, on)) throw inputError("impeller toolpaths: cannot project onto the hub");
-    gp_Pnt q;
     gp_Vec du, dv;
-    hubSurface_->D1(u, v, q, du, dv);
-    normal = vec(du.Crossed(dv)).normalized();
-    if (hub_.Orientation() == TopAbs_REVERSED) normal = -normal;
+    normal = footAndNormal(*hubProjection_, hubSurface_, hub_, p, "the hub", u, v, on, du, dv);
     return (p - vec(on)).dot(normal);
 }
 

@@ -56,10 +56,6 @@ void finishingMoves(MoveWriter& w, const clip::Paths& finish, const clip::Paths&
     }
 }
 
-}  // namespace
-
-namespace {
-
 // One cutting level of the unit: the islands in the way there, and for a level at the top of
 // lower islands, those islands (the level clears only around them).
 struct Pass {
@@ -159,7 +155,7 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     // The tool-centre region with the islands in the way (and the material they leave for a
     // plunge), once per set of islands.
     struct Centres {
-        clip::Paths centres, entryArea;
+        clip::Paths region, centres, entryArea;
     };
     std::map<std::vector<bool>, Centres> centresBySet;
     auto centresOf = [&](const std::vector<bool>& present) -> const Centres& {
@@ -171,6 +167,7 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
             if (present[i]) inWay.islands.push_back(unit.islands[i]);
         const PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
         Centres c;
+        c.region = area.region;
         c.centres = clip::offset(area.region, -off, tol);
         if (!(clip::area(c.centres) > 0))
             throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
@@ -234,14 +231,9 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
             std::size_t j = i;
             for (; j < passes.size() && (!passes[j].faced.empty() || passes[j].present == passes[i].present); ++j)
                 if (passes[j].faced.empty()) levels.push_back(passes[j].level);
-            const PassPlan& pp = planOf(passes[i]);
-            PocketUnit inWay = unit;
-            inWay.islands.clear();
-            for (std::size_t k = 0; k < unit.islands.size(); ++k)
-                if (passes[i].present[k]) inWay.islands.push_back(unit.islands[k]);
-            const clip::Paths finish =
-                clip::offset(pocketArea(inWay, 2 * off + p.clearance).region, -(R + p.finishingAllowance + finishFillet), tol);
-            finishingMoves(w, finish, pp.centres, levels, entryTop(p, unit.top), es);
+            const Centres& whole = centresOf(passes[i].present);
+            const clip::Paths finish = clip::offset(whole.region, -(R + p.finishingAllowance + finishFillet), tol);
+            finishingMoves(w, finish, whole.centres, levels, entryTop(p, unit.top), es);
             i = j;
         }
     }

@@ -285,18 +285,28 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     return r;
 }
 
-SimulationReport simulate(const TriangleMesh& mesh, const Program& program, const SimulationOptions& options) {
-    validate(mesh);
+namespace {
+
+// The part rasterised on a grid over it and the blank, then simulated.
+SimulationReport rasteriseAndSimulate(const TriangleMesh& mesh, const Program& program, const SimulationOptions& options,
+                                      const std::vector<PriorStock>& priors, StockDexels* finalStock) {
     const auto b = bounds(mesh);
-    auto box = program.hasBlank ? program.blank : b;
+    const auto box = program.hasBlank ? program.blank : b;
     const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
                                    std::max(b[4], box[4]), program.cellSize);
     const auto t = Clock::now();
     const PartDexels part = rasterise(mesh, grid);
-    const double rasterise = since(t);
-    SimulationReport r = simulate(part, mesh, program, options);
-    r.rasteriseSeconds = rasterise;
+    const double seconds = since(t);
+    SimulationReport r = simulate(part, mesh, program, options, priors, finalStock);
+    r.rasteriseSeconds = seconds;
     return r;
+}
+
+}  // namespace
+
+SimulationReport simulate(const TriangleMesh& mesh, const Program& program, const SimulationOptions& options) {
+    validate(mesh);
+    return rasteriseAndSimulate(mesh, program, options, {}, nullptr);
 }
 
 std::array<double, 3> Rigid::operator()(const std::array<double, 3>& p) const {
@@ -348,16 +358,8 @@ std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const
         for (Point3& v : mesh.vertices) v = toSetup(v);
         std::vector<PriorStock> priors;
         for (std::size_t j = 0; j < k; ++j) priors.push_back({&stocks[j], s.toPart.then(setups[j].toPart.inverse())});
-        const auto b = bounds(mesh);
-        const auto box = s.program.hasBlank ? s.program.blank : b;
-        const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
-                                       std::max(b[4], box[4]), s.program.cellSize);
-        const auto t = Clock::now();
-        const PartDexels part = rasterise(mesh, grid);
-        const double rasterise = since(t);
         stocks.emplace_back();
-        reports.push_back(simulate(part, mesh, s.program, options, priors, &stocks.back()));
-        reports.back().rasteriseSeconds = rasterise;
+        reports.push_back(rasteriseAndSimulate(mesh, s.program, options, priors, &stocks.back()));
     }
     return reports;
 }
