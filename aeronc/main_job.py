@@ -7,7 +7,8 @@ run() writes into one output folder:
   <part>.FCStd                     the document (features tree, chain, one Job per setup)
   <part>_setup<k>.mpf / .ngc       each setup's program, Sinumerik 840D and LinuxCNC
   report.html                      the chain, times, checks and pictures for the programmer
-  features.png, toolpaths.png, leftover.png   the pictures the report shows
+  features.png, toolpaths.png, leftover.png   the pictures the report shows (leftover_<k>.png:
+                                   each other setup that leaves a finished face unreached)
   recognition.json, chain.json, verification.json, knowledge.sqlite   the data behind it
   freecad.log                      what FreeCAD itself printed while the job ran
 A second run replaces the outputs of the first (the files it listed in .aeronc-outputs).
@@ -114,6 +115,8 @@ def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integra
     _remove_previous(out)
     name = os.path.splitext(os.path.basename(part_path))[0]
     kb_path = os.path.join(out, "knowledge.sqlite")
+    if os.path.exists(kb_path):  # left by a failed run: this run starts from the shipped knowledge base
+        os.unlink(kb_path)
     written = ["freecad.log"]
     log_path = os.path.join(out, "freecad.log")
     if os.path.exists(log_path):
@@ -161,7 +164,10 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
         st.report("{} faces".format(len(shape.Faces)))
 
         with st.stage("recognise"):
-            group = create_machining_features(doc, part)
+            # The blank the Jobs' stock and the verification use, stated to recognition too: on a
+            # tilted setup its corner stands above the part, and the elements open to it start there.
+            bb = part.Shape.BoundBox
+            group = create_machining_features(doc, part, blank=(bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax))
             result = result_of(group)
         st.report("{} elements in {} setup(s): {}".format(len(result["elements"]), len(result["setups"]),
                                                            _counts(result)))
@@ -280,17 +286,23 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
                          toolpath_picture.draw(panels, os.path.join(out, "toolpaths.png"),
                                                "{}: toolpaths by tool".format(name))))
             if report.get("leftover"):
-                pics.append(("Material left after simulating the posted programs (seen from +Z)",
+                seen = "setup {}".format(report["leftoverSetup"]) if report.get("leftoverSetup") else "+Z"
+                pics.append(("Material left after simulating the posted programs (seen from {})".format(seen),
                              toolpath_picture.draw_leftover(report["leftover"], os.path.join(out, "leftover.png"))))
+            for k, (setup_name, leftover) in enumerate(report.get("leftovers") or [], 1):
+                pics.append(("Material left in setup {}, which leaves a finished face unreached".format(setup_name),
+                             toolpath_picture.draw_leftover(leftover, os.path.join(out, "leftover_{}.png".format(k)),
+                                                            title="Setup {}: material left (blue: more than 0.2 mm)"
+                                                            .format(setup_name))))
         st.report(", ".join(os.path.basename(p[1]) for p in pics))
         run_data["pictures"] = pics
-        written += ["features.png", "toolpaths.png"] + (["leftover.png"] if report.get("leftover") else [])
+        written += [os.path.basename(p[1]) for p in pics]
 
         with st.stage("save"):
             fcstd = os.path.join(out, name + ".FCStd")
             _save_document(doc, fcstd)
             for fname, data in (("recognition.json", result), ("chain.json", chain),
-                                ("verification.json", {k: v for k, v in report.items() if k != "leftover"})):
+                                ("verification.json", {k: v for k, v in report.items() if k not in ("leftover", "leftovers")})):
                 write_atomically(os.path.join(out, fname), json.dumps(data, indent=1))
             written += [os.path.basename(fcstd), "recognition.json", "chain.json", "verification.json",
                         "knowledge.sqlite"]

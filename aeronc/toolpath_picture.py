@@ -102,11 +102,14 @@ def draw_leftover(leftover, path, tolerance=0.2, title=""):
     extent = (leftover["x0"], leftover["x0"] + nx * cell, leftover["y0"], leftover["y0"] + ny * cell)
     fig, ax = plt.subplots(figsize=(8, 6.4), dpi=110)
     shown = np.ma.masked_invalid(top)
-    im = ax.imshow(shown, origin="lower", extent=extent, cmap="magma_r", vmin=0.0,
-                   vmax=max(tolerance * 5, float(np.nanmax(top)) if np.isfinite(top).any() else 1.0))
+    # Capped at 25 tolerances: a few mm left on a floor must stand out beside 100 mm of unmachined
+    # depth, which reads as "more" anyway.
+    highest = float(np.nanmax(top)) if np.isfinite(top).any() else 1.0
+    cap = max(tolerance * 5, min(highest, tolerance * 25))
+    im = ax.imshow(shown, origin="lower", extent=extent, cmap="magma_r", vmin=0.0, vmax=cap)
     ax.contour(np.where(top > tolerance, 1.0, 0.0), levels=[0.5], origin="lower", extent=extent,
                colors="#00a0ff", linewidths=0.6)
-    fig.colorbar(im, ax=ax, label="material left above the part (mm)")
+    fig.colorbar(im, ax=ax, label="material left above the part (mm)", extend="max" if highest > cap else "neither")
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")

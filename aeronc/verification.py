@@ -274,4 +274,11 @@ def _merged(reports):
     if biggest.get("leftover"):
         out["leftover"] = biggest["leftover"]
         out["leftoverSetup"] = s["name"]
+    # The other setups' maps where a face they finish is not reached: where to look.
+    out["leftovers"] = [(x["name"], r["leftover"]) for x, r in reports
+                        if x is not s and r.get("leftover") and _uncovered(r)]
     return out
+
+
+def _uncovered(report):
+    return any(float(f.get("uncoveredArea", 0)) > 0 for f in report.get("coverage", {}).get("faces", []))

@@ -93,7 +93,7 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
         EXPECT_EQ(tools.front().id, "FM-125");  // largest first
         EXPECT_EQ(tools.front().flutes, 4);
         EXPECT_EQ(kb.workpieceMaterials().size(), 4u);
-        EXPECT_EQ(kb.machineNames().size(), 2u);
+        EXPECT_EQ(kb.machineNames().size(), 3u);
 
         const auto mill = kb.machine("XA5032");
         EXPECT_DOUBLE_EQ(mill.maxSpindleRpm, 1800);

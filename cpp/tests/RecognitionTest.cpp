@@ -3,6 +3,7 @@
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/recognition/Recogniser.h>
 
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -28,6 +29,11 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Pln.hxx>
+#include <gp.hxx>
+#include <gp_Ax3.hxx>
+#include <Bnd_Box.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -101,6 +107,71 @@ TEST(Recognition, SharpCornersGiveZeroRadius) {
     ASSERT_EQ(t.elements.size(), 1u);
     EXPECT_EQ(t.elements[0].minCornerRadius, 0);
     EXPECT_NEAR(t.elements[0].depth, 8, 1e-6);
+}
+
+// Fillets the edges of `s` whose two ends lie at height z inside the (x0, y0)-(x1, y1) rectangle.
+TopoDS_Shape filletEdgesAt(const TopoDS_Shape& s, double z, double x0, double y0, double x1, double y1, double r) {
+    BRepFilletAPI_MakeFillet f(s);
+    auto in = [&](const gp_Pnt& p) {
+        return std::fabs(p.Z() - z) < 1e-9 && p.X() > x0 - 1e-9 && p.X() < x1 + 1e-9 && p.Y() > y0 - 1e-9 &&
+               p.Y() < y1 + 1e-9;
+    };
+    for (TopExp_Explorer e(s, TopAbs_EDGE); e.More(); e.Next()) {
+        TopoDS_Vertex v1, v2;
+        TopExp::Vertices(TopoDS::Edge(e.Current()), v1, v2);
+        if (in(BRep_Tool::Pnt(v1)) && in(BRep_Tool::Pnt(v2))) f.Add(r, TopoDS::Edge(e.Current()));
+    }
+    return f.Shape();
+}
+
+// A round on the floor's outer edge falls away from the floor: not a fillet the cutter's corner
+// must fit, unlike the fillet at the foot of the boss standing on it.
+TEST(Recognition, RoundOnTheFloorsOuterEdgeIsNoFloorFillet) {
+    TopoDS_Shape part = filletEdgesAt(BRepPrimAPI_MakeBox(100, 60, 20).Shape(), 20, 0, 0, 100, 60, 3);
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(30, 15, 20), 40, 30, 10).Shape()).Shape();
+    part = filletEdgesAt(part, 20, 30, 15, 70, 45, 2);
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* flange = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 20) < 1e-6 && !e.floorFaces.empty()) flange = &e;
+    ASSERT_NE(flange, nullptr);
+    EXPECT_NEAR(flange->floorFilletRadius, 2, 1e-6);
+    EXPECT_EQ(flange->filletFaces.size(), 4u);  // the boss's foot only
+}
+
+// On a tilted axis the corner of the blank box stands above the part's top: an element open to
+// the blank starts there, or its first cuts and rapids meet that corner.
+TEST(Recognition, ElementOpenToTheBlankStartsAtTheBlanksHighestCorner) {
+    const double a = M_PI / 180;  // 1 degree
+    const gp_Dir d(0, std::sin(a), std::cos(a));
+    // A block whose top is square to d through (50, 30, 25).
+    const gp_Pln top(gp_Pnt(50, 30, 25), d);
+    TopoDS_Shape above = BRepPrimAPI_MakeBox(gp_Pnt(-500, -500, 0), 1000, 1000, 500).Shape();
+    gp_Trsf tr;
+    tr.SetTransformation(gp_Ax3(top.Location(), d), gp_Ax3(gp::XOY()));
+    above = BRepBuilderAPI_Transform(above, tr).Shape();
+    // A boss on it, its top 30 mm high at the low-y end: the part's highest point in the frame.
+    const TopoDS_Shape boss = BRepAlgoAPI_Common(BRepPrimAPI_MakeBox(gp_Pnt(60, 0, 0), 40, 20, 30).Shape(), above).Shape();
+    const TopoDS_Shape part = BRepAlgoAPI_Fuse(cut(BRepPrimAPI_MakeBox(100, 60, 30).Shape(), above), boss).Shape();
+    Bnd_Box bb;
+    BRepBndLib::Add(part, bb, false);
+    double x0, y0, z0, x1, y1, z1;
+    bb.Get(x0, y0, z0, x1, y1, z1);
+    x0 += bb.GetGap(), y0 += bb.GetGap(), z0 += bb.GetGap(), x1 -= bb.GetGap(), y1 -= bb.GetGap(), z1 -= bb.GetGap();
+    RecogniseOptions o = along({{d.X(), d.Y(), d.Z()}});
+    o.blank = Blank{{x0, y0, z0}, {x1, y1, z1}};
+    const DomainTree t = recognise(validatedSolid(part, "test"), o);
+    const double floor = 30 * d.Y() + 25 * d.Z();
+    const double bossTop = 20 * d.Y() + 30 * d.Z();
+    const double blankTop = y1 * d.Y() + z1 * d.Z();
+    ASSERT_NEAR(z1, 30, 1e-6);
+    ASSERT_GT(blankTop, bossTop + 0.5);
+    const DomainElement* face = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (!e.floorFaces.empty()) face = &e;
+    ASSERT_NE(face, nullptr);
+    EXPECT_NEAR(face->level, floor, 1e-6);
+    EXPECT_NEAR(face->top, blankTop, 1e-6);
 }
 
 TEST(Recognition, PocketWithIslandAndHoleInFloor) {

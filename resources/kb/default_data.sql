@@ -7,7 +7,8 @@
 --   * XA5032 limits (n_max 1800 r/min, 7.5 kW, v_f,max 980 mm/min, F 15000 N, efficiency 0.75)
 --     are the figures of the impeller paper's worked example (DESIGN.md section 3);
 --     its axis travels are typical catalogue values (assumed).
---   * The 5-axis AC table-table machine is a generic example (assumed values).
+--   * The 5-axis AC table-table machines are generic examples (assumed values): AC-5AX, and
+--     AC-5AX-L, the same kinematics with a larger table and travel for larger parts.
 --   * Tool lengths follow the usual short/standard end-mill series (assumed), costs are
 --     indicative list prices (assumed).
 --   * The jobber drill series follows the diameter steps and the flute and overall lengths
@@ -33,9 +34,11 @@ INSERT INTO machine (name, type, kinematics, travel_x, travel_y, travel_z, a_min
                      max_spindle_rpm, power_kw, max_feed_mm_min, max_force_n, efficiency, tool_change_s)
 VALUES
   ('AC-5AX', '5-axis machining centre', 'AC table-table (cradle), Sinumerik 840D',
-   650, 650, 500, -120, 120, -360, 360, 18000, 25, 30000, 6000, 0.85, 6),
+   650, 650, 550, -120, 120, -360, 360, 18000, 25, 30000, 6000, 0.85, 6),
   ('XA5032', 'vertical knee mill', 'XYZ',
-   700, 255, 350, NULL, NULL, NULL, NULL, 1800, 7.5, 980, 15000, 0.75, 60);
+   700, 255, 350, NULL, NULL, NULL, NULL, 1800, 7.5, 980, 15000, 0.75, 60),
+  ('AC-5AX-L', '5-axis machining centre', 'AC table-table (cradle), Sinumerik 840D',
+   1000, 1100, 800, -120, 120, -360, 360, 18000, 35, 40000, 8000, 0.85, 8);
 
 -- Materials ----------------------------------------------------------------------------
 INSERT INTO workpiece_material (name, family, hardness_hb) VALUES

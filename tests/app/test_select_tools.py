@@ -280,5 +280,36 @@ class ToolLibraryBridgeTest(unittest.TestCase):
         self.assertEqual([x["diameter"] for x in self.kb.tools() if x["id"] == "EM-F10"], [9.0])
 
 
+class MachinesAgreeTest(unittest.TestCase):
+    """The knowledge base's machines that have a machine file (the posts' kinematics) state the
+    same limits in both: tool selection and the optimiser read one, the post checks the other."""
+
+    def test_knowledge_base_rows_match_their_machine_files(self):
+        from aeronc.post import machines
+        tmp = tempfile.mkdtemp(prefix="aeronc_machines_")
+        try:
+            kb = knowledge_base.open_kb(os.path.join(tmp, "kb.sqlite"))
+            t = kb.table("machine")
+            cols = [c["name"] for c in t["columns"]]
+            rows = [dict(zip(cols, r)) for r in t["rows"]]
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+        known = set(machines.known_machines())
+        checked = [r for r in rows if r["name"] in known]
+        self.assertIn("AC-5AX-L", [r["name"] for r in checked])
+        for r in checked:
+            m = json.loads(machines.load(r["name"])[0])
+            travel = m["linearTravel"]
+            for axis in "xyz":
+                lo, hi = travel[axis.upper()]
+                self.assertAlmostEqual(float(r["travel_" + axis]), hi - lo, places=6, msg=(r["name"], axis))
+            limits = {a["name"]: (a["min"], a["max"]) for a in m["rotaryAxes"]}
+            for axis in "ac":
+                self.assertEqual((float(r[axis + "_min"]), float(r[axis + "_max"])),
+                                 tuple(float(v) for v in limits[axis.upper()]), (r["name"], axis))
+            self.assertAlmostEqual(float(r["max_spindle_rpm"]), m["maxSpindleSpeed"], msg=r["name"])
+            self.assertAlmostEqual(float(r["max_feed_mm_min"]), m["maxFeed"], msg=r["name"])
+
+
 if __name__ == "__main__":
     unittest.main()

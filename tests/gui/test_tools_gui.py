@@ -73,7 +73,7 @@ def run():
     pump()
     panel = SelectToolsPanel.current
     check("Select tools panel open", Gui.Control.activeDialog() and panel is not None)
-    check("materials from the knowledge base", panel.material.count() == 4 and panel.machine.count() == 2,
+    check("materials and machines from the knowledge base", panel.material.count() == 4 and panel.machine.count() == 3,
           (panel.material.count(), panel.machine.count()))
     panel.material.setCurrentIndex(panel.material.findText("7050-T7451"))
     panel.run_button.click()

@@ -26,6 +26,9 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
                 const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
                 const SurfaceKind k = faces[n].kind;
                 if (s.att != Attitude::Curved || k == SurfaceKind::Cone) continue;
+                // A round falling away from the floor's edge (a convex edge of the part) rises to
+                // no wall: not a fillet the cutter's corner must fit.
+                if (s.hi <= e.level + tol) continue;
                 if (std::find(fillets.begin(), fillets.end(), n + 1) != fillets.end()) continue;
                 fillets.push_back(n + 1);
                 if (k == SurfaceKind::Cylinder || k == SurfaceKind::Torus || k == SurfaceKind::Sphere)

@@ -285,6 +285,15 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count());
 
     std::vector<VoidRegion> regions = voidRegions(loops, view_.blankLo, view_.blankHi, view_.tol.linear);
+    // An element's top: its highest wall, or for a region open to the blank the blank's top
+    // (above the part's on a tilted axis, where the box's corner rises over the region).
+    auto topOf = [&](const VoidRegion& c) {
+        double top = -kInf;
+        for (int f : c.contourFaces) top = std::max(top, fs[static_cast<std::size_t>(f)].hi);
+        if (c.exterior || !std::isfinite(top)) top = std::max(top, h1);
+        if (c.exterior && view_.clampedBlankTop > top + tol) top = view_.clampedBlankTop;
+        return top;
+    };
 
     // Floors and rib tops at this level, placed in the region above them.
     auto regionAt = [&](const P2& p) -> int {
@@ -345,12 +354,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             // in its floor): not machinable here.
             if (capped(c, z)) continue;
         }
-        {
-            double top = -kInf;
-            for (int f : c.contourFaces) top = std::max(top, fs[static_cast<std::size_t>(f)].hi);
-            if (c.exterior || !std::isfinite(top)) top = std::max(top, h1);
-            if (!trimUndercuts(c, h, z, top, warnings)) continue;
-        }
+        if (!trimUndercuts(c, h, z, topOf(c), warnings)) continue;
         ElementDraft in;
         DomainElement& e = in.el;
         e.id = static_cast<int>(made.size());
@@ -369,9 +373,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             e.floorFaces.push_back(f + 1);
             e.floorArea += faces_.area(f);
         }
-        double top = -kInf;
-        for (int f : c.contourFaces) top = std::max(top, fs[static_cast<std::size_t>(f)].hi);
-        if (c.exterior || !std::isfinite(top)) top = std::max(top, h1);
+        const double top = topOf(c);
         e.top = top;
         e.depth = top - e.level;
         for (const IntPoint& ip : c.region.outer) e.contour.push_back(frame.world(toP2(ip), h));

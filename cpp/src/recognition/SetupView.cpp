@@ -24,6 +24,21 @@ SetupFrame alignedFrame(const Vec3& d, const std::vector<Vec3>& axes, const Tole
     return SetupFrame(d, ref);
 }
 
+// The part's box in the orthonormal frame (a, b, c): a prismatic part's extremes lie on its
+// edges, whose boxes are exact for lines and arcs (a face box can be loose, and the optimal
+// one is slow).
+void boxIn(const TopTools_IndexedMapOfShape& edges, const Vec3& a, const Vec3& b, const Vec3& c, double lo[3],
+           double hi[3]) {
+    gp_Trsf t;
+    t.SetValues(a[0], a[1], a[2], 0, b[0], b[1], b[2], 0, c[0], c[1], c[2], 0);
+    Bnd_Box box;
+    const TopLoc_Location loc(t);
+    for (int e = 1; e <= edges.Extent(); ++e) BRepBndLib::Add(edges(e).Moved(loc), box, false);
+    box.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    const double gap = box.GetGap();
+    for (int k = 0; k < 3; ++k) lo[k] += gap, hi[k] -= gap;
+}
+
 }  // namespace
 
 SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Vec3& d,
@@ -33,22 +48,40 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
     fs = classifyFaces(faces, frame, tol);
 
     // Part extent in the setup frame.
-    gp_Trsf t;
-    t.SetValues(frame.u[0], frame.u[1], frame.u[2], 0, frame.v[0], frame.v[1], frame.v[2], 0, frame.w[0],
-                frame.w[1], frame.w[2], 0);
-    // The part's extremes in a prismatic part lie on its edges, whose boxes are exact
-    // for lines and arcs (a face box can be loose, and the optimal one is slow).
-    Bnd_Box box;
-    const TopLoc_Location frameLoc(t);
     const TopTools_IndexedMapOfShape& edges = faces.edges();
-    for (int e = 1; e <= edges.Extent(); ++e) BRepBndLib::Add(edges(e).Moved(frameLoc), box, false);
-    double x0, y0, x1, y1;
-    box.Get(x0, y0, h0, x1, y1, h1);
-    const double gap = box.GetGap();
-    x0 += gap, y0 += gap, h0 += gap, x1 -= gap, y1 -= gap, h1 -= gap;
+    double lo[3], hi[3];
+    boxIn(edges, frame.u, frame.v, frame.w, lo, hi);
+    const double x0 = lo[0], y0 = lo[1], x1 = hi[0], y1 = hi[1];
+    h0 = lo[2], h1 = hi[2];
     blankLo = {x0 - options.blankAllowance, y0 - options.blankAllowance};
     blankHi = {x1 + options.blankAllowance, y1 + options.blankAllowance};
     blankH0 = h0, blankH1 = h1;
+    clampedBlankTop = h1;
+    if (options.blank) {
+        clampedBlankTop = -std::numeric_limits<double>::infinity();
+        for (int c = 0; c < 8; ++c)
+            clampedBlankTop = std::max(clampedBlankTop, frame.height(Vec3{(c & 1) ? options.blank->max[0] : options.blank->min[0],
+                                                                          (c & 2) ? options.blank->max[1] : options.blank->min[1],
+                                                                          (c & 4) ? options.blank->max[2] : options.blank->min[2]}));
+    } else if (principalAxes.size() >= 4) {
+        // The box a machinist clamps: square to the part's principal axes, whatever the part's
+        // placement in the world, grown by the allowance.
+        const Vec3& a = principalAxes[0];
+        Vec3 b = principalAxes[2];
+        const double k = dot(a, b);
+        b = {b[0] - k * a[0], b[1] - k * a[1], b[2] - k * a[2]};
+        const double bn = norm(b);
+        b = {b[0] / bn, b[1] / bn, b[2] / bn};
+        const Vec3 c{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+        double plo[3], phi[3];
+        boxIn(edges, a, b, c, plo, phi);
+        const Vec3* axes[3] = {&a, &b, &c};
+        clampedBlankTop = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double ci = dot(frame.w, *axes[i]);
+            clampedBlankTop += std::max(ci * (plo[i] - options.blankAllowance), ci * (phi[i] + options.blankAllowance));
+        }
+    }
     if (options.blank) {
         constexpr double kInf = std::numeric_limits<double>::infinity();
         blankLo = {kInf, kInf}, blankHi = {-kInf, -kInf};

@@ -33,6 +33,10 @@ public:
     P2 blankLo, blankHi;          // the blank's rectangle in the slicing plane
     MeshSection* meshes = nullptr;  // the part's section of blends and splines, shared by the setups
     double blankH0 = 0, blankH1 = 0;  // and its height range: the part's, or the given blank's
+    // The highest corner along the axis of the blank as clamped: the given blank, else the part's
+    // box square to its principal axes grown by the allowance. On a tilted axis it stands above
+    // h1: over an exterior region all of it is there to cut.
+    double clampedBlankTop = 0;
 
     // Rays along the axis, one caster per worker (a caster keeps per-face state).
     AxisRays& rays() const;

@@ -19,7 +19,8 @@ struct RecogniseOptions {
     // normal and its opposite, then directions of remaining unmachined features).
     std::vector<Vec3> directions;
     // Blank: explicit box in world coordinates, or the part's bounding box in each
-    // setup frame grown by this allowance.
+    // setup frame grown by this allowance. Elements open to the blank start at its highest
+    // corner along their axis (without a blank: the part's box square to its principal axes).
     std::optional<Blank> blank;
     double blankAllowance = 0.0;
     double linearTolerance = 1e-3;   // mm: heights equal, points coincide
