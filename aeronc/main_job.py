@@ -166,8 +166,7 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
         with st.stage("recognise"):
             # The blank the Jobs' stock and the verification use, stated to recognition too: on a
             # tilted setup its corner stands above the part, and the elements open to it start there.
-            bb = part.Shape.BoundBox
-            group = create_machining_features(doc, part, blank=(bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax))
+            group = create_machining_features(doc, part, blank=setup_job.part_box(part.Shape))
             result = result_of(group)
         st.report("{} elements in {} setup(s): {}".format(len(result["elements"]), len(result["setups"]),
                                                            _counts(result)))

@@ -4,12 +4,15 @@ report names the faces by FreeCAD's FaceN, the corners the tool cannot reach sta
 a path 0.1 mm too low gouges the floor, and bad input gets a clear VerifyError."""
 import json
 import math
+import os
 import unittest
 
 import FreeCAD
 import Part
 
 from aeronc import _core
+
+SHARED = os.environ.get("AERONC_SHARED_DATA", "")
 
 R = 3.0  # the end mill's radius
 
@@ -128,6 +131,27 @@ class FinishedFacesTest(unittest.TestCase):
             self.chain([{"element": 1, "reason": "island top", "step": None, "faces": [13]}]), self.RESULT)
         self.assertEqual(faces, [10, 11, 12, 20])
         self.assertEqual(elements, {"E1": [10, 11, 12], "E2": [20]})
+
+
+
+class PartBoxTest(unittest.TestCase):
+    """The blank's box (setup_job.part_box) hugs the part: FreeCAD's BoundBox stands off some
+    parts, which would put stock round them that no tool has to cut."""
+
+    def test_arcs_extremes_are_bounded_within_the_deflection(self):
+        from aeronc import setup_job
+        shape = Part.makeCylinder(10, 5, FreeCAD.Vector(3, 4, 1))
+        box = setup_job.part_box(shape)
+        for got, want in zip(box, (-7, -6, 1, 13, 14, 6)):
+            self.assertAlmostEqual(got, want, delta=2e-6)
+
+    @unittest.skipUnless(os.path.isfile(os.path.join(SHARED, "nist", "nist_ftc_10_asme1_rb.stp")),
+                         "no NIST parts in AERONC_SHARED_DATA")
+    def test_nist_ftc_10_gets_its_drawn_size(self):
+        from aeronc import setup_job
+        box = setup_job.part_box(Part.read(os.path.join(SHARED, "nist", "nist_ftc_10_asme1_rb.stp")))
+        for got, want in zip(box, (-79, 0, -37.5, 79, 31, 37.5)):
+            self.assertAlmostEqual(got, want, delta=2e-6)
 
 
 if __name__ == "__main__":
