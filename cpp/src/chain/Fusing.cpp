@@ -216,6 +216,9 @@ private:
                            double bottom);
     void makeUnits(const DomainElement& e, const TemplateStep& step);
     void listUnmachined(const DomainElement& e);
+    // Lists faces of e the chain leaves, each face once: a chamfer between two elements is
+    // named by the first.
+    void listFaces(const DomainElement& e, const std::string& reason, const std::vector<int>& faces);
 
     const DomainTree& tree_;
     const ToolPlan& plan_;
@@ -706,9 +709,40 @@ void Fuser::listUnmachined(const DomainElement& e) {
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
     if (!e.chamferFaces.empty() && !countersunk)
-        chain_.unmachined.push_back({e.id, std::nullopt,
-                                     std::to_string(e.chamferFaces.size()) +
-                                         " chamfer face(s) need a chamfer tool; the chain has none", {}});
+        listFaces(e, std::to_string(e.chamferFaces.size()) + " chamfer face(s) need a chamfer tool; the chain has none",
+                  e.chamferFaces);
+    // Walls leaning away from the axis: a flat end mill finishing them square to the floor leaves
+    // depth x tan(lean) at their top. A drafted wall keeps within the tolerance; a bevel does not.
+    // (An element no unit machines is listed whole above.)
+    constexpr double kLeftOnLeaningWall = 0.1;  // mm
+    if (st.units == 0) return;
+    std::vector<int> leaning;
+    double most = 0, steepest = 0;
+    for (const recognition::AttachedFeature& a : e.attached) {
+        if (a.kind != "open_corner" || a.faces.empty()) continue;
+        const double left = e.depth * std::tan(a.size * M_PI / 180);
+        if (!(left > kLeftOnLeaningWall)) continue;
+        leaning.insert(leaning.end(), a.faces.begin(), a.faces.end());
+        most = std::max(most, left), steepest = std::max(steepest, a.size);
+    }
+    if (!leaning.empty()) {
+        std::string faces;
+        for (int f : leaning) faces += (faces.empty() ? "" : ", ") + std::to_string(f);
+        listFaces(e,
+                  "face(s) " + faces + " lean up to " + fmt(steepest) +
+                      " degrees from the tool axis (bevels with their blends): a flat end mill along this setup's "
+                      "axis leaves up to " + fmt(most) + " mm on them; they need a setup along their normal",
+                  leaning);
+    }
+}
+
+void Fuser::listFaces(const DomainElement& e, const std::string& reason, const std::vector<int>& faces) {
+    std::set<int> named;
+    for (const Unmachined& u : chain_.unmachined) named.insert(u.faces.begin(), u.faces.end());
+    std::vector<int> left;
+    for (int f : faces)
+        if (named.insert(f).second) left.push_back(f);
+    if (!left.empty()) chain_.unmachined.push_back({e.id, std::nullopt, reason, left});
 }
 
 MachiningChain Fuser::run() {

@@ -62,6 +62,12 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
                 a.kind = c > 0 ? "open_corner" : "closed_corner";
                 a.faces = {w};
                 a.size = std::asin(std::min(1.0, std::fabs(c))) * 180 / M_PI;
+                // A bevel facing the tool more than sideways takes the rounds that blend it into
+                // its neighbours in the loop: what finishes the bevel finishes them.
+                if (c > 0 && a.size >= 45)
+                    for (int n : faces[w - 1].neighbours)
+                        if (inLoops.count(n + 1) && fs[static_cast<std::size_t>(n)].att == Attitude::Curved)
+                            a.faces.push_back(n + 1);
                 e.attached.push_back(a);
             }
             for (int n : faces[w - 1].neighbours) {

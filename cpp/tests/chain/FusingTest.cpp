@@ -172,6 +172,35 @@ recognition::DomainTree recogniseBothSides(const testparts::Panel& panel) {
 
 }  // namespace
 
+// A wall leaning away from the axis is finished square to the floor, leaving depth x tan(lean)
+// at its top: a 0.3-degree draft on a 15 mm pocket keeps within 0.1 mm (0.079), a 60-degree
+// bevel does not and is listed with its faces (only those leave the coverage check). A chamfer
+// without a tool is listed with its faces, not as the whole element, and a face once.
+TEST(Fusing, BevelsAFlatEndMillCannotFinishAreListedWithTheirFaces) {
+    recognition::DomainTree t = test::smallTree();
+    recognition::DomainElement& e = t.elements[0];  // 15 mm deep
+    recognition::AttachedFeature draft, bevel;
+    draft.kind = bevel.kind = "open_corner";
+    draft.faces = {201}, draft.size = 0.3;
+    bevel.faces = {202, 203}, bevel.size = 60;
+    e.attached = {draft, bevel};
+    e.chamferFaces = {204};
+    t.elements[1].chamferFaces = {204, 205};  // shared with the pocket inside
+    const MachiningChain c = buildChain(t, test::smallPlan(), parseTemplate(test::panelRows()), test::smallOptions());
+    std::vector<std::vector<int>> listed;
+    for (const Unmachined& u : c.unmachined)
+        if (u.element <= 1) {
+            EXPECT_FALSE(u.faces.empty()) << u.reason;
+            listed.push_back(u.faces);
+            if (u.faces == std::vector<int>{202, 203}) {
+                EXPECT_NE(u.reason.find("60 degrees"), std::string::npos) << u.reason;
+                EXPECT_NE(u.reason.find(" 25.981 mm"), std::string::npos) << u.reason;  // 15 tan 60
+            }
+        }
+    std::sort(listed.begin(), listed.end());
+    EXPECT_EQ(listed, (std::vector<std::vector<int>>{{202, 203}, {204}, {205}}));
+}
+
 TEST(Fusing, GeneratedDoubleSidedPanel) {
     testparts::PanelSpec spec;  // every feature kind, pockets on both faces
     spec.pocketsX = 4;
