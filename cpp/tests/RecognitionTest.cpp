@@ -139,6 +139,26 @@ TEST(Recognition, RoundOnTheFloorsOuterEdgeIsNoFloorFillet) {
     EXPECT_EQ(flange->filletFaces.size(), 4u);  // the boss's foot only
 }
 
+// A wall leaning back from the floor (a step whose side slopes up and away) holds the most
+// material at the floor: the region stops there, or a tool clearing the floor cuts into the
+// slope. The slice half-way up would put the wall 3 mm further back.
+TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
+    TopoDS_Shape part = BRepPrimAPI_MakeBox(100, 40, 20).Shape();
+    BRepBuilderAPI_MakePolygon side;
+    for (const gp_Pnt& p : {gp_Pnt(0, 0, 20), gp_Pnt(60, 0, 20), gp_Pnt(54, 0, 30), gp_Pnt(0, 0, 30)}) side.Add(p);
+    side.Close();
+    const TopoDS_Shape step = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(side.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
+    part = BRepAlgoAPI_Fuse(part, step).Shape();
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* floor = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 20) < 1e-6) floor = &e;
+    ASSERT_NE(floor, nullptr);
+    double xmin = HUGE_VAL;
+    for (const auto& p : floor->contour) xmin = std::min(xmin, p[0]);
+    EXPECT_NEAR(xmin, 60, 0.02);
+}
+
 // On a tilted axis the corner of the blank box stands above the part's top: an element open to
 // the blank starts there, or its first cuts and rapids meet that corner.
 TEST(Recognition, ElementOpenToTheBlankStartsAtTheBlanksHighestCorner) {

@@ -7,6 +7,11 @@
 
 #include <aeronc/core/Error.h>
 
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <TopLoc_Location.hxx>
+#include <gp_Trsf.hxx>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -77,9 +82,60 @@ double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top
     return std::isfinite(hi) ? std::min(hi, top) : top;
 }
 
-bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, std::vector<std::string>& warnings) const {
+Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
+    if (!(z - zl > 0.1 * tol)) return {};
+    Paths near;
+    const SetupFrame& fr = view_.frame;
+    gp_Trsf t;
+    t.SetValues(fr.u[0], fr.u[1], fr.u[2], 0, fr.v[0], fr.v[1], fr.v[2], 0, fr.w[0], fr.w[1], fr.w[2], 0);
+    const TopLoc_Location frameLoc(t);
+    for (int f : c.contourFaces) {
+        const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
+        const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
+        // A convex face (a round) spanning the band; a hole across the axis is concave.
+        const bool falls = s.att == Attitude::Curved && !faces_[f].concave && s.lo < zl && s.hi > z;
+        if (!facesUp && !falls) continue;
+        leaning.push_back(f);
+        // Its footprint: its box in the setup's frame (the same however the part is placed).
+        Bnd_Box box;
+        BRepBndLib::Add(faces_[f].face.Moved(frameLoc), box, false);
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        near.push_back({toInt({x0, y0}), toInt({x1, y0}), toInt({x1, y1}), toInt({x0, y1})});
+    }
+    if (near.empty()) return {};
+    Clipper clip;
+    clip.AddPaths(materialAt(zl), ptSubject, true);
+    clip.AddPaths(near, ptClip, true);
+    Paths out;
+    clip.Execute(ctIntersection, out, pftEvenOdd, pftNonZero);
+    return out;
+}
+
+Paths LevelSlicing::materialAt(double z) const {
+    std::vector<std::string> ignored;
+    const std::vector<SectionLoop> loops =
+        sliceLoops(faces_, cutFaces(z), view_.frame, z, view_.tol.chord, view_.tol.linear, ignored, view_.meshes);
+    Paths out;
+    for (const SectionLoop& L : loops) {
+        Path p;
+        for (const P2& q : L.pts) p.push_back(toInt(q));
+        out.push_back(p);
+    }
+    return out;
+}
+
+bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double low, double top,
+                                 std::vector<std::string>& warnings) const {
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    const double tol = 10 * view_.tol.linear;
+    // Walls leaning back hold more material at the floor than at the slice: the region (the
+    // pocket the tool may clear down to its floor) keeps off it. No warning: a bevel or a round
+    // falling past the floor is ordinary geometry.
+    std::vector<int> leaningFaces;
+    const Paths leaning = leaningMaterial(c, low, z, leaningFaces);
     // Material over the region starts above an underside between the slice and the top: a
     // plane facing down, an inclined plane (a dovetail) or a curved face (the vault of a hole
     // across the axis) ending there.
@@ -98,11 +154,21 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
         if (hi.x < c.region.lo.x || lo.x > c.region.hi.x || hi.y < c.region.lo.y || lo.y > c.region.hi.y) continue;
         heights.push_back(s.hi);
     }
-    if (heights.empty()) return true;
+    if (heights.empty() && leaning.empty()) return true;
     std::sort(heights.begin(), heights.end());
     heights.erase(std::unique(heights.begin(), heights.end(), [&](double a, double b) { return b - a <= tol; }),
                   heights.end());
     Paths reach = c.region.paths();
+    if (!leaning.empty()) {
+        Clipper cut;
+        cut.AddPaths(reach, ptSubject, true);
+        cut.AddPaths(leaning, ptClip, true);
+        Paths left;
+        cut.Execute(ctDifference, left, pftNonZero, pftNonZero);
+        reach = left;
+    }
+    double unleaned = 0;
+    for (const Path& p : reach) unleaned += Area(p) / (kClipperScale * kClipperScale);
     for (double hd : heights) {
         // Just above the underside, short of the next height where a face starts or ends.
         double next = top;
@@ -111,16 +177,8 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
                 next = std::min(next, x);
                 break;
             }
-        const double zs = 0.5 * (hd + next);
-        std::vector<std::string> ignored;
-        const std::vector<SectionLoop> loops =
-            sliceLoops(faces_, cutFaces(zs), view_.frame, zs, view_.tol.chord, view_.tol.linear, ignored, view_.meshes);
         Clipper material;
-        for (const SectionLoop& L : loops) {
-            Path p;
-            for (const P2& q : L.pts) p.push_back(toInt(q));
-            material.AddPath(p, ptClip, true);
-        }
+        material.AddPaths(materialAt(0.5 * (hd + next)), ptClip, true);
         material.AddPaths(reach, ptSubject, true);
         Paths left;
         material.Execute(ctDifference, left, pftNonZero, pftEvenOdd);
@@ -148,10 +206,13 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
         warnings.push_back(b);
         return false;
     }
-    std::snprintf(b, sizeof b,
-                  "level %.3f: %.1f mm2 of a region of %.1f mm2 lie under material (an undercut): left out of the pocket",
-                  h, before - after, before);
-    warnings.push_back(b);
+    if (after < unleaned - std::max(0.01, 1e-4 * before)) {
+        std::snprintf(b, sizeof b,
+                      "level %.3f: %.1f mm2 of a region of %.1f mm2 lie under material (an undercut): left out of the "
+                      "pocket",
+                      h, unleaned - after, before);
+        warnings.push_back(b);
+    }
     Region r;
     r.outer = best->Contour;
     if (!Orientation(r.outer)) ReversePath(r.outer);
@@ -202,6 +263,8 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
                 std::find(walls.begin(), walls.end(), f) == walls.end() && onBoundary({0.5 * (a.x + q.x), 0.5 * (a.y + q.y)}))
                 walls.push_back(f);
         }
+    // A leaning wall bounds the region at its foot, below the slice.
+    walls.insert(walls.end(), leaningFaces.begin(), leaningFaces.end());
     std::vector<int> kept;
     for (int f : c.contourFaces)
         if (std::find(walls.begin(), walls.end(), f) != walls.end()) kept.push_back(f);
@@ -209,7 +272,7 @@ bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double top, 
     return true;
 }
 
-double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
+double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups, double* low) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double h = levels_[k];
     const double hn = k + 1 < levels_.size() ? levels_[k + 1] : view_.h1;
@@ -239,7 +302,9 @@ double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups) const {
             break;
         }
     }
-    return 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+    const double z = 0.5 * (base + std::min(next, hn > base + tol ? hn : next));
+    if (low) *low = base + std::min(tol, 0.5 * (z - base));
+    return z;
 }
 
 std::vector<int> LevelSlicing::cutFaces(double z) const {
@@ -275,7 +340,8 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
     const bool bottom = k == 0;
     const double tol = 10 * view_.tol.linear;
     std::vector<int> ups;
-    const double z = sliceHeight(k, ups);
+    double low = 0;
+    const double z = sliceHeight(k, ups, &low);
     const std::vector<int> cands = cutFaces(z);
     const auto ts = std::chrono::steady_clock::now();
     std::vector<SectionLoop> loops = sliceLoops(faces_, cands, frame, z, view_.tol.chord, view_.tol.linear, warnings,
@@ -354,7 +420,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             // in its floor): not machinable here.
             if (capped(c, z)) continue;
         }
-        if (!trimUndercuts(c, h, z, topOf(c), warnings)) continue;
+        if (!trimUndercuts(c, h, z, low, topOf(c), warnings)) continue;
         ElementDraft in;
         DomainElement& e = in.el;
         e.id = static_cast<int>(made.size());

@@ -34,14 +34,23 @@ public:
                   const std::function<bool(double)>& progress, const std::vector<bool>& claimed);
 
 private:
-    // The height the level is cut at (above its floor fillets), with the floors there.
-    double sliceHeight(std::size_t k, std::vector<int>& ups) const;
+    // The height the level is cut at (above its floor fillets), with the floors there; `low`:
+    // just above the fillets, where the material a leaning wall stands on is widest.
+    double sliceHeight(std::size_t k, std::vector<int>& ups, double* low = nullptr) const;
     // Leaves out of c's region what lies under material between the slice z and `top` (an
-    // undercut), keeping the largest piece reachable from above, with a warning; false when
-    // nothing is reachable.
-    bool trimUndercuts(VoidRegion& c, double h, double z, double top, std::vector<std::string>& warnings) const;
+    // undercut, with a warning) and the material that walls leaning back from the floor (a
+    // bevel facing up, a round falling past the floor) hold between the slice and `low`,
+    // keeping the largest piece reachable from above; false when nothing is reachable.
+    bool trimUndercuts(VoidRegion& c, double h, double z, double low, double top,
+                       std::vector<std::string>& warnings) const;
+    // The material at height zl within the boxes of c's contour faces that lean back between
+    // zl and z, as paths; empty when none leans.
+    // `leaning` receives those faces.
+    ClipperLib::Paths leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const;
     // How high the island around `hole` (one of c's region holes) stands, at most `top`.
     double islandTop(const VoidRegion& c, const ClipperLib::Path& hole, double top) const;
+    // The part's section at height z: outer loops and holes, to be read even-odd.
+    ClipperLib::Paths materialAt(double z) const;
     // The faces a plane at height z may cut.
     std::vector<int> cutFaces(double z) const;
     bool useful(std::size_t k, const std::vector<bool>& claimed) const;
