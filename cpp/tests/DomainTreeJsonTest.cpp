@@ -43,6 +43,7 @@ void expectSameTree(const DomainTree& a, const DomainTree& b) {
         expectSameVec(x.direction, y.direction, "setup direction");
         EXPECT_EQ(x.name, y.name);
         EXPECT_EQ(x.elements, y.elements);
+        EXPECT_TRUE(x.blankTop == y.blankTop || (std::isnan(x.blankTop) && std::isnan(y.blankTop))) << "setup " << s;
     }
     ASSERT_EQ(a.elements.size(), b.elements.size());
     for (std::size_t i = 0; i < a.elements.size(); ++i) {
@@ -97,6 +98,7 @@ void expectSameTree(const DomainTree& a, const DomainTree& b) {
             EXPECT_EQ(p.counterboreDepth, q.counterboreDepth) << w;
             EXPECT_EQ(p.countersinkDiameter, q.countersinkDiameter) << w;
             EXPECT_EQ(p.countersinkAngle, q.countersinkAngle) << w;
+            EXPECT_EQ(p.overhung, q.overhung) << w;
         }
     }
     EXPECT_EQ(a.faceRoles, b.faceRoles);
@@ -174,6 +176,7 @@ class NistTreeJson : public ::testing::TestWithParam<std::string> {};
 TEST_P(NistTreeJson, RoundTrips) {
     const DomainTree t = recognise(loadPart(GetParam()));
     ASSERT_GT(t.elements.size(), 0u);
+    for (const SetupDirection& s : t.setups) EXPECT_TRUE(std::isfinite(s.blankTop)) << s.name;
     expectRoundTrip(t);
 }
 
@@ -207,7 +210,7 @@ DomainTree handTree() {
     pocket.attached = {{"floor_fillet", {6}, 2, 0, -1}, {"joggle", {}, 0, -0.5, 1}};
     DomainElement hole;
     hole.id = 1, hole.setup = 0, hole.parent = 0, hole.type = ElementType::Hole, hole.minCornerRadius = 0;
-    hole.hole = HoleInfo{6.6, 7, true, {0, 0, 1}, {1, 2, 3}, 11, 4.25, 0, 0};
+    hole.hole = HoleInfo{6.6, 7, true, {0, 0, 1}, {1, 2, 3}, 11, 4.25, 0, 0, true};
     DomainElement open;
     open.id = 2, open.setup = 1, open.type = ElementType::OpenPocket, open.minCornerRadius = 3;
     open.openEdges = {{{0, 0, 0}, {1, 0, 0}}, {{1, 0, 0}, {1, 1, -0.0}}};
@@ -240,6 +243,7 @@ TEST(DomainTreeJson, HandTreeRoundTripsEveryField) {
     EXPECT_EQ(back.elements[0].level, 0.1 + 0.2);
     EXPECT_EQ(back.elements[0].area, 1e-300);
     EXPECT_EQ(back.elements[1].hole->counterboreDepth, 4.25);
+    EXPECT_TRUE(back.elements[1].hole->overhung);
     EXPECT_FALSE(back.elements[0].hole.has_value());
     EXPECT_EQ(back.warnings[1], "another, with \"quotes\"");
 }

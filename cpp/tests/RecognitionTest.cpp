@@ -159,6 +159,36 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
     EXPECT_NEAR(xmin, 60, 0.02);
 }
 
+// A hole whose mouth a bridge partly covers from above: a ray down its axis is clear, but a
+// drill as wide as the hole would meet the bridge. Blind, it is overhung; through, it is made
+// from below, where its mouth is clear.
+TEST(Recognition, HoleUnderABridgeIsOverhungOrMadeFromTheClearSide) {
+    TopoDS_Shape bridged = BRepPrimAPI_MakeBox(100, 60, 20).Shape();
+    bridged = BRepAlgoAPI_Fuse(bridged, BRepPrimAPI_MakeBox(gp_Pnt(90, 0, 20), 10, 60, 20).Shape()).Shape();
+    bridged = BRepAlgoAPI_Fuse(bridged, BRepPrimAPI_MakeBox(gp_Pnt(52, 0, 30), 48, 60, 10).Shape()).Shape();
+    auto holeOf = [](const DomainTree& t) -> const DomainElement* {
+        for (const DomainElement& e : t.elements)
+            if (e.hole && std::fabs(e.hole->diameter - 10) < 1e-6) return &e;
+        return nullptr;
+    };
+    const TopoDS_Shape blind =
+        validatedSolid(cut(bridged, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(50, 30, 10), gp_Dir(0, 0, 1)), 5, 11).Shape()),
+                       "blind");
+    const DomainElement* h = nullptr;
+    const DomainTree top = recognise(blind, along({{0, 0, 1}}));
+    h = holeOf(top);
+    ASSERT_NE(h, nullptr);
+    EXPECT_TRUE(h->hole->overhung);
+    const TopoDS_Shape through =
+        validatedSolid(cut(bridged, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(50, 30, -1), gp_Dir(0, 0, 1)), 5, 22).Shape()),
+                       "through");
+    const DomainTree both = recognise(through, along({{0, 0, 1}, {0, 0, -1}}));
+    h = holeOf(both);
+    ASSERT_NE(h, nullptr);
+    EXPECT_FALSE(h->hole->overhung);
+    EXPECT_NEAR(h->hole->axis[2], -1, 1e-9);
+}
+
 // On a tilted axis the corner of the blank box stands above the part's top: an element open to
 // the blank starts there, or its first cuts and rapids meet that corner.
 TEST(Recognition, ElementOpenToTheBlankStartsAtTheBlanksHighestCorner) {

@@ -267,6 +267,7 @@ std::string toJson(const MachiningChain& c, int indent) {
                                {"direction", vec(s.direction)},
                                {"frame", {{"u", vec(s.u)}, {"v", vec(s.v)}, {"w", vec(s.w)}}},
                                {"processes", processes}});
+        if (s.blankTop) j["setups"].back()["blankTop"] = *s.blankTop;
     }
     j["elements"] = json::array();
     for (const ChainElement& e : c.elements)
@@ -335,6 +336,7 @@ MachiningChain fromJson(const std::string& text) {
         cs.u = vector3(s["frame"]["u"]);
         cs.v = vector3(s["frame"]["v"]);
         cs.w = vector3(s["frame"]["w"]);
+        if (s.has("blankTop")) cs.blankTop = s["blankTop"].number();  // added later
         const In processes = s["processes"];
         for (std::size_t k = 0; k < processes.size(); ++k) {
             const In p = processes[k];

@@ -509,6 +509,12 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
         const double top = frameOf(e.setup).height(h.location);
         const double bottom = top - h.depth - (h.through ? opt_.breakthrough : 0);
         if (st.holeMachined) return;
+        if (h.overhung) {
+            gap("hole element " + std::to_string(e.id) + " (diameter " + fmt(h.diameter) +
+                " mm): material stands within its mouth along the axis (a wall over part of it); no tool as "
+                "wide as the hole comes down to it from this setup");
+            return;
+        }
         if (step.code == StepCode::Drill) {
             // A drill leaves a cone: a flat-bottomed blind hole (a counterbore) is milled instead.
             if (!h.through && !e.floorFaces.empty()) {
@@ -765,6 +771,7 @@ MachiningChain Fuser::run() {
         cs.name = s.name;
         cs.direction = s.direction;
         cs.u = f.u, cs.v = f.v, cs.w = f.w;
+        if (std::isfinite(s.blankTop)) cs.blankTop = s.blankTop;
         chain_.setups.push_back(cs);
     }
     for (const DomainElement& e : tree_.elements) {

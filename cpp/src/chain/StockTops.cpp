@@ -29,14 +29,22 @@ void setStockTops(MachiningChain& chain) {
         return h;
     };
 
+    std::map<int, double> blankTops;
+    for (const ChainSetup& s : chain.setups)
+        if (s.blankTop) blankTops[s.id] = *s.blankTop;
     for (MachiningUnit& u : chain.units) {
         double top = u.top;
         const ChainElement* e = chain.element(u.element);
         if (e) {
             top = std::max(top, e->top);
+            const ChainElement* root = e;
             int guard = 0;  // a parent loop in a damaged chain must not hang
             for (const ChainElement* a = chain.element(e->parent); a && guard < 64; a = chain.element(a->parent), ++guard)
-                top = std::max(top, standing(*a, u.order));
+                top = std::max(top, standing(*a, u.order)), root = a;
+            // Over a root below the blank's top (a pocket in a face another setup or nothing
+            // here lowers) anything of the blank may still stand: come down at feed from there.
+            const auto b = blankTops.find(e->setup);
+            if (b != blankTops.end() && root->top < b->second - 1e-6) top = std::max(top, b->second);
         }
         u.stockTop.reset();
         if (top > u.top + 1e-9) u.stockTop = top;

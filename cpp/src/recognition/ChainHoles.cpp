@@ -73,7 +73,23 @@ void addChainHoles(std::vector<ElementDraft>& made, const SetupView& view, const
             }
             found = found && one;
         }
-        if (found) continue;
+        auto overhung = [&](std::size_t k) {
+            const auto& o = ch.segments[k].overhung;
+            return std::find(o.begin(), o.end(), entry) != o.end();
+        };
+        if (found) {
+            // The slicing's holes: told whether a tool as wide as each comes down to it.
+            for (std::size_t k : run) {
+                std::set<int> mine;
+                for (int f : ch.segments[k].faces) mine.insert(f + 1);
+                for (std::size_t j = 0; j < first; ++j) {
+                    DomainElement& e = made[j].el;
+                    if (e.hole && std::set<int>(e.contourFaces.begin(), e.contourFaces.end()) == mine)
+                        e.hole->overhung = overhung(k);
+                }
+            }
+            continue;
+        }
         // The slicing's drafts bounded by these walls alone were this hole, seen in part.
         for (std::size_t j = 0; j < first; ++j) {
             ElementDraft& d = made[j];
@@ -111,6 +127,7 @@ void addChainHoles(std::vector<ElementDraft>& made, const SetupView& view, const
             h.diameter = 2 * s.radius;
             h.depth = e.depth;
             h.through = innermost && ch.through();
+            h.overhung = overhung(run[i]);
             h.axis = frame.w;
             h.location = frame.world(centre, e.top);
             // The faces at its bottom: a step to the next diameter, a flat bottom, a drill point.

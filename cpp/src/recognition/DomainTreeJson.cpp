@@ -27,8 +27,10 @@ std::string toJson(const DomainTree& t, int indent) {
     json j;
     j["faceCount"] = t.faceCount;
     j["setups"] = json::array();
-    for (const SetupDirection& s : t.setups)
+    for (const SetupDirection& s : t.setups) {
         j["setups"].push_back({{"id", s.id}, {"direction", vec(s.direction)}, {"name", s.name}, {"elements", s.elements}});
+        if (std::isfinite(s.blankTop)) j["setups"].back()["blankTop"] = s.blankTop;
+    }
     j["elements"] = json::array();
     for (const DomainElement& e : t.elements) {
         json o{{"id", e.id},
@@ -71,6 +73,7 @@ std::string toJson(const DomainTree& t, int indent) {
                          {"counterboreDepth", h.counterboreDepth},
                          {"countersinkDiameter", h.countersinkDiameter},
                          {"countersinkAngle", h.countersinkAngle}};
+            if (h.overhung) o["hole"]["overhung"] = true;
         } else {
             o["hole"] = nullptr;
         }
@@ -197,6 +200,7 @@ HoleInfo hole(const Field& f) {
     h.counterboreDepth = f["counterboreDepth"].number();
     h.countersinkDiameter = f["countersinkDiameter"].number();
     h.countersinkAngle = f["countersinkAngle"].number();
+    if (f.has("overhung")) h.overhung = f["overhung"].boolean();
     return h;
 }
 
@@ -382,6 +386,7 @@ DomainTree fromJson(const std::string& text) {
         s.direction = f["direction"].vec();
         s.name = f["name"].text();
         s.elements = f["elements"].integers();
+        if (f.has("blankTop")) s.blankTop = f["blankTop"].number();  // added later
         return s;
     });
     t.elements = root["elements"].list(element);

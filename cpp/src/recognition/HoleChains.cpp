@@ -218,19 +218,41 @@ std::vector<HoleChain> findHoleChains(const FaceCatalogue& faces, const Toleranc
         const HoleSegment& last = c.segments.back();
         c.openTop = std::isinf(al.rays->firstHit(axisAt(0.5 * (last.lo + last.hi)), true));
         c.openBottom = std::isinf(al.rays->firstHit(axisAt(0.5 * (first.lo + first.hi)), false));
+        // A tool as wide as a segment comes down the axis only if rays round nine tenths of its
+        // radius leave the part too.
+        const SetupFrame across(c.axis);
+        auto overhung = [&](const HoleSegment& s, bool up) {
+            const Vec3 o = axisAt(0.5 * (s.lo + s.hi));
+            for (int k = 0; k < 8; ++k) {
+                const double a = k * M_PI / 4, r = 0.9 * s.radius;
+                const Vec3 p = add(o, add(mul(across.u, r * std::cos(a)), mul(across.v, r * std::sin(a))));
+                if (!std::isinf(al.rays->firstHit(p, up))) return true;
+            }
+            return false;
+        };
         // From an open end a tool reaches the segments in turn while none is wider than the
         // one before (a bore turned from both sides is reached half from each).
         const std::size_t m = c.segments.size();
-        if (c.openTop)
+        // Past an overhung segment the deeper ones are overhung too: the tool would come down
+        // through material left in it.
+        if (c.openTop) {
+            bool blocked = false;
             for (std::size_t k = m; k-- > 0;) {
                 if (k + 1 < m && c.segments[k].radius > c.segments[k + 1].radius + lin) break;
                 c.segments[k].entries.push_back(1);
+                blocked = blocked || overhung(c.segments[k], true);
+                if (blocked) c.segments[k].overhung.push_back(1);
             }
-        if (c.openBottom)
+        }
+        if (c.openBottom) {
+            bool blocked = false;
             for (std::size_t k = 0; k < m; ++k) {
                 if (k > 0 && c.segments[k].radius > c.segments[k - 1].radius + lin) break;
                 c.segments[k].entries.push_back(-1);
+                blocked = blocked || overhung(c.segments[k], false);
+                if (blocked) c.segments[k].overhung.push_back(-1);
             }
+        }
         // Reached from both ends: from the end that reaches more of the hole, a countersink
         // counting, so a counterbore or a countersink and its hole are made from one side.
         int fromTop = 0, fromBottom = 0;
@@ -241,8 +263,17 @@ std::vector<HoleChain> findHoleChains(const FaceCatalogue& faces, const Toleranc
             if (r.lo >= last.hi - lin && coneRadiusAt(faces[f], c.axis, r.hi) > last.radius + lin) ++fromTop;
             if (r.hi <= first.lo + lin && coneRadiusAt(faces[f], c.axis, r.lo) > first.radius + lin) ++fromBottom;
         }
-        for (HoleSegment& s : c.segments)
-            if (s.entries.size() == 2 && fromTop != fromBottom) s.entries = {fromTop > fromBottom ? 1 : -1};
+        // A segment reached from both ends is made from the one a tool as wide as it can come
+        // down, else from the one that reaches more.
+        for (HoleSegment& s : c.segments) {
+            if (s.entries.size() != 2) continue;
+            auto over = [&](int e) { return std::find(s.overhung.begin(), s.overhung.end(), e) != s.overhung.end(); };
+            int pick = fromTop == fromBottom ? 0 : fromTop > fromBottom ? 1 : -1;
+            if (over(1) != over(-1)) pick = over(1) ? -1 : 1;
+            if (pick == 0) continue;
+            s.entries = {pick};
+            if (!over(pick)) s.overhung.clear();
+        }
         if (std::getenv("AERONC_TRACE")) {
             std::fprintf(stderr, "hole chain axis (%.3f %.3f %.3f) at (%.3f %.3f %.3f), open %d%d:", c.axis[0],
                          c.axis[1], c.axis[2], c.point[0], c.point[1], c.point[2], c.openBottom, c.openTop);

@@ -19,6 +19,9 @@ struct HoleSegment {
     // The ends a tool reaches it from: open, and no segment on the way in narrower than the
     // next. +1: from +axis (the top end), -1: from -axis.
     std::vector<int> entries;
+    // The entries where material stands within nine tenths of its radius along the axis
+    // beyond the mouth (a wall over part of it): no tool as wide as it comes down from there.
+    std::vector<int> overhung;
 };
 
 struct HoleChain {

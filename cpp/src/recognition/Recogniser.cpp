@@ -226,6 +226,7 @@ private:
 
         claimFaces(made, setup, claimed_, chamferOf_, tree_);
         trace(("  tree, attached features, holes, widths, claims " + setup.name).c_str(), tl);
+        setup.blankTop = view.clampedBlankTop;
         tree_.setups.push_back(std::move(setup));
     }
 };

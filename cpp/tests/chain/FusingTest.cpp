@@ -201,6 +201,19 @@ TEST(Fusing, BevelsAFlatEndMillCannotFinishAreListedWithTheirFaces) {
     EXPECT_EQ(listed, (std::vector<std::vector<int>>{{202, 203}, {204}, {205}}));
 }
 
+// A hole a wall stands over (recognition's overhung) gets no drill and no helix: the chain
+// lists it with the reason.
+TEST(Fusing, OverhungHoleIsListedNotDrilled) {
+    recognition::DomainTree t = test::smallTree();
+    t.elements[2].hole->overhung = true;
+    const MachiningChain c = buildChain(t, test::smallPlan(), parseTemplate(test::panelRows()), test::smallOptions());
+    for (const MachiningUnit& u : c.units) EXPECT_NE(u.element, 2) << "unit " << u.id;
+    bool listed = false;
+    for (const Unmachined& u : c.unmachined)
+        listed |= u.element == 2 && u.reason.find("material stands within its mouth") != std::string::npos;
+    EXPECT_TRUE(listed);
+}
+
 TEST(Fusing, GeneratedDoubleSidedPanel) {
     testparts::PanelSpec spec;  // every feature kind, pockets on both faces
     spec.pocketsX = 4;

@@ -63,3 +63,27 @@ TEST(StockTops, FollowTheOrder) {
     ASSERT_TRUE(c.units[1].stockTop.has_value());
     EXPECT_DOUBLE_EQ(*c.units[1].stockTop, 20);
 }
+
+// A root element below the blank's top of its setup (a pocket in a face that another setup, or
+// nothing here, lowers): the blank may still stand over it, so its units come down at feed from
+// the blank's top. A root at the blank's top is unchanged; without a blank top nothing changes.
+TEST(StockTops, RootBelowTheBlanksTopStartsThere) {
+    MachiningChain c = handChain(4, 3);
+    ChainSetup s;
+    s.id = 0;
+    s.blankTop = 32;
+    c.setups = {s};
+    for (ChainElement& e : c.elements) e.setup = 0;
+    for (MachiningUnit& u : c.units) u.setup = 0;
+    setStockTops(c);
+    for (const MachiningUnit& u : c.units) {
+        ASSERT_TRUE(u.stockTop.has_value()) << "unit " << u.id;
+        EXPECT_DOUBLE_EQ(*u.stockTop, 32) << "unit " << u.id;
+    }
+    c.setups[0].blankTop = 20;
+    setStockTops(c);
+    EXPECT_FALSE(c.units[0].stockTop.has_value());
+    c.setups[0].blankTop.reset();
+    setStockTops(c);
+    EXPECT_FALSE(c.units[0].stockTop.has_value());
+}

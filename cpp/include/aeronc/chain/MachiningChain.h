@@ -91,6 +91,7 @@ struct ChainSetup {
     std::string name;
     Vec3 direction{0, 0, 1};
     Vec3 u{1, 0, 0}, v{0, 1, 0}, w{0, 0, 1};  // the frame the units' geometry is in
+    std::optional<double> blankTop;  // the blank's highest corner along w, when recognition gave it
     std::vector<ChainProcess> processes;
 };
 

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <limits>
 #include <vector>
 
 namespace aeronc::recognition {
@@ -52,6 +53,9 @@ struct HoleInfo {
     double counterboreDepth = 0;
     double countersinkDiameter = 0;  // 0: none
     double countersinkAngle = 0;     // included angle, degrees
+    // Material stands within its mouth's circle along the axis beyond the mouth (a wall over
+    // part of it): no tool as wide as the hole comes down to it from this side.
+    bool overhung = false;
 };
 
 using Polyline = std::vector<Vec3>;
@@ -94,6 +98,9 @@ struct SetupDirection {
     Vec3 direction{0, 0, 1};  // tool axis, pointing from the part towards the spindle
     std::string name;         // "+Z", "-Z", or the vector
     std::vector<int> elements;  // roots of this setup's subtree
+    // Height along `direction` of the blank's highest corner: what may stand over an element
+    // before any cut. Not known (NaN) in trees written before it was kept.
+    double blankTop = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct DomainTree {
