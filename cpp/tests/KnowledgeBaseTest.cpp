@@ -27,8 +27,9 @@ using aeronc::test::inputErrorOf;
 
 namespace {
 
-// Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills.
-constexpr std::size_t kShippedTools = 58;
+// Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
+// 2 inch jobber drills.
+constexpr std::size_t kShippedTools = 60;
 
 const std::string& schemaSql() {
     static const std::string s = aeronc::readTextFile(AERONC_RESOURCES "/kb/schema.sql", "schema");
@@ -486,13 +487,14 @@ TEST_F(KnowledgeBaseTest, ShippedDrillSeries) {
     std::vector<Tool> drills;
     for (const Tool& t : kb.tools())
         if (t.type == "drill") drills.push_back(t);
-    EXPECT_EQ(drills.size(), 33u);
+    EXPECT_EQ(drills.size(), 35u);
     auto has = [&](double d) {
         return std::any_of(drills.begin(), drills.end(), [d](const Tool& t) { return std::fabs(t.diameter - d) < 1e-9; });
     };
     for (double d : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 16.0, 20.0}) EXPECT_TRUE(has(d)) << d;
     for (double d : {6.4, 6.6, 9.0, 11.0, 13.5, 17.5, 20.0, 22.0}) EXPECT_TRUE(has(d)) << "clearance " << d;
     for (double d : {3.3, 4.2, 5.0, 6.8, 8.5, 10.2, 14.0, 17.5}) EXPECT_TRUE(has(d)) << "tap drill " << d;
+    for (double in : {0.281, 0.173}) EXPECT_TRUE(has(in * 25.4)) << "inch drill " << in;  // letter K, number 17
     for (const Tool& t : drills) {
         EXPECT_NO_THROW(t.validate()) << t.id;
         EXPECT_GE(t.reach, t.fluteLength) << t.id;

@@ -116,6 +116,13 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('DR-20',  'drill', 'HSS',    20,   0,   2, 140, 205, 156,  92),
   ('DR-22',  'drill', 'HSS',    22,   0,   2, 150, 218, 167, 111);
 
+-- Inch jobber drills for parts drawn in inches (ASME): letter K (0.281 in) and number 17
+-- (0.173 in), the clearance sizes of the NIST test parts' holes. Lengths as the metric jobber
+-- drills of the nearest size (assumed).
+INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost) VALUES
+  ('DR-K',   'drill', 'HSS', 7.1374,  0,   2,  69, 109,  79,  14),
+  ('DR-17',  'drill', 'HSS', 4.3942,  0,   2,  47,  80,  55,   8);
+
 -- Cutting conditions -------------------------------------------------------------------
 -- ae_ratio is a_e / tool diameter; drilling rows use a_p = hole-depth step (peck), ae_ratio 1.
 -- Rows with a diameter range [d_min, d_max) take precedence over a row without one. Handbook
