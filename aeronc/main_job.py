@@ -301,7 +301,8 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
             fcstd = os.path.join(out, name + ".FCStd")
             _save_document(doc, fcstd)
             for fname, data in (("recognition.json", result), ("chain.json", chain),
-                                ("verification.json", {k: v for k, v in report.items() if k not in ("leftover", "leftovers")})):
+                                ("verification.json",
+                                 {k: v for k, v in report.items() if k not in ("leftover", "leftovers")})):
                 write_atomically(os.path.join(out, fname), json.dumps(data, indent=1))
             written += [os.path.basename(fcstd), "recognition.json", "chain.json", "verification.json",
                         "knowledge.sqlite"]

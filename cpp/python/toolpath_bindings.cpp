@@ -10,7 +10,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <atomic>
+#include <exception>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace py = pybind11;
@@ -38,12 +42,31 @@ void bindToolpath(py::module_& m) {
         "toolpaths",
         [](const std::vector<std::string>& units) {
             return aeronc::python::guardedAs(g_toolpathError, [&] {
-                std::vector<std::string> out;
-                out.reserve(units.size());
-                py::gil_scoped_release nogil;
+                // The units are independent: one worker per core takes the next one in turn.
+                std::vector<std::string> out(units.size());
+                std::vector<std::exception_ptr> failed(units.size());
+                {
+                    py::gil_scoped_release nogil;
+                    std::atomic<std::size_t> next{0};
+                    auto work = [&] {
+                        for (std::size_t i; (i = next++) < units.size();) {
+                            try {
+                                out[i] = aeronc::toolpath::toolpathJson(units[i]);
+                            } catch (...) {
+                                failed[i] = std::current_exception();
+                            }
+                        }
+                    };
+                    const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+                    std::vector<std::thread> pool;
+                    for (std::size_t k = 1; k < std::min(cores, units.size()); ++k) pool.emplace_back(work);
+                    work();
+                    for (std::thread& t : pool) t.join();
+                }
                 for (std::size_t i = 0; i < units.size(); ++i) {
+                    if (!failed[i]) continue;
                     try {
-                        out.push_back(aeronc::toolpath::toolpathJson(units[i]));
+                        std::rethrow_exception(failed[i]);
                     } catch (const aeronc::Error& e) {
                         throw aeronc::Error(e.kind(), "unit " + std::to_string(i) + ": " + e.what());
                     }

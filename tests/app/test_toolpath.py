@@ -41,9 +41,13 @@ class ToolpathBindingTest(unittest.TestCase):
         with self.assertRaises(_core.ToolpathError) as ctx:
             _core.toolpaths([_pocket(), "{}"])
         self.assertIn("unit 1", str(ctx.exception))
+        # Computed side by side, the first unit that fails is the one named.
+        with self.assertRaises(_core.ToolpathError) as ctx:
+            _core.toolpaths([_pocket(), _pocket(), "{}", _pocket(), "[]"] + [_pocket()] * 20)
+        self.assertIn("unit 2", str(ctx.exception))
 
     def test_batch_matches_single_units(self):
-        units = [_pocket(50 + i) for i in range(5)]
+        units = [_pocket(50 + i) for i in range(25)]
         self.assertEqual(_core.toolpaths(units), [_core.toolpath(u) for u in units])
 
     def test_batch_lets_other_threads_run(self):
