@@ -62,7 +62,7 @@ def _summary(run):
             ("Process template", _e(chain.get("family", ""))),
             ("Recognised elements", _e(len(run.get("recognition", {}).get("elements", [])))),
             ("Machining units", "{} ({} enabled)".format(len(units), sum(1 for u in units if u.get("enabled", True)))),
-            ("Elements not machined", _e(len(chain.get("unmachined", []))))]
+            ("Elements not machined", _e(unmachined_text(chain)))]
     total = sum(o.get("minutes") or 0 for o in ops)
     if ops:
         rows.append(("Estimated machining time", _minutes(total) + ' <span class="muted small">(cutting at the '
@@ -135,13 +135,25 @@ def _setup_tables(run):
     return "".join(out)
 
 
+def unmachined_text(chain):
+    """'n' elements not machined, and how many more keep only some faces (an entry naming its
+    faces: a chamfer, a bevel, an island top): one count per element, not per entry."""
+    whole, partly = set(), set()
+    for entry in chain.get("unmachined", []):
+        (partly if entry.get("faces") else whole).add(entry.get("element"))
+    partly -= whole
+    return "{}{}".format(len(whole), ", {} more with faces left".format(len(partly)) if partly else "")
+
+
 def _unmachined(run):
     items = run.get("chain", {}).get("unmachined", [])
     if not items:
         return "<h2>Elements not machined</h2><p class='ok'>Every recognised element is machined by some unit.</p>"
-    rows = "".join("<tr><td class='n'>{}</td><td>{}</td></tr>".format(_e(i.get("element")), _e(i.get("reason")))
-                   for i in items)
-    return ("<h2>Elements not machined</h2><table><tr><th>element</th><th>why</th></tr>{}</table>".format(rows))
+    rows = "".join("<tr><td class='n'>{}</td><td>{}</td><td>{}</td></tr>".format(
+        _e(i.get("element")), _e(", ".join(str(f) for f in i.get("faces") or []) or "all"), _e(i.get("reason")))
+        for i in items)
+    return ("<h2>Elements not machined</h2><table><tr><th>element</th><th>faces left</th><th>why</th></tr>{}</table>"
+            .format(rows))
 
 
 def _coverage(run):

@@ -190,8 +190,8 @@ def _stages(st, run_data, opened, part_path, out, name, material, machine, famil
             chain = json.loads(chain_obj.Chain)
         travel = chain.get("travel") or {}
         failed = machining_chain.failed_checks(chain)
-        st.report("{} units, {} unmachined, rules {}; rapid travel -{:.0f} %".format(
-            len(chain.get("units", [])), len(chain.get("unmachined", [])),
+        st.report("{} units, {} elements not machined, rules {}; rapid travel -{:.0f} %".format(
+            len(chain.get("units", [])), chain_report.unmachined_text(chain),
             "all pass" if not failed else "{} FAIL".format(len(failed)), float(travel.get("savedPercent") or 0)))
         run_data["chain"] = chain
 

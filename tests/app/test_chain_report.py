@@ -54,6 +54,16 @@ class ChainReportTest(unittest.TestCase):
         self.assertNotIn("<T&1>", text)
         self.assertIn('<a href="panel_+Z.mpf">', text)
 
+    def test_elements_not_machined_are_counted_once_faces_apart(self):
+        run = _run()
+        run["chain"]["unmachined"] += [
+            {"element": 7, "reason": "its walls need a finishing tool", "step": "fs"},
+            {"element": 8, "reason": "a chamfer needs a chamfer tool", "faces": [41, 42]}]
+        text = chain_report.render(run)
+        self.assertIn("<td>1, 1 more with faces left</td>", text)
+        self.assertIn("<td>41, 42</td>", text)
+        self.assertIn("<td>all</td>", text)
+
     def test_every_element_machined_says_so(self):
         run = _run()
         run["chain"]["unmachined"] = []

@@ -7,11 +7,6 @@
 
 #include <aeronc/core/Error.h>
 
-#include <BRepBndLib.hxx>
-#include <Bnd_Box.hxx>
-#include <TopLoc_Location.hxx>
-#include <gp_Trsf.hxx>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -87,10 +82,6 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     const double tol = 10 * view_.tol.linear;
     if (!(z - zl > 0.1 * tol)) return {};
     Paths near;
-    const SetupFrame& fr = view_.frame;
-    gp_Trsf t;
-    t.SetValues(fr.u[0], fr.u[1], fr.u[2], 0, fr.v[0], fr.v[1], fr.v[2], 0, fr.w[0], fr.w[1], fr.w[2], 0);
-    const TopLoc_Location frameLoc(t);
     for (int f : c.contourFaces) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
@@ -99,11 +90,9 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
         if (!facesUp && !falls) continue;
         leaning.push_back(f);
         // Its footprint: its box in the setup's frame (the same however the part is placed).
-        Bnd_Box box;
-        BRepBndLib::Add(faces_[f].face.Moved(frameLoc), box, false);
-        double x0, y0, z0, x1, y1, z1;
-        box.Get(x0, y0, z0, x1, y1, z1);
-        near.push_back({toInt({x0, y0}), toInt({x1, y0}), toInt({x1, y1}), toInt({x0, y1})});
+        P2 lo, hi;
+        view_.faceBox(f, lo, hi);
+        near.push_back({toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})});
     }
     if (near.empty()) return {};
     Clipper clip;
@@ -127,7 +116,7 @@ Paths LevelSlicing::materialAt(double z) const {
     return out;
 }
 
-bool LevelSlicing::trimUndercuts(VoidRegion& c, double h, double z, double low, double top,
+bool LevelSlicing::trimToReach(VoidRegion& c, double h, double z, double low, double top,
                                  std::vector<std::string>& warnings) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
@@ -420,7 +409,7 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             // in its floor): not machinable here.
             if (capped(c, z)) continue;
         }
-        if (!trimUndercuts(c, h, z, low, topOf(c), warnings)) continue;
+        if (!trimToReach(c, h, z, low, topOf(c), warnings)) continue;
         ElementDraft in;
         DomainElement& e = in.el;
         e.id = static_cast<int>(made.size());

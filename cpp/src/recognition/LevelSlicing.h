@@ -41,7 +41,7 @@ private:
     // undercut, with a warning) and the material that walls leaning back from the floor (a
     // bevel facing up, a round falling past the floor) hold between the slice and `low`,
     // keeping the largest piece reachable from above; false when nothing is reachable.
-    bool trimUndercuts(VoidRegion& c, double h, double z, double low, double top,
+    bool trimToReach(VoidRegion& c, double h, double z, double low, double top,
                        std::vector<std::string>& warnings) const;
     // The material at height zl within the boxes of c's contour faces that lean back between
     // zl and z, as paths; empty when none leans.

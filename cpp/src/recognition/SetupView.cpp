@@ -24,19 +24,28 @@ SetupFrame alignedFrame(const Vec3& d, const std::vector<Vec3>& axes, const Tole
     return SetupFrame(d, ref);
 }
 
+// Moves world coordinates into the orthonormal frame (a, b, c).
+TopLoc_Location frameLocation(const Vec3& a, const Vec3& b, const Vec3& c) {
+    gp_Trsf t;
+    t.SetValues(a[0], a[1], a[2], 0, b[0], b[1], b[2], 0, c[0], c[1], c[2], 0);
+    return TopLoc_Location(t);
+}
+
+void boxGet(const Bnd_Box& box, double lo[3], double hi[3]) {
+    box.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    const double gap = box.GetGap();
+    for (int k = 0; k < 3; ++k) lo[k] += gap, hi[k] -= gap;
+}
+
 // The part's box in the orthonormal frame (a, b, c): a prismatic part's extremes lie on its
 // edges, whose boxes are exact for lines and arcs (a face box can be loose, and the optimal
 // one is slow).
 void boxIn(const TopTools_IndexedMapOfShape& edges, const Vec3& a, const Vec3& b, const Vec3& c, double lo[3],
            double hi[3]) {
-    gp_Trsf t;
-    t.SetValues(a[0], a[1], a[2], 0, b[0], b[1], b[2], 0, c[0], c[1], c[2], 0);
+    const TopLoc_Location loc = frameLocation(a, b, c);
     Bnd_Box box;
-    const TopLoc_Location loc(t);
     for (int e = 1; e <= edges.Extent(); ++e) BRepBndLib::Add(edges(e).Moved(loc), box, false);
-    box.Get(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-    const double gap = box.GetGap();
-    for (int k = 0; k < 3; ++k) lo[k] += gap, hi[k] -= gap;
+    boxGet(box, lo, hi);
 }
 
 }  // namespace
@@ -57,13 +66,7 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
     blankHi = {x1 + options.blankAllowance, y1 + options.blankAllowance};
     blankH0 = h0, blankH1 = h1;
     clampedBlankTop = h1;
-    if (options.blank) {
-        clampedBlankTop = -std::numeric_limits<double>::infinity();
-        for (int c = 0; c < 8; ++c)
-            clampedBlankTop = std::max(clampedBlankTop, frame.height(Vec3{(c & 1) ? options.blank->max[0] : options.blank->min[0],
-                                                                          (c & 2) ? options.blank->max[1] : options.blank->min[1],
-                                                                          (c & 4) ? options.blank->max[2] : options.blank->min[2]}));
-    } else if (principalAxes.size() >= 4) {
+    if (!options.blank && principalAxes.size() >= 4) {
         // The box a machinist clamps: square to the part's principal axes, whatever the part's
         // placement in the world, grown by the allowance.
         const Vec3& a = principalAxes[0];
@@ -95,7 +98,16 @@ SetupView::SetupView(const FaceCatalogue& faces, const Tolerances& tol, const Ve
             blankHi.x = std::max(blankHi.x, q.x), blankHi.y = std::max(blankHi.y, q.y);
             blankH0 = std::min(blankH0, frame.height(p)), blankH1 = std::max(blankH1, frame.height(p));
         }
+        clampedBlankTop = blankH1;
     }
+}
+
+void SetupView::faceBox(int i, P2& lo, P2& hi) const {
+    Bnd_Box box;
+    BRepBndLib::Add(faces[i].face.Moved(frameLocation(frame.u, frame.v, frame.w)), box, false);
+    double l[3], h[3];
+    boxGet(box, l, h);
+    lo = {l[0], l[1]}, hi = {h[0], h[1]};
 }
 
 AxisRays& SetupView::rays() const {

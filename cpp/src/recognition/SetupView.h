@@ -38,6 +38,8 @@ public:
     // h1: over an exterior region all of it is there to cut.
     double clampedBlankTop = 0;
 
+    // The box of face i (0-based) seen along the axis, in the slicing plane.
+    void faceBox(int i, P2& lo, P2& hi) const;
     // Rays along the axis, one caster per worker (a caster keeps per-face state).
     AxisRays& rays() const;
     // Whether the tool reaches face i from this side, computed once per face.
