@@ -304,6 +304,18 @@ def add_scripted_operation(doc, name):
 
 # --- Jobs and operations of the machining chain ---------------------------------------------
 
+def command(name, params=None):
+    """One Path command (a comment when name is in parentheses); parameters as FreeCAD's."""
+    import Path
+    return Path.Command(name, dict(params or {}))
+
+
+def path_from_commands(commands=()):
+    """A Path of Path commands (empty without them)."""
+    import Path
+    return Path.Path(list(commands))
+
+
 def path_of(commands):
     """A Path from (name, parameters) pairs; parameters are FreeCAD's (lengths mm, feeds mm/s)."""
     import Path

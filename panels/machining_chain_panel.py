@@ -18,9 +18,10 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import chain_edits, knowledge_base
+from aeronc.pipeline import chain_edits, knowledge_base
 from aeronc.panels.narrow import widen_dock
-from aeronc import machining_chain as mc
+from aeronc.pipeline import chain_building as mc
+from aeronc.panels.base import error_reporter
 
 COLUMNS = ["Chain", "Element", "Operation", "Tool", "Top", "Bottom", "Radial", "Axial", "Est. time"]
 TOOL_COLUMN = COLUMNS.index("Tool")
@@ -32,10 +33,7 @@ RED = "#b00020"
 DOCK_WIDTH = 760
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: machining chain", text)
+show_error = error_reporter("machining chain")  # tests may replace it
 
 
 def _mm(v):

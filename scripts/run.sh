@@ -5,6 +5,7 @@
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
+#   scripts/run.sh drill     datum holes and compensated drilling of a generated wing skin -> out/drill/
 #   scripts/run.sh impeller  a generated 2 x 9 impeller programmed in FreeCAD -> out/impeller/:
 #                            document, 840D program, report.html with pictures (docs/impeller.md)
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
@@ -46,6 +47,12 @@ case "${1:-}" in
     mkdir -p "$out"
     HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$ROOT/scripts/post_sample.py"
     ;;
+  drill)
+    out=$ROOT/out/drill
+    mkdir -p "$out"
+    HOME=$(fc_home drill) AERONC_OUT=$out freecadcmd "$ROOT/scripts/drill.py" 2>&1 |
+      awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
+    ;;
   impeller)
     out=$ROOT/out/impeller
     mkdir -p "$out"
@@ -63,7 +70,7 @@ case "${1:-}" in
     cmake --install "$BUILD" --component addon  # without the tests
     ;;
   *)
-    echo "usage: scripts/run.sh demo|post|impeller|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|drill|post|impeller|test|bench|install" >&2
     exit 2
     ;;
 esac

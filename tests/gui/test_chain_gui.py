@@ -43,7 +43,8 @@ def tool_node(item):
 
 def run():
     import json
-    from aeronc import _core, chain_edits, knowledge_base, machining_chain, makers, pathcompat
+    from aeronc import _core, makers, pathcompat
+    from aeronc.pipeline import chain_edits, knowledge_base, chain_building
     from aeronc.objects import machining_chain as chain_object
     from aeronc.panels import machining_chain_panel
     from aeronc.panels.machining_chain_panel import UNIT_ROLE, MachiningChainPanel
@@ -171,7 +172,7 @@ def run():
     check("one Machining chain", len(chains) == 1, len(chains))
     chain = chains[0]
     check("one undo step", doc.UndoCount == undo_before + 1, doc.UndoNames)
-    ops = {op.UnitId: op for op in machining_chain.chain_operations(chain)}
+    ops = {op.UnitId: op for op in chain_building.chain_operations(chain)}
     check("an operation per unit", sorted(ops) == sorted(units), (len(ops), len(units)))
     job = next(j for j in chain.Jobs if ops[first] in pathcompat.job_operations(j))
     ids = [op.UnitId for op in pathcompat.job_operations(job) if op.UnitId in ops]

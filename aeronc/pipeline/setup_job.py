@@ -12,7 +12,7 @@ made from the unit's cutting data (the knowledge base's n and feeds).
 import FreeCAD
 
 from aeronc import pathcompat
-from aeronc.tool_planning import TC_TAG
+from aeronc.pipeline.tool_planning import TC_TAG
 
 SETUP_TAG = "AeroNCSetup"  # property on the Jobs of a chain: the setup id
 
@@ -77,7 +77,7 @@ def blank_box(group):
 def cutting_operation(unit):
     """The knowledge base's cutting operation whose data a unit uses: drilling for the drill
     step, roughing for rough, corner, hole-milling and cut-off steps, finishing otherwise."""
-    from aeronc.chain_edits import setting_operation
+    from aeronc.pipeline.chain_edits import setting_operation
     return setting_operation(unit.get("step", ""))
 
 
@@ -166,7 +166,7 @@ def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb)
 
 def _copy_optimum(source, tc):
     """The optimiser's record travels with the speeds and feeds it chose."""
-    from aeronc.cutting_optimisation import RESULT_PROPERTY
+    from aeronc.pipeline.cutting_optimisation import RESULT_PROPERTY
     if RESULT_PROPERTY in source.PropertiesList:
         tc.addProperty(source.getTypeIdOfProperty(RESULT_PROPERTY), RESULT_PROPERTY, "AeroNC",
                        source.getDocumentationOfProperty(RESULT_PROPERTY), 0, True)

@@ -13,7 +13,8 @@ kept, or could not be kept, is listed in the chain's Messages.
 """
 import json
 
-from aeronc import chain_edits, knowledge_base, operations, pathcompat, setup_job
+from aeronc.pipeline import chain_edits, knowledge_base, setup_job
+from aeronc import operations, pathcompat
 from aeronc.errors import AeroNCError, MachiningChainError, from_core
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
