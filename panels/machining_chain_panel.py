@@ -57,6 +57,7 @@ class MachiningChainPanel:
         self.checked = True    # the shown checks belong to the shown chain
         self.chain = None
         self.notes = []
+        self.refused = {}  # unit JSON -> the toolpath core's reason or None: computed once per unit
         self.form = self._build_form()
         MachiningChainPanel.current = self
         QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
@@ -136,6 +137,11 @@ class MachiningChainPanel:
         self.unmachined = QtGui.QListWidget()
         self.unmachined.setMaximumHeight(70)
         lay.addWidget(self.unmachined, 1)
+        lay.addWidget(QtGui.QLabel("Not ready: no toolpath, or failed the check (the posts refuse them)"))
+        self.not_ready = QtGui.QListWidget()
+        self.not_ready.setMaximumHeight(70)
+        self.not_ready.setWordWrap(True)
+        lay.addWidget(self.not_ready, 1)
         return w
 
     # -- building -----------------------------------------------------------------------------
@@ -198,6 +204,7 @@ class MachiningChainPanel:
         self.tree.clear()
         units = chain_edits.units_by_id(chain)
         times = self._times()
+        not_ready = self.not_ready_units()
         part = self.group.Source.Label if self.group is not None and self.group.Source is not None else "part"
         root = QtGui.QTreeWidgetItem(self.tree, ["Part {}".format(part)])
         machine = QtGui.QTreeWidgetItem(root, ["Machine {}".format(chain.get("machine", ""))])
@@ -217,7 +224,7 @@ class MachiningChainPanel:
                             unit = units.get(int(uid))
                             if unit is None:
                                 continue
-                            item = self._unit_item(t_item, unit, times.get(int(uid), ""))
+                            item = self._unit_item(t_item, unit, times.get(int(uid), ""), not_ready.get(int(uid)))
                             if select is not None and int(uid) == select:
                                 selected_item = item
         self.tree.expandAll()
@@ -246,17 +253,58 @@ class MachiningChainPanel:
             self.unmachined.addItem(item)
         if not chain.get("unmachined"):
             self.unmachined.addItem("Every element has a unit.")
+        self.not_ready.clear()
+        for uid, why in sorted(not_ready.items()):
+            item = QtGui.QListWidgetItem("\u2718 Unit {} ({}): {}".format(uid, mc.operation_label(units[uid]), why)
+                                        if uid in units else "\u2718 Unit {}: {}".format(uid, why))
+            item.setForeground(QtGui.QBrush(QtGui.QColor(RED)))
+            item.setToolTip(why)
+            self.not_ready.addItem(item)
+        if not not_ready:
+            self.not_ready.addItem("Every enabled unit has a toolpath.")
         self._fill_checks()
 
-    def _unit_item(self, parent, unit, est):
+    def not_ready_units(self):
+        """{unit id: why} of the enabled units that would get no toolpath (the toolpath core
+        refuses them), and of the operations already made whose check failed or that have no
+        toolpath (their Check and Note), while the chain is the one they were made from."""
+        import json
+        from aeronc.post import readiness
+        out = {}
+        if self.chain is None:
+            return out
+        units = [u for u in self.chain.get("units", []) if u.get("enabled", True)]
+        fresh = [u for u in units if json.dumps(u, sort_keys=True) not in self.refused]
+        if fresh:
+            found = mc.draft_refusals({"units": fresh})
+            for u in fresh:
+                self.refused[json.dumps(u, sort_keys=True)] = found.get(int(u["id"]))
+        for u in units:
+            why = self.refused.get(json.dumps(u, sort_keys=True))
+            if why:
+                out[int(u["id"])] = "no toolpath: " + why
+        if self.chain_obj is not None and not self.rebuilt:
+            enabled = {int(u["id"]) for u in units}
+            for op in mc.chain_operations(self.chain_obj):
+                if op.UnitId in enabled and op.UnitId not in out and getattr(op, "Check", "") in readiness.NOT_READY:
+                    out[op.UnitId] = op.Note or op.Check
+        return out
+
+    def _unit_item(self, parent, unit, est, not_ready=None):
         item = QtGui.QTreeWidgetItem(parent, [
-            "Unit {}".format(unit["id"]), str(unit.get("element", "")), str(unit.get("operation", "")),
-            str(unit.get("tool", "")), _mm(unit.get("top")), _mm(unit.get("bottom")),
+            "Unit {}{}".format(unit["id"], " \u2718 not ready" if not_ready else ""), str(unit.get("element", "")),
+            str(unit.get("operation", "")), str(unit.get("tool", "")), _mm(unit.get("top")), _mm(unit.get("bottom")),
             _mm(unit.get("radialAllowance")), _mm(unit.get("axialAllowance")), est or ""])
         item.setData(0, UNIT_ROLE, int(unit["id"]))
         item.setFlags(item.flags() | QtCore.Qt.ItemIsUserCheckable)
         item.setCheckState(0, QtCore.Qt.Checked if unit.get("enabled", True) else QtCore.Qt.Unchecked)
-        item.setToolTip(0, "Untick to leave the unit out of the program")
+        if not_ready:
+            for c in range(len(COLUMNS)):
+                item.setForeground(c, QtGui.QBrush(QtGui.QColor(RED)))
+            item.setToolTip(0, "Not ready: {}. The posts refuse it (or leave it out with --skip-failed); change "
+                               "its tool or untick it".format(not_ready))
+        else:
+            item.setToolTip(0, "Untick to leave the unit out of the program")
         return item
 
     def unit_items(self):

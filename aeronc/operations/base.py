@@ -11,6 +11,7 @@ the chain keeps it (machining_chain.update reports what it kept). The proxy keep
 everything is in properties and survives save and reopen.
 """
 import json
+import re
 
 
 from aeronc import pathcompat
@@ -225,7 +226,7 @@ class MachiningOperation(BaseProxy):
             obj.Path = pathcompat.path_of([])
             obj.CutLength = obj.RapidLength = 0.0
             obj.CycleTime = ""
-            mark(obj, readiness.NO_TOOLPATH, str(e))
+            mark(obj, readiness.NO_TOOLPATH, re.sub(r"^unit \d+: ", "", str(e)))  # the batch's index: not the user's
             raise
         obj.Path = pathcompat.path_from_gcode(program["gcode"])
         obj.CutLength = float(program["cutLength"])

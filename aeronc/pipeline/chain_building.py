@@ -280,7 +280,8 @@ def _compute_paths(jobs, progress):
         op.purgeTouched()  # computed: the document's recompute below need not do it again
     if jobs:
         jobs[0].Document.recompute()
-    return ["{}: no toolpath: {}".format(op.Label, op.getStatusString()) for op in ops if "Invalid" in op.State]
+    return ["{}: no toolpath: {}".format(op.Label, getattr(op, "Note", "") or op.getStatusString())
+            for op in ops if "Invalid" in op.State]
 
 
 class _DraftOperation:
