@@ -264,8 +264,10 @@ def _unsafe(report):
     return "{} gouging move(s), {} rapid(s) through material".format(gouges, collisions)
 
 
-LEFT_OUT_KINDS = {"gouge": "gouge the part", "rapid": "rapid through material", "no toolpath": "have no toolpath",
-                  "dependent": "depend on those"}
+LEFT_OUT_KINDS = {"gouge": ("gouges the part", "gouge the part"),
+                  "rapid": ("rapids through material", "rapid through material"),
+                  "no toolpath": ("has no toolpath", "have no toolpath"),
+                  "dependent": ("depends on those", "depend on those")}
 
 
 def verdict_of(data):
@@ -283,11 +285,10 @@ def verdict_of(data):
     if left_out:
         kinds = {}
         for e in left_out:
-            kind = LEFT_OUT_KINDS.get(e.get("kind"), e.get("kind"))
-            kinds[kind] = kinds.get(kind, 0) + 1
+            kinds[e.get("kind")] = kinds.get(e.get("kind"), 0) + 1
         parts.append("{} operation{} left out of the programs ({}): {}".format(
             len(left_out), "" if len(left_out) == 1 else "s",
-            ", ".join("{} {}".format(n, k) for k, n in kinds.items()),
+            ", ".join("{} {}".format(n, LEFT_OUT_KINDS.get(k, (k, k))[0 if n == 1 else 1]) for k, n in kinds.items()),
             ", ".join(e["label"] for e in left_out[:6]) + (" ..." if len(left_out) > 6 else "")))
     if incomplete:
         parts.append(incomplete)

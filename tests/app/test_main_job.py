@@ -146,7 +146,7 @@ class MainJobTest(unittest.TestCase):
             with self.assertRaises(main_job.MainJobError) as ctx:
                 main_job.run(part, out, say=lines.append)
         self.assertIn("NO PROGRAM", str(ctx.exception))
-        self.assertIn("have no toolpath", str(ctx.exception))
+        self.assertIn("no toolpath", str(ctx.exception))
         self.assertEqual(_programs_in(out), [])
         self.assertTrue(_banner(out).startswith("NO PROGRAM"))
         self.assertTrue(any(l.strip().startswith("NO PROGRAM") for l in lines))
