@@ -189,13 +189,11 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
         measured = sorted(set(finished) | set(against_part))
         return simulate(part_shape, sim_ops, blank, measured, elements, cell_size), len(sim_ops)
     setup_of_element = {"E{}".format(e["id"]): e.get("setup") for e in result.get("elements", [])}
-    face_element = result.get("faceElement", [])
-    unclaimed = set(result.get("unclaimedFaces", []))
     for s in setups:
         s["elements"] = {k: v for k, v in elements.items() if setup_of_element.get(k) == s["id"]}
-        own = {f for f in against_part if f - 1 < len(face_element) and face_element[f - 1] >= 0
-               and setup_of_element.get("E{}".format(face_element[f - 1])) == s["id"]}
-        s["faces"] = sorted(own | unclaimed | set().union(*[set(v) for v in s["elements"].values()]))
+        # Each setup measures every face of the part: what another setup removed is still stock in
+        # this one's model, so a face is judged by the setup that left least on it (_merged).
+        s["faces"] = sorted(set(against_part) | set().union(*[set(v) for v in s["elements"].values()]))
     return simulate_by_setup(part_shape, setups, blank, cell_size), len(sim_ops)
 
 
