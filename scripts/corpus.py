@@ -1,7 +1,8 @@
 """The main job on every STEP part of the shared data, one FreeCAD process per part, and a table.
 
     python3 scripts/corpus.py [--data ../shared/data] [--out out/corpus] [--cell 1.0] [--mfcad]
-                              [--parts NAME,...] [--timeout S] [--machine M] [--large M|none] [--check]
+                              [--parts NAME,...] [--timeout S] [--machine M] [--large M|none]
+                              [--no-pictures] [--check]
 
 (`scripts/run.sh corpus` runs it with the installed addon.) For each part (nist/*.stp,
 real/*.stp, and with --mfcad the MFCAD sample) it runs scripts/demo.py into OUT/<part>/ and reads
@@ -41,7 +42,7 @@ def parts_of(data, mfcad=False, only=None):
     return found
 
 
-def run_part(part, out, cell, timeout, machine, folder_name=None):
+def run_part(part, out, cell, timeout, machine, folder_name=None, pictures=True):
     """Run the main job on one part in its own FreeCAD; returns (run.json's dict or None, seconds,
     the last line it printed on stderr)."""
     name = os.path.splitext(os.path.basename(part))[0]
@@ -51,7 +52,7 @@ def run_part(part, out, cell, timeout, machine, folder_name=None):
     if os.path.exists(summary):
         os.unlink(summary)  # a crash must not pass for the last run's result
     env = dict(os.environ, AERONC_PART=os.path.abspath(part), AERONC_OUT=folder, AERONC_CELL=str(cell),
-               AERONC_MACHINE=machine)
+               AERONC_MACHINE=machine, AERONC_PICTURES="1" if pictures else "0")
     t0 = time.perf_counter()
     try:
         p = subprocess.run(["freecadcmd", os.path.join(ROOT, "scripts", "demo.py")], env=env, capture_output=True,
@@ -189,6 +190,7 @@ def main(argv):
     a.add_argument("--machine", default="AC-5AX", help="the machine the main job posts for")
     a.add_argument("--large", default="AC-5AX-L",
                    help="the machine for a part beyond the first one's travel ('none': no second run)")
+    a.add_argument("--no-pictures", action="store_true", help="skip the main job's pictures (the ctest: time)")
     a.add_argument("--check", action="store_true", help="exit 1 on a gouge or colliding rapid in a delivered program")
     args = a.parse_args(argv)
     parts = parts_of(args.data, args.mfcad, [p for p in args.parts.split(",") if p])
@@ -202,7 +204,8 @@ def main(argv):
         while True:
             name = os.path.splitext(os.path.basename(part))[0]
             run, seconds, last = run_part(part, args.out, args.cell, args.timeout, machine,
-                                          name if machine == args.machine else "{}.{}".format(name, machine))
+                                          name if machine == args.machine else "{}.{}".format(name, machine),
+                                          not args.no_pictures)
             row = row_of(part, run, seconds, last, machine)
             rows.append(row)
             print("[{}/{}] {:<28s} {:<9s} {:>6.0f} s  {}".format(
@@ -218,8 +221,9 @@ def main(argv):
     bad = [(r["part"], unsafe(r)) for r in rows if unsafe(r)]
     for name, why in bad:
         print("corpus: {}: {}".format(name, why), file=sys.stderr)
-    print("corpus: {} parts, {} delivered programs, {} unsafe; {}".format(
-        len(rows), sum(1 for r in rows if r.get("delivered")), len(bad), os.path.join(args.out, "summary.md")))
+    print("corpus: {} parts in {} runs, {} with programs delivered, {} unsafe; {}".format(
+        len(parts), len(rows), sum(1 for r in rows if r.get("delivered")), len(bad),
+        os.path.join(args.out, "summary.md")))
     return 1 if args.check and bad else 0
 
 

@@ -355,13 +355,13 @@ STAGES = (("read part", read_part), ("recognise", recognise), ("select tools", s
 
 
 def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,
-        say=None):
+        say=None, pictures=True):
     """Run the main job on a STEP (or BREP) part; returns the report's data (dict), whose
     "verdict" says whether the programs are ready. Raises RunError (MainJobError) naming the
     stage that failed, or saying that no program could be delivered; report.html and run.json
     are written in either case, and no program is left that the gate did not pass.
     say(line) receives the progress lines; by default they go to the terminal while FreeCAD's
-    own output goes to freecad.log."""
+    own output goes to freecad.log. pictures=False skips the pictures (a corpus run's time)."""
     import shutil
     import tempfile
     run_ = Run(out, say)
@@ -374,6 +374,8 @@ def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integra
         with run_.console():
             try:
                 for name, stage in STAGES:
+                    if name == "pictures" and not pictures:
+                        continue
                     with run_.stage(name):
                         text = stage(job)
                     run_.report(text)
