@@ -221,7 +221,7 @@ def _sync_jobs(obj, chain, part, blank, kb, progress):
     kept = []
     for setup in chain.get("setups", []):
         job = jobs.pop(int(setup["id"]), None) or setup_job.make_job(doc, part, setup)
-        setup_job.place(job, part, setup, blank)
+        setup_job.place(job, part, setup, blank, obj.Machine)
         doc.recompute([job.Stock] + pathcompat.job_models(job))
         setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == int(setup["id"])]
         kept.append((job, setup_units))

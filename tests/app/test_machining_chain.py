@@ -122,6 +122,14 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             # The blank: the part's box (no allowance), seen in the same frame.
             for g, w in zip(got_stock, want):
                 self.assertAlmostEqual(g, w, places=6)
+            # FreeCAD's Post command writes what the main job writes: AeroNC's post for the
+            # machine, the blank centred on the table.
+            self.assertEqual(job.PostProcessor, "aeronc_840d")
+            zero = [-(want[0] + want[3]) / 2, -(want[1] + want[4]) / 2, -want[2]]
+            self.assertIn("--machine {} --part-zero=".format(chain.Machine), job.PostProcessorArgs)
+            given = [float(v) for v in job.PostProcessorArgs.split("--part-zero=")[1].split(",")]
+            for g, w in zip(given, zero):
+                self.assertAlmostEqual(g, w, places=5)
         # The truth's -Z pockets: in the -Z Job just above the floor is air, just below is part.
         job = next(j for j in chain.Jobs if getattr(j, setup_job.SETUP_TAG) ==
                    next(s["id"] for s in setups if s["name"] == "-Z"))
