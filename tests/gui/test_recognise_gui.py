@@ -70,6 +70,7 @@ def run():
     check("AeroNC toolbar shown", bars and bars[0].isVisible() and
           any(a.text() == "Recognise machining features" for a in bars[0].actions()))
     if bars:
+        pump(1.0)  # the toolbar moves to its row after the workbench is shown
         hidden = [a.text() for a in bars[0].actions()
                   if not a.isSeparator() and not (bars[0].widgetForAction(a) and bars[0].widgetForAction(a).isVisible())]
         check("every AeroNC button on the toolbar, none in its overflow menu", not hidden,
@@ -190,16 +191,28 @@ def run():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(el)
     pump()
-    sel = [s for s in Gui.Selection.getSelectionEx() if s.Object == part]
+    pump()
     want = set(el.Faces[0][1])
-    check("element selection highlights its faces", sel and set(sel[0].SubElementNames) == want,
-          [s.SubElementNames for s in sel])
+    check("selecting an element selects the element alone (its properties in the editor)",
+          [o.Name for o in Gui.Selection.getSelection()] == [el.Name], [o.Name for o in Gui.Selection.getSelection()])
+    from aeronc.viewproviders.face_highlight import HIGHLIGHT
+    painted = {"Face{}".format(i + 1) for i, c in enumerate(part.ViewObject.DiffuseColor)
+               if all(abs(a - b) < 1e-3 for a, b in zip(c[:3], HIGHLIGHT))}
+    check("element selection paints its faces in the selection colour", painted == want, (painted, want))
+    # FreeCAD's selection green is no role colour: selected faces stand out on any role.
+    from aeronc.feature_colours import ROLE_COLOURS
+    check("no role has the selection colour", all(max(abs(a - b) for a, b in zip(c, HIGHLIGHT)) > 0.2
+                                                  for c in ROLE_COLOURS.values()))
     # What a person sees: the tree opened on the machining-domain tree, an element selected.
     for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
         tree_view.expandAll()
     window = window_shot(doc, "aeronc_main_window")
     check("main window screenshot saved", os.path.getsize(window) > 20000, window)
     Gui.Selection.clearSelection()
+    pump()
+    painted = [i for i, c in enumerate(part.ViewObject.DiffuseColor)
+               if all(abs(a - b) < 1e-3 for a, b in zip(c[:3], HIGHLIGHT))]
+    check("the role colours come back when the element is no longer selected", not painted, painted)
 
     # double-click: the panel edits the group; OK recognises again into it
     count = group.ElementCount
