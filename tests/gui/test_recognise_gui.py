@@ -127,6 +127,14 @@ def run():
     pump()
     panel = RecognisePanel.current
     check("task panel open", Gui.Control.activeDialog() and panel is not None)
+    from aeronc.feature_colours import ROLE_COLOURS as _roles
+    swatches = panel.form.findChildren(QtGui.QLabel, QtCore.QRegExp("legend_.*")) if panel else []
+    check("the panel's legend shows the role colours", len(swatches) == len(recognise_panel.LEGEND) and
+          all(r in _roles for r, _ in recognise_panel.LEGEND) and
+          {"wall", "floor", "unclaimed"} <= {s.objectName()[len("legend_"):] for s in swatches},
+          [s.objectName() for s in swatches])
+    shot = window_shot(doc, "aeronc_recognise_panel")
+    check("panel screenshot saved", os.path.getsize(shot) > 20000, shot)
     panel.direction.setCurrentIndex(3)  # +Z and -Z
 
     # Cancel in the progress dialog: nothing added, no error box, the panel stays open.
