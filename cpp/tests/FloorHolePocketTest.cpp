@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -221,13 +222,24 @@ std::vector<DomainTree> recogniseBothWays(const TopoDS_Shape& part, double x, do
     return {recognise(part, RecogniseOptions{}), recognise(part, job)};
 }
 
+// The plate as built, and as read back from the STEP file a user would hand over.
+std::vector<TopoDS_Shape> asBuiltAndFromStep(const TopoDS_Shape& part, const std::string& name) {
+    const std::string path = (std::filesystem::temp_directory_path() / ("aeronc_floorhole_" + name + ".step")).string();
+    writeStep(part, path);
+    const TopoDS_Shape read = loadPart(path);
+    std::filesystem::remove(path);
+    return {part, read};
+}
+
 void expectPlate(double x, double y, const std::vector<FloorPocket>& pockets) {
-    const TopoDS_Shape part = plate(x, y, pockets);
-    const std::vector<FaceBox> boxes = faceBoxes(part);
-    for (const DomainTree& t : recogniseBothWays(part, x, y)) {
-        EXPECT_EQ(t.elements.size(), 2 * pockets.size());
-        EXPECT_TRUE(t.unclaimedFaces.empty());
-        for (const FloorPocket& p : pockets) expectFloorPocket(t, boxes, p);
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    for (const TopoDS_Shape& part : asBuiltAndFromStep(plate(x, y, pockets), name)) {
+        const std::vector<FaceBox> boxes = faceBoxes(part);
+        for (const DomainTree& t : recogniseBothWays(part, x, y)) {
+            EXPECT_EQ(t.elements.size(), 2 * pockets.size());
+            EXPECT_TRUE(t.unclaimedFaces.empty());
+            for (const FloorPocket& p : pockets) expectFloorPocket(t, boxes, p);
+        }
     }
 }
 
