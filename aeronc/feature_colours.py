@@ -18,7 +18,7 @@ ROLE_COLOURS = {
     "stock": (0.55, 0.55, 0.55),             # grey
     "unclaimed": (0.10, 0.10, 0.10),         # near black: stands out as "not recognised"
 }
-# Impeller roles (aeronc.impeller.face_role_names).
+# Impeller roles (aeronc.impeller.recognition.face_role_names).
 ROLE_COLOURS.update({
     "main_blade": (0.25, 0.45, 0.95),        # blue
     "splitter_blade": (0.20, 0.75, 0.25),    # green

@@ -11,8 +11,9 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import recognition
+from aeronc.pipeline import recognition
 from aeronc.panels.narrow import ElidedLabel, compact_combo, wrapping_form
+from aeronc.panels.base import error_reporter
 
 DIRECTION_CHOICES = [  # (text, directions; None = custom vector)
     ("Automatic (from the part)", []),
@@ -33,10 +34,7 @@ def _spin(value, lo, hi, decimals, suffix="", step=1.0):
     return box
 
 
-def show_error(text):
-    """Report an error to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: recognition failed", text)
+show_error = error_reporter("recognition failed")  # tests may replace it
 
 
 class RecognisePanel:

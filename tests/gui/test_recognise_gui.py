@@ -69,6 +69,11 @@ def run():
     bars = [t for t in mw.findChildren(QtGui.QToolBar) if t.objectName() == "AeroNC"]
     check("AeroNC toolbar shown", bars and bars[0].isVisible() and
           any(a.text() == "Recognise machining features" for a in bars[0].actions()))
+    if bars:
+        hidden = [a.text() for a in bars[0].actions()
+                  if not a.isSeparator() and not (bars[0].widgetForAction(a) and bars[0].widgetForAction(a).isVisible())]
+        check("every AeroNC button on the toolbar, none in its overflow menu", not hidden,
+              (hidden, mw.toolBarBreak(bars[0]), bars[0].geometry(), mw.width()))
     menus = {a.text().replace("&", ""): [m.text() for m in a.menu().actions()]
              for a in mw.menuBar().actions() if a.menu()}
     check("AeroNC menu in Path's menu bar", "Recognise machining features" in menus.get("AeroNC", []),
