@@ -1,4 +1,5 @@
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
 
@@ -12,8 +13,6 @@
 namespace aeronc::kb {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A table read through the editor's interface, cells by column name.
 class Rows {
@@ -162,7 +161,7 @@ chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<too
         toolselect::ToolSetting s;
         s.tool = static_cast<int>(i);
         s.operation = op;
-        s.spindleRpm = 1000.0 * c.vc / (kPi * t.diameter);
+        s.spindleRpm = spindleSpeed(c.vc, t.diameter);
         if (maxRpm > 0) s.spindleRpm = std::min(s.spindleRpm, maxRpm);
         s.feedMmMin = c.fz * t.flutes * s.spindleRpm;
         s.plungeFeedMmMin = op == "drilling" ? s.feedMmMin : s.feedMmMin * plungeRatio;

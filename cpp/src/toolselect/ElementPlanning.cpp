@@ -1,6 +1,7 @@
 #include <aeronc/toolselect/ElementPlanning.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 #include <aeronc/recognition/SetupFrame.h>
 
 #include <nlohmann/json.hpp>
@@ -19,7 +20,6 @@ using recognition::ElementType;
 
 namespace {
 constexpr double kDrillTol = 0.01;  // mm: a drill of the hole's diameter within this
-constexpr double kPi = 3.14159265358979323846;
 
 std::string fmt(double x) {
     std::ostringstream s;
@@ -78,7 +78,7 @@ PocketGeometry pocketGeometry(const DomainElement& e, const Vec3& setupDirection
 CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta,
                                 double maxSpindleRpm) {
     CuttingData d;
-    double n = 1000.0 * vc / (kPi * tool.diameter);  // r/min
+    double n = spindleSpeed(vc, tool.diameter);  // r/min
     if (maxSpindleRpm > 0) n = std::min(n, maxSpindleRpm);
     d.ae = aeRatio * tool.diameter;
     d.feedPerMinute = fz * tool.flutes * n;
