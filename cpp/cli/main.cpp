@@ -37,7 +37,7 @@
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 #include <aeronc/testparts/PanelGenerator.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
