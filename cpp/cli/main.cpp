@@ -12,8 +12,8 @@
 //                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
 //   aeronc impeller PART [--json OUT]
 //   aeronc impeller-part OUT.(step|brep) [--spec JSON] [--truth TRUTH.json]
-//   aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]
-//                           [--resources DIR]
+//   aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--machine NAME] [--stations N]
+//                           [--channels N] [--resources DIR]
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/core/Error.h>
 #include <aeronc/brep/OcctFaults.h>
@@ -24,6 +24,7 @@
 #include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 #include <aeronc/impeller/Blank.h>
+#include <aeronc/kb/ImpellerProgram.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kinematics/MachineModel.h>
 #include <aeronc/post/Apt.h>
@@ -85,10 +86,10 @@ const char* kUsage =
     "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"
     "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
     "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"
-    "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]\n"
-    "                          [--resources DIR]\n"
-    "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, APT and the\n"
-    "       840D program for the AC-5AX machine under TRAORI, in DIR; docs/impeller.md)\n"
+    "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--machine NAME] [--stations N]\n"
+    "                          [--channels N] [--resources DIR]\n"
+    "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, cutting data,\n"
+    "       APT and the 840D program under TRAORI for the machine (default AC-5AX), in DIR; docs/impeller.md)\n"
     "  --time-limit S (recognise, select-tools PART, impeller): give up reading and recognising the part after S seconds\n";
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
@@ -239,142 +240,114 @@ int impellerCmd(int argc, char** argv) {
     return 0;
 }
 
-// Spindle speed and feed of a cutter from the knowledge base's cutting data, capped at the machine's.
-void cuttingData(const aeronc::kb::KnowledgeBase& kb, const std::string& material, const std::string& operation,
-                 const aeronc::impeller::CuttingTool& t, aeronc::impellerpath::CutterShape& c) {
-    const auto cc = kb.cuttingCondition(material, t.material, operation, t.diameter);
-    const auto m = kb.machine("AC-5AX");
-    c.rpm = std::min(1000 * cc.vc / (3.14159265358979323846 * t.diameter), m.maxSpindleRpm);
-    c.feed = std::min(cc.fz * std::max(t.flutes, 1) * c.rpm, m.maxFeedMmMin);
+nlohmann::json cuttingToJson(const std::vector<aeronc::kb::ToolCutting>& cutting) {
+    auto out = nlohmann::json::array();
+    for (const auto& c : cutting)
+        out.push_back({{"tool", c.tool}, {"operation", c.operation}, {"rpm", c.rpm}, {"feed", c.feed},
+                       {"plungeFeed", c.plungeFeed}, {"fz", c.fz}, {"ap", c.ap}, {"ae", c.ae},
+                       {"length", c.length}, {"active", c.active}, {"steps", c.steps}});
+    return out;
 }
 
 int impellerProgramCmd(int argc, char** argv) {
     using namespace aeronc;
     if (argc < 3) throw inputError("impeller-program needs a part file");
     const std::string part = argv[2];
-    std::string kbPath, out, resources, material = "7050-T7451";
-    impellerpath::PathOptions opt;
+    std::string kbPath, out, resources;
+    kb::ImpellerProgramOptions opt;
     forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
         if (a == "--kb") kbPath = next();
         else if (a == "--out") out = next();
         else if (a == "--resources") resources = next();
-        else if (a == "--material") material = next();
-        else if (a == "--stations") opt.stations = std::stoi(next());
-        else if (a == "--channels") opt.channels = std::stoi(next());
+        else if (a == "--material") opt.material = next();
+        else if (a == "--machine") opt.machine = next();
+        else if (a == "--stations") opt.paths.stations = std::stoi(next());
+        else if (a == "--channels") opt.paths.channels = std::stoi(next());
         else return false;
         return true;
     });
     if (kbPath.empty() || out.empty()) throw inputError("impeller-program needs --kb and --out");
-    if (opt.stations < 2 || opt.stations > 200) throw inputError("--stations wants 2 to 200");
+    if (opt.paths.stations < 2 || opt.paths.stations > 200) throw inputError("--stations wants 2 to 200");
     const auto kbDir = kbResources(resources, argv[0]);
     const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return kbDir.string(); });
-    const auto machine = kinematics::loadMachineFile((kbDir / ".." / "machines" / "AC-5AX.json").string());
+    kb.machine(opt.machine);  // its limits; an unknown one names the known (the material: programImpeller)
+    // The machine's kinematics for the post: the machine file of the same name.
+    const std::filesystem::path machineFile = kbDir / ".." / "machines" / (opt.machine + ".json");
+    if (!std::filesystem::is_regular_file(machineFile))
+        throw inputError("machine " + opt.machine + ": no machine file " + machineFile.lexically_normal().string());
+    const auto machine = kinematics::loadMachineFile(machineFile.string());
     std::filesystem::create_directories(out);
     using Clock = std::chrono::steady_clock;
     auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-    TopoDS_Shape solid;
     impeller::ImpellerFeatures f;
     impeller::ImpellerDimensions d;
     impeller::ProcessRoute route;
-    impellerpath::ImpellerProgram prog;
-    impellerpath::CheckResult again;
-    impellerpath::CutterShape rougher, finisher;
-    std::optional<impellerpath::CutterShape> filletBall;
-    impellerpath::CheckResult rapids;
+    kb::ImpellerProgramming prog;
+    impellerpath::CheckResult again, rapids;
     double tRecognise = 0, tPaths = 0, tCheck = 0;
-    std::string apt;
-    runCatchingOcctFaults(
-        [&] {
-            solid = loadPart(part);
-            auto t0 = Clock::now();
-            f = impeller::recogniseImpeller(solid);
-            d = impeller::measureImpeller(solid, f);
-            tRecognise = secs(t0);
-            route = kb::planImpellerRoute(kb, f, d);
-            int number = 0;
-            for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades" &&
-                                s.operation != "finish_fillets"))
-                    continue;
-                if (s.operation == "finish_fillets") filletBall.emplace();
-                auto& c = s.operation == "rough_channels" ? rougher : s.operation == "finish_blades" ? finisher : *filletBall;
-                c.id = s.tool->id, c.number = ++number, c.tipRadius = s.tool->diameter / 2;
-                c.taperDeg = s.tool->taperDeg, c.fluteLength = s.tool->fluteLength, c.reach = s.tool->reach;
-                c.shankRadius = s.tool->shankDiameter / 2;
-                cuttingData(kb, material, s.operation == "rough_channels" ? "roughing" : "finishing", *s.tool, c);
-                if (s.operation == "rough_channels") opt.roughAllowance = s.allowance;
-            }
-            if (rougher.id.empty() || finisher.id.empty())
-                throw inputError("the impeller route has no channel roughing or no blade finishing step");
-            t0 = Clock::now();
-            prog = impellerpath::impellerToolpaths(solid, f, d, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
-            tPaths = secs(t0);
-            apt = post::writeApt(impellerpath::toClProgram(prog, "IMPELLER"));
-            t0 = Clock::now();
-            std::vector<impellerpath::CutterShape> cutters{rougher, finisher};
-            if (filletBall) cutters.push_back(*filletBall);
-            const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
-            again = impellerpath::checkProgram(solid, f, reread);
-            rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.blankAllowance), f, reread,
-                                               opt.rapidClearance - 1e-6);
-            tCheck = secs(t0);
-        },
-        part);
-    // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
-    impellerpath::AxialProgram axial;
-    std::string axialApt;
-    runCatchingOcctFaults(
-        [&] {
-            impellerpath::AxialCutters ac;
-            int number = filletBall ? 3 : 2;
-            for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "face" && s.operation != "drill" && s.operation != "bore")) continue;
-                auto c = impellerpath::flatCutter(s.tool->id, ++number, s.tool->diameter, s.tool->fluteLength,
-                                                  s.tool->reach, 1, 1);
-                cuttingData(kb, material,
-                            s.operation == "face" ? "roughing" : s.operation == "drill" ? "drilling" : "finishing",
-                            *s.tool, c);
-                (s.operation == "face" ? ac.faceMill : s.operation == "drill" ? ac.drill : ac.boringMill) = c;
-            }
-            impellerpath::AxialOptions ao;
-            for (const auto& s : route.steps)
-                if (s.operation == "drill") ao.drillAllowance = s.allowance;
-            axial = impellerpath::axialToolpaths(solid, f, d, ac, ao);
-            impellerpath::ImpellerProgram p;
-            p.operations = axial.operations;
-            axialApt = post::writeApt(impellerpath::toClProgram(p, "IMPELLER_AXIAL"));
-        },
-        part);
+    std::string apt, axialApt;
+    runCatchingOcctFaults([&] {
+        const TopoDS_Shape solid = loadPart(part);
+        auto t0 = Clock::now();
+        f = impeller::recogniseImpeller(solid);
+        d = impeller::measureImpeller(solid, f);
+        tRecognise = secs(t0);
+        route = kb::planImpellerRoute(kb, f, d);
+        t0 = Clock::now();
+        prog = kb::programImpeller(solid, f, d, route.steps, kb, opt);
+        tPaths = secs(t0);
+        apt = post::writeApt(impellerpath::toClProgram(prog.fiveAxis, "IMPELLER"));
+        // The program as posted, read back and checked again: the gouge and holder check, the
+        // rapids against the blank.
+        t0 = Clock::now();
+        std::vector<impellerpath::CutterShape> cutters;
+        for (const auto& op : prog.fiveAxis.operations) cutters.push_back(op.cutter);
+        const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
+        again = impellerpath::checkProgram(solid, f, reread);
+        rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.paths.blankAllowance), f, reread,
+                                           opt.paths.rapidClearance - 1e-6);
+        tCheck = secs(t0);
+        // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
+        impellerpath::ImpellerProgram axial;
+        axial.operations = prog.axial.operations;
+        axialApt = post::writeApt(impellerpath::toClProgram(axial, "IMPELLER_AXIAL"));
+    }, part);
     post::NcOptions nc;
     nc.programName = "IMPELLER";
     const auto posted = post::postApt(apt, machine, nc, {});
+    const auto& ops = prog.fiveAxis.operations;
     auto doc = nlohmann::json::parse(impeller::impellerToJson(f, d));
     doc["route"] = nlohmann::json::parse(impeller::routeToJson(route));
     size_t moves = 0;
-    for (const auto& op : prog.operations) moves += op.moves.size();
+    for (const auto& op : ops) moves += op.moves.size();
+    auto cutterJson = [](const impellerpath::CutterShape& c) {
+        return nlohmann::json{{"id", c.id}, {"number", c.number}, {"rpm", c.rpm}, {"feed", c.feed}};
+    };
     doc["toolpaths"] = {{"moves", moves},
                         {"positionsChecked", again.positions},
                         {"maxGougeMm", again.maxGouge},
                         {"holderCollisions", again.holderCollisions},
-                        {"tilted", prog.check.tilted},
-                        {"links", prog.check.links},
-                        {"linkCollisions", prog.check.linkCollisions},
+                        {"tilted", prog.fiveAxis.check.tilted},
+                        {"links", prog.fiveAxis.check.links},
+                        {"linkCollisions", prog.fiveAxis.check.linkCollisions},
                         {"rapidsChecked", rapids.links},
                         {"rapidCollisions", rapids.linkCollisions},
                         {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
-                        {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
-                        {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
+                        {"rougher", cutterJson(ops.at(0).cutter)},
+                        {"finisher", cutterJson(ops.at(1).cutter)}};
+    doc["machine"] = opt.machine;
+    doc["cutting"] = cuttingToJson(prog.cutting);
     nlohmann::json axialOps = nlohmann::json::object();
-    for (const auto& op : axial.operations) {
+    for (const auto& op : prog.axial.operations) {
         int cutting = 0;
         for (const auto& m : op.moves) cutting += !m.rapid;
         axialOps[op.name] = {{"tool", op.cutter.id}, {"moves", op.moves.size()}, {"cutting", cutting}};
     }
     doc["axialOperations"] = {{"operations", axialOps},
-                              {"positionsChecked", axial.check.positions},
-                              {"maxGougeMm", axial.check.maxGouge},
-                              {"holderCollisions", axial.check.holderCollisions},
-                              {"notes", axial.notes}};
+                              {"positionsChecked", prog.axial.check.positions},
+                              {"maxGougeMm", prog.axial.check.maxGouge},
+                              {"holderCollisions", prog.axial.check.holderCollisions},
+                              {"notes", prog.axial.notes}};
     const std::filesystem::path dir(out);
     writeText((dir / "impeller.json").string(), doc.dump(1));
     writeText((dir / "IMPELLER.apt").string(), apt);
@@ -383,12 +356,12 @@ int impellerProgramCmd(int argc, char** argv) {
     std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
               << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
               << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
-              << " holder collisions, " << prog.check.tilted << " tilted; " << rapids.links << " rapids, "
-              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D in "
-              << (dir / "IMPELLER.mpf").string() << "\n";
+              << " holder collisions, " << prog.fiveAxis.check.tilted << " tilted; " << rapids.links << " rapids, "
+              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D for the "
+              << opt.machine << " in " << (dir / "IMPELLER.mpf").string() << "\n";
     return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
-                   prog.check.linkCollisions == 0 && axial.check.maxGouge <= 0.01 &&
-                   axial.check.holderCollisions == 0
+                   prog.fiveAxis.check.linkCollisions == 0 && prog.axial.check.maxGouge <= 0.01 &&
+                   prog.axial.check.holderCollisions == 0
                ? 0
                : 1;
 }
