@@ -78,6 +78,28 @@ if "$cli" chain "$tmp/p.step" --directions +Z --kb "$tmp/kb.sqlite" --material 7
 else
   failed=$((failed + 1)); echo "FAIL chain writes JSON, the same from the part and the tree"
 fi
+# chain reads a part as the other commands do (a child process the OCCT fault guard and
+# --time-limit watch), and takes the tool plan select-tools wrote (--tool-plan) as it is.
+if "$cli" chain "$tmp/p.step" --directions +Z --kb "$tmp/kb.sqlite" --material 7050-T7451 --time-limit 60 \
+     --json "$tmp/chain_limit.json" 2>/dev/null && cmp -s "$tmp/chain.json" "$tmp/chain_limit.json"; then
+  passed=$((passed + 1)); echo "ok   chain PART --time-limit"
+else
+  failed=$((failed + 1)); echo "FAIL chain PART --time-limit"
+fi
+if "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 \
+     --json "$tmp/plan_chain.json" 2>/dev/null && cmp -s "$tmp/tree_chain.json" "$tmp/plan_chain.json"; then
+  passed=$((passed + 1)); echo "ok   chain --tool-plan takes select-tools' plan"
+else
+  failed=$((failed + 1)); echo "FAIL chain --tool-plan takes select-tools' plan"
+fi
+expect_error "chain --tool-plan of another material" "the tool plan was made for '7050-T7451', not '2024-T351'" \
+  "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 2024-T351
+expect_error "chain --tool-plan missing file" "tool plan $tmp/none.json cannot be read" \
+  "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/none.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools has no --tool-plan" "unknown option --tool-plan" \
+  "$cli" select-tools --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools unknown machine" "unknown machine 'Lathe'" \
+  "$cli" select-tools --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --machine Lathe
 expect_error "chain unknown family" "no process template or part family 'impeller'" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --family impeller
 expect_error "chain unknown machine" "unknown machine" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --machine Lathe
 expect_error "chain without material" "chain needs --material" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite"
