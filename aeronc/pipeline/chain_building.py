@@ -58,8 +58,11 @@ def compute(group, family, material, machine="", kb_path=None):
     if not machine:
         names = kb.machine_names()
         machine = names[0] if names else ""
+    # The tools Select tools planned for this material and machine are taken as they are.
+    plan = getattr(group, "ToolPlan", "") if (group.Material, group.Machine) == (material, machine) else ""
     with from_core(MachiningChainError, group.Label):
-        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family)
+        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family,
+                                   plan)
     return json.loads(text)
 
 
