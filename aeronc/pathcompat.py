@@ -330,6 +330,16 @@ def path_from_gcode(text):
     return p
 
 
+def set_job_post(job, name, args=""):
+    """Post the Job with the FreeCAD post `name` (as FreeCAD lists it, without "_post") and its
+    arguments. False, and the Job unchanged, when FreeCAD does not list that post."""
+    if name not in job.getEnumerationsOfProperty("PostProcessor"):
+        return False
+    job.PostProcessor = name
+    job.PostProcessorArgs = args
+    return True
+
+
 def create_path_object(doc, name):
     """A new Path::FeaturePython object (an operation's container) in doc; in the GUI it gets
     Path's own view provider, which draws its Path."""

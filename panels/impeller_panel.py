@@ -42,7 +42,8 @@ class ImpellerPanel:
         self.form = self._build_form()
         self._show_program()
         ImpellerPanel.current = self
-        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
+        self._restore_dock = lambda: None
+        QtCore.QTimer.singleShot(0, self._widen)
 
     # --- the form ----------------------------------------------------------------------------
 
@@ -251,7 +252,11 @@ class ImpellerPanel:
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Close)
 
+    def _widen(self):
+        self._restore_dock = widen_dock(DOCK_WIDTH)
+
     def reject(self):
         FreeCADGui.Control.closeDialog()
         ImpellerPanel.current = None
+        self._restore_dock()
         return True

@@ -60,7 +60,8 @@ class MachiningChainPanel:
         self.refused = {}  # unit JSON -> the toolpath core's reason or None: computed once per unit
         self.form = self._build_form()
         MachiningChainPanel.current = self
-        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
+        self._restore_dock = lambda: None
+        QtCore.QTimer.singleShot(0, self._widen)
         if self.built:
             self.chain = mc.check(chain_edits.apply(self.built, self.edits)[0])
             self._refresh()
@@ -404,9 +405,16 @@ class MachiningChainPanel:
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
+    def _widen(self):
+        self._restore_dock = widen_dock(DOCK_WIDTH)
+
+    def _close(self):
+        MachiningChainPanel.current = None
+        FreeCADGui.Control.closeDialog()
+        self._restore_dock()
+
     def accept(self):
-        if self.built is None:
-            show_error("Build the chain first.")
+        if self.built is None and not self.build():  # OK on a fresh panel builds the chain first
             return False
         progress = QtGui.QProgressDialog("Making the Jobs...", "Cancel", 0, 100, FreeCADGui.getMainWindow())
         progress.setWindowModality(QtCore.Qt.WindowModal)
@@ -435,11 +443,9 @@ class MachiningChainPanel:
             FreeCAD.Console.PrintMessage("AeroNC: {}\n".format(m))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {} units in {}\n".format(
             obj.Label, obj.UnitCount, ", ".join(j.Label for j in obj.Jobs)))
-        MachiningChainPanel.current = None
-        FreeCADGui.Control.closeDialog()
+        self._close()
         return True
 
     def reject(self):
-        MachiningChainPanel.current = None
-        FreeCADGui.Control.closeDialog()
+        self._close()
         return True

@@ -14,7 +14,8 @@
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
-#   scripts/run.sh install   install the addon into your FreeCAD Mod folder
+#   scripts/run.sh install   install the addon into your FreeCAD Mod folder ($HOME/.local/share/FreeCAD/Mod,
+#                            or AERONC_MOD_DIR)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -75,7 +76,12 @@ case "${1:-}" in
     cmake --build "$BUILD" --target bench
     ;;
   install)
-    cmake --install "$BUILD" --component addon  # without the tests
+    # Into the FreeCAD of the HOME it runs under (the prefix configured with the build is not
+    # used: it is the configuring user's), or into AERONC_MOD_DIR when given.
+    dest=${AERONC_MOD_DIR:-$HOME/.local/share/FreeCAD/Mod}
+    rm -rf "$dest/AeroNC"  # afresh, as the stage: nothing of an older install lingers
+    cmake --install "$BUILD" --component addon --prefix "$dest" > /dev/null  # without the tests
+    echo "AeroNC installed into $dest/AeroNC; start FreeCAD and switch to the Path workbench"
     ;;
   *)
     echo "usage: scripts/run.sh demo|corpus|drill|post|impeller|test|bench|install" >&2

@@ -58,8 +58,11 @@ def compute(group, family, material, machine="", kb_path=None):
     if not machine:
         names = kb.machine_names()
         machine = names[0] if names else ""
+    # The tools Select tools planned for this material and machine are taken as they are.
+    plan = getattr(group, "ToolPlan", "") if (group.Material, group.Machine) == (material, machine) else ""
     with from_core(MachiningChainError, group.Label):
-        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family)
+        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family,
+                                   plan)
     return json.loads(text)
 
 
@@ -221,7 +224,7 @@ def _sync_jobs(obj, chain, part, blank, kb, progress):
     kept = []
     for setup in chain.get("setups", []):
         job = jobs.pop(int(setup["id"]), None) or setup_job.make_job(doc, part, setup)
-        setup_job.place(job, part, setup, blank)
+        setup_job.place(job, part, setup, blank, obj.Machine)
         doc.recompute([job.Stock] + pathcompat.job_models(job))
         setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == int(setup["id"])]
         kept.append((job, setup_units))

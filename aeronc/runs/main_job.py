@@ -17,6 +17,7 @@ A second run replaces the outputs of the first (the files it listed in .aeronc-o
 import json
 import os
 
+from aeronc.pipeline.setup_job import part_zero  # noqa: F401  (the main job's part zero, also for its callers)
 from aeronc.runs.stages import Run, RunError
 
 MainJobError = RunError  # the main job's failures name the stage (runs.stages)
@@ -46,15 +47,6 @@ def _counts(result):
     for e in result["elements"]:
         by_setup[e["setup"]] = by_setup.get(e["setup"], 0) + 1
     return ", ".join("{} {}".format(s["name"], by_setup.get(s["id"], 0)) for s in result["setups"])
-
-
-def part_zero(blank, frame):
-    """Where the program zero (the part's origin, in the setup's frame) sits from the table's
-    reference point when the blank stands centred on the table: minus the middle of the blank's
-    underside in the frame. Parts modelled far from their origin then stay within the travel."""
-    from aeronc.pipeline import setup_job
-    box = setup_job.box_in_frame(blank, frame)
-    return [0.0 - (box[0] + box[3]) / 2, 0.0 - (box[1] + box[4]) / 2, 0.0 - box[2]]  # no -0.0
 
 
 def read_part(job):
@@ -209,8 +201,8 @@ def _post_programs(job):
         for ext, dialect, label, args in (("mpf", "840d", "Sinumerik 840D", "--line-numbers"),
                                            ("ngc", "linuxcnc", "LinuxCNC", "")):
             # The program name as the file name gives it: the same program whatever the gate does.
-            options = "--machine {} --part-zero={} --program-name {} --skip-failed {}".format(
-                job.machine, ",".join("{:.6f}".format(v) for v in zero), stem, args).strip()
+            options = "{} --program-name {} --skip-failed {}".format(
+                setup_job.post_arguments(job.machine, blank, setup["frame"]), stem, args).strip()
             text = nc_post.export(objects, "-", options, dialect)
             job.programs.append({"setup": setup["name"], "dialect": label, "path": job.run.path(stem + "." + ext),
                                  "text": text, "partZero": zero, "lines": text.count("\n"), "job": fc_job,

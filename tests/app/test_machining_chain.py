@@ -122,6 +122,14 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             # The blank: the part's box (no allowance), seen in the same frame.
             for g, w in zip(got_stock, want):
                 self.assertAlmostEqual(g, w, places=6)
+            # FreeCAD's Post command writes what the main job writes: AeroNC's post for the
+            # machine, the blank centred on the table.
+            self.assertEqual(job.PostProcessor, "aeronc_840d")
+            zero = [-(want[0] + want[3]) / 2, -(want[1] + want[4]) / 2, -want[2]]
+            self.assertIn("--machine {} --part-zero=".format(chain.Machine), job.PostProcessorArgs)
+            given = [float(v) for v in job.PostProcessorArgs.split("--part-zero=")[1].split(",")]
+            for g, w in zip(given, zero):
+                self.assertAlmostEqual(g, w, places=5)
         # The truth's -Z pockets: in the -Z Job just above the floor is air, just below is part.
         job = next(j for j in chain.Jobs if getattr(j, setup_job.SETUP_TAG) ==
                    next(s["id"] for s in setups if s["name"] == "-Z"))
@@ -269,6 +277,45 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
                     self.assertIsNot(tc, optimised)  # each Job has its own controllers
                 elif tc.AeroNCTool not in {p.AeroNCTool for p in planned}:
                     self.assertAlmostEqual(tc.SpindleSpeed, unit["setting"]["spindleRpm"], places=6)
+
+    def test_the_chain_takes_the_tools_select_tools_stored(self):
+        """The chain reads the tool plan Select tools stored on the group (ToolPlan) instead of
+        planning the tools again: a finishing tool changed in the stored plan finishes the walls."""
+        from aeronc.pipeline import knowledge_base, tool_planning
+        tool_planning.select_tools(self.group, MATERIAL, kb_path=self.kb_path)
+        fresh = chain_building.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        plan = json.loads(self.group.ToolPlan)
+        kb = knowledge_base.open_kb(self.kb_path)
+        depth = {e["id"]: e["depth"] for e in machining_features.result_of(self.group)["elements"]}
+
+        def finishes(t):
+            try:
+                return bool(kb.cutting_condition(MATERIAL, t["material"], "finishing", t["diameter"]))
+            except RuntimeError:
+                return False
+
+        def walls(chain, element):
+            return {u["tool"] for u in chain["units"] if u["element"] == element and u["step"] == "fs"}
+
+        for e in plan["elements"]:
+            if e["type"] != "closed_pocket" or not e["finishingTool"] or not e["roughingTool"]:
+                continue
+            was = e["finishingTool"]
+            smaller = [t for t in kb.tools() if t["type"] == "flat" and 4 <= t["diameter"] < plan["tools"][was]["diameter"]
+                       and min(t["fluteLength"], t["reach"]) > depth[e["id"]] + 1 and finishes(t)]
+            if smaller:
+                break
+        else:
+            self.fail("no pocket whose finishing tool has a smaller one to take its place")
+        now = max(smaller, key=lambda t: t["diameter"])["id"]
+        e["finishingTool"] = now
+        self.group.ToolPlan = json.dumps(plan)
+        stored = chain_building.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        self.assertEqual(walls(fresh, e["id"]), {was})
+        self.assertEqual(walls(stored, e["id"]), {now})
+        # A plan made for another material is not taken: the tools are planned for this one.
+        other = chain_building.compute(self.group, FAMILY, "2024-T351", kb_path=self.kb_path)
+        self.assertEqual(other["material"], "2024-T351")
 
     def test_undo_removes_it_all(self):
         before = names(self.doc)
