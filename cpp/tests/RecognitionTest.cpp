@@ -159,6 +159,53 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
     EXPECT_NEAR(xmin, 60, 0.02);
 }
 
+// A slot whose floor rounds (R5, as deep as the slot is wide less its 3 mm floor) rise to 1 mm
+// under the top (milled_005's six slots): sliced at 12, where another pocket's floor lies, the
+// top millimetre is a region without a floor whose walls end at 12, and a ray down its middle
+// runs 5 mm to the slot's floor. The rounds continue its walls below: no opening leaves the part
+// there (the chain broke openings through by 2 mm into the rounds), but a pocket down to 12 over
+// the slot.
+TEST(Recognition, RegionOverTheRoundsOfAPocketBelowIsNoOpening) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 60, 13).Shape(), roundedBox(30, 20, 7, 40.5, 13, 10, 5));
+    part = filletEdgesAt(part, 7, 30, 20, 70.5, 33, 5);
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(10, 40, 12), 15, 10, 5).Shape());  // a floor at 12
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* over = nullptr;
+    for (const DomainElement& e : t.elements) {
+        EXPECT_NE(e.type, ElementType::Opening) << "E" << e.id << " at " << e.level;
+        double x0 = HUGE_VAL;
+        for (const auto& p : e.contour) x0 = std::min(x0, p[0]);
+        if (std::fabs(e.level - 12) < 1e-6 && std::fabs(x0 - 30) < 0.01) over = &e;
+    }
+    ASSERT_NE(over, nullptr);
+    EXPECT_EQ(over->type, ElementType::ClosedPocket);
+    EXPECT_TRUE(over->floorFaces.empty());
+    // The slot below is its child, down to the slot's floor.
+    ASSERT_EQ(over->children.size(), 1u);
+    EXPECT_NEAR(t.elements[static_cast<std::size_t>(over->children[0])].level, 7, 1e-6);
+}
+
+// A bore (24 mm, 9 deep) whose wall a cross hole pierces on its way out to a step: at the slice
+// over the bore's floor the bore joins the region outside the part through the cross hole.
+// Trimming what lies under material (the cross hole's vault) cuts the bore off again; the
+// region left (the air over the step) holds none of the bore's floor and is no pocket at 31
+// (on milled_005 it was one, and its profiles ran round the part's end face).
+TEST(Recognition, RegionCutOffFromItsFloorByTheUndercutTrimIsNoPocket) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 60, 40).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(70, 0, 20), 30, 60, 20).Shape());
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(35, 30, 31), gp_Dir(0, 0, 1)), 12, 10).Shape());
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(35, 30, 32), gp_Dir(1, 0, 0)), 3, 40).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    for (const DomainElement& e : t.elements) {
+        if (std::fabs(e.level - 31) > 1e-6) continue;
+        // Only the bore itself ends there.
+        double x0 = HUGE_VAL, x1 = -HUGE_VAL;
+        for (const auto& p : e.contour) x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+        if (e.hole) continue;
+        EXPECT_GT(x0, 35 - 12 - 0.1) << "E" << e.id << " reaches x " << x0;
+        EXPECT_LT(x1, 35 + 12 + 0.1) << "E" << e.id << " reaches x " << x1;
+    }
+}
+
 // A hole whose mouth a bridge partly covers from above: a ray down its axis is clear, but a
 // drill as wide as the hole would meet the bridge. Blind, it is overhung; through, it is made
 // from below, where its mouth is clear.
