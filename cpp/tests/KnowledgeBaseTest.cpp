@@ -94,7 +94,7 @@ TEST_F(KnowledgeBaseTest, CreatesFromShippedSqlWithDefaultRows) {
         EXPECT_EQ(tools.front().id, "FM-125");  // largest first
         EXPECT_EQ(tools.front().flutes, 4);
         EXPECT_EQ(kb.workpieceMaterials().size(), 4u);
-        EXPECT_EQ(kb.machineNames().size(), 3u);
+        EXPECT_EQ(kb.machineNames().size(), 4u);
 
         const auto mill = kb.machine("XA5032");
         EXPECT_DOUBLE_EQ(mill.maxSpindleRpm, 1800);
@@ -625,4 +625,35 @@ TEST_F(KnowledgeBaseTest, MigratesVersionThreeAddingTheImpellerTables) {
         EXPECT_FALSE(made.rows.empty());
         EXPECT_EQ(migrated.rows, made.rows);
     }
+}
+
+// Version 4 had only the table machines: the migration adds the gantry as a new file has it,
+// and keeps the user's machines and their edits (here a larger AC-5AX-L and a machine of theirs).
+TEST_F(KnowledgeBaseTest, MigratesVersionFourAddingTheGantry) {
+    const fs::path p = file();
+    { openDefault(p); }
+    rawExec(p, R"sql(
+        DELETE FROM machine WHERE name = 'AC-GANTRY';
+        UPDATE schema_version SET version = 4;
+        UPDATE machine SET travel_x = 1200 WHERE name = 'AC-5AX-L';
+        INSERT INTO machine (name, type, kinematics, travel_x, travel_y, travel_z, max_spindle_rpm, power_kw,
+                             max_feed_mm_min, max_force_n, efficiency, tool_change_s)
+            VALUES ('SHOP-VMC', 'vertical mill', 'XYZ', 800, 500, 500, 12000, 15, 20000, 5000, 0.8, 5);
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    EXPECT_TRUE(fs::exists(p.string() + ".v4.bak"));
+    EXPECT_EQ(kb.machineNames(), (std::vector<std::string>{"AC-5AX", "AC-5AX-L", "AC-GANTRY", "SHOP-VMC", "XA5032"}));
+    EXPECT_DOUBLE_EQ(kb.machine("AC-5AX-L").travelX, 1200);
+    const auto gantry = kb.machine("AC-GANTRY");
+    EXPECT_DOUBLE_EQ(gantry.travelX, 4000);
+    EXPECT_DOUBLE_EQ(gantry.travelZ, 1500);
+    // The same row as a new file has.
+    KnowledgeBase shipped = openDefault(dir_ / "fresh.sqlite");
+    const auto made = shipped.machine("AC-GANTRY");
+    EXPECT_EQ(gantry.kinematics, made.kinematics);
+    EXPECT_DOUBLE_EQ(gantry.travelY, made.travelY);
+    EXPECT_DOUBLE_EQ(gantry.maxSpindleRpm, made.maxSpindleRpm);
+    EXPECT_EQ(gantry.aMin, made.aMin);
+    EXPECT_EQ(gantry.cMax, made.cMax);
 }

@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 3 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 5 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -9,6 +9,9 @@
 --     its axis travels are typical catalogue values (assumed).
 --   * The 5-axis AC table-table machines are generic examples (assumed values): AC-5AX, and
 --     AC-5AX-L, the same kinematics with a larger table and travel for larger parts.
+--   * AC-GANTRY is a generic 5-axis gantry with an AC fork head (assumed values), of the size
+--     aircraft skins, spars and frames are cut on: 4000 x 2500 x 1500 mm travel, 24000 r/min,
+--     60 kW; the main job takes it for parts whose setups leave the table machines' travel.
 --   * Tool lengths follow the usual short/standard end-mill series (assumed), costs are
 --     indicative list prices (assumed).
 --   * The jobber drill series follows the diameter steps and the flute and overall lengths
@@ -38,7 +41,9 @@ VALUES
   ('XA5032', 'vertical knee mill', 'XYZ',
    700, 255, 350, NULL, NULL, NULL, NULL, 1800, 7.5, 980, 15000, 0.75, 60),
   ('AC-5AX-L', '5-axis machining centre', 'AC table-table (cradle), Sinumerik 840D',
-   1000, 1100, 800, -120, 120, -360, 360, 18000, 35, 40000, 8000, 0.85, 8);
+   1000, 1100, 800, -120, 120, -360, 360, 18000, 35, 40000, 8000, 0.85, 8),
+  ('AC-GANTRY', '5-axis gantry', 'AC head-head (fork head on a gantry), Sinumerik 840D',
+   4000, 2500, 1500, -110, 110, -360, 360, 24000, 60, 40000, 12000, 0.85, 12);
 
 -- Materials ----------------------------------------------------------------------------
 INSERT INTO workpiece_material (name, family, hardness_hb) VALUES

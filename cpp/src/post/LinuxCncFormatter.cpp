@@ -2,7 +2,9 @@
 // X Y Z are the machine coordinates of the tool tip (G43 compensates the length along the
 // fixed spindle), A and C the table angles. On a table-table machine the tool axis is the
 // machine's Z, so arcs at a constant orientation are G17 arcs in machine coordinates and
-// drilling cycles drill along machine Z.
+// drilling cycles drill along machine Z. A head-head machine (a gantry's fork head) is posted
+// only with its spindle along machine Z (3-axis planes, the head unswivelled): LinuxCNC's G43
+// compensates the tool length along machine Z, which a swivelled head's tool is not.
 #include "NcFormatter.h"
 
 #include <cmath>
@@ -17,13 +19,16 @@ namespace {
 class LinuxCncFormatter : public NcFormatter {
 public:
     LinuxCncFormatter(const Plan& plan, const NcOptions& o) : NcFormatter(plan, o, false, "G4 P") {
+        int head = 0;
         for (const auto& a : m_.rotary) {
-            if (a.carrier != Carrier::Table)
-                throw inputError("the LinuxCNC dialect is for table-table machines; machine " + m_.name + " has a " +
-                                 a.name + " axis in the head");
+            if (a.carrier == Carrier::Head) ++head;
             if (a.name != "A" && a.name != "B" && a.name != "C")
                 throw inputError("LinuxCNC names rotary axes A, B or C, not " + a.name);
         }
+        if (head == 1)
+            throw inputError("the LinuxCNC dialect is for table-table or head-head machines; machine " + m_.name +
+                             " has one rotary axis in the head and one in the table");
+        head_ = head == 2;
         if ((m_.toolDirection - Vec3::UnitZ()).norm() > 1e-12)
             throw inputError("the LinuxCNC dialect needs the tool along machine +Z");
     }
@@ -123,7 +128,24 @@ private:
         for (int k = 0; k < 2; ++k) w_.modal(m_.rotary[k].name, s.joints.rotary[k], o_.anglePrecision, a_[k]);
     }
 
+    // The tool axis in the machine: the head's rotation of the tool direction (the table's of
+    // machine Z leaves the spindle along Z).
+    void checkSpindleAlongZ(const PlannedStep& s) const {
+        if (!head_) return;
+        const Vec3 axis = tableRotation(s.joints.rotary) * m_.toolDirection;
+        if ((axis - Vec3::UnitZ()).norm() > 1e-9) {
+            char b[200];
+            std::snprintf(b, sizeof b,
+                          "the LinuxCNC dialect posts head machine %s only with the spindle along machine Z "
+                          "(3-axis planes); this move swivels the head to %s=%.3f %s=%.3f: post it with the 840D post",
+                          m_.name.c_str(), m_.rotary[0].name.c_str(), s.joints.rotary[0], m_.rotary[1].name.c_str(),
+                          s.joints.rotary[1]);
+            throw inputError(b);
+        }
+    }
+
     void move(const PlannedStep& s) override {
+        checkSpindleAlongZ(s);
         if (!s.tipKnown() && !atZero(s.joints.rotary))
             throw inputError("a move that gives only some of X, Y, Z needs the rotary axes at zero; give the full tip position");
         const bool arc = s.motion == Motion::ArcCW || s.motion == Motion::ArcCCW;
@@ -134,7 +156,9 @@ private:
             // The arc keeps its orientation: its centre turns with the table like the tip, and
             // its plane is normal to machine Z.
             const ClRecord& r = plan_.program->records[s.record];
-            const Vec3 centre = s.joints.linear + tableRotation(s.joints.rotary) * (r.centre - s.pose.tip);
+            // A head machine's workpiece stands still: the centre is where the part has it.
+            const Vec3 centre = s.joints.linear + (head_ ? Mat3::Identity() : tableRotation(s.joints.rotary)) *
+                                                      (r.centre - s.pose.tip);
             w_.value("I", centre.x() - lastLinear_.x(), o_.precision);
             w_.value("J", centre.y() - lastLinear_.y(), o_.precision);
         }
@@ -154,6 +178,7 @@ private:
     void cycle(const PlannedStep& s, const ClRecord& r) override {
         // The planner put the tool on the hole axis at the return level; the cycle drills along
         // machine Z from there.
+        checkSpindleAlongZ(s);
         const bool toInitial = r.clearance > r.retract + 1e-9;
         unitsPerMinute();
         std::string g = toInitial ? "G98 " : "G99 ";
@@ -179,6 +204,7 @@ private:
     }
 
     bool cycles_ = false;
+    bool head_ = false;  // both rotary axes in the head
     Vec3 lastLinear_ = Vec3::Zero();
     std::array<double, 2> lastRotary_{0.0, 0.0};
 };

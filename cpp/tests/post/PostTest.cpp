@@ -281,6 +281,25 @@ TEST(Post, FreeCadThreeAxisOperationPostsAsAPlainPlane) {
     }
 }
 
+// The gantry's fork head posts 3-axis planes to LinuxCNC: X Y Z are the tip from the part zero
+// (G54), arcs G17 arcs, the head at its zero; a part zero 1500 mm off the table's centre stays
+// within its travel, which it leaves on the table machines.
+TEST(Post, AGantryHeadPostsThreeAxisPlanesForLinuxCnc) {
+    const std::string gcode =
+        "(Profile)\nG0 Z15.000000\nG0 X10.000000 Y0.000000\nG1 F5.000000 Z-2.000000\n"
+        "G2 F5.000000 I-10.000000 J0.000000 X-10.000000 Y0.000000 Z-2.000000\nG1 X-10.000000 Y-5.000000\nG0 Z15.000000\n";
+    PlanOptions shifted;
+    shifted.partZero = Vec3(1500, -900, 40);
+    NcOptions o = exactOptions(Dialect::LinuxCnc);
+    o.precision = 3;
+    const std::string nc = postFreeCad(job(gcode), machine("AC-GANTRY"), o, shifted).text;
+    EXPECT_NE(nc.find("G2 X-10 I-10 J0\n"), std::string::npos) << nc;
+    EXPECT_NE(nc.find("G0 Z15 C0 A0"), std::string::npos) << nc;
+    EXPECT_EQ(count(nc, "G43 H3"), 1) << nc;
+    // The same part zero is beyond the table machines' travel.
+    EXPECT_THROW(postFreeCad(job(gcode), machine("AC-5AX-L"), o, shifted), aeronc::Error);
+}
+
 TEST(Post, DrillingNormalToASurface) {
     // Holes on a curved surface, each along its own normal, with G0 moves between them.
     PathText p;
@@ -409,7 +428,8 @@ TEST(Post, BadInputIsAClearErrorNamingTheOperationAndMove) {
         {"G91\n", "AC-5AX", Dialect::Sinumerik840D, "incremental moves (G91) are not supported"},
         {"G0 X0 Y0 Z0\nG2 F5 I1 J0 K1 X2 Y0 Z0\n", "AC-5AX", Dialect::Sinumerik840D, "not in the plane normal to the tool axis"},
         {"G0 X0 Y0 Z10\nG1 F5 X900 Y0 Z0\n", "AC-5AX", Dialect::LinuxCnc, "X=900.000 is beyond the travel [-325.000, 325.000]"},
-        {"G0 X0 Y0 Z10\n", "AC-HEAD", Dialect::LinuxCnc, "the LinuxCNC dialect is for table-table machines"},
+        {"G0 X0 Y0 Z10\nG1 F5 X1 Y0 Z0 U0 V-0.5 W0.8660254037844\n", "AC-HEAD", Dialect::LinuxCnc,
+         "the LinuxCNC dialect posts head machine AC-HEAD only with the spindle along machine Z"},
         {"G0 X0 Y0 Z10\nG1 X1 Y1 Z1\n", "AC-5AX", Dialect::Sinumerik840D, "feed move without a feed rate"},
     };
     for (const auto& c : cases) {
