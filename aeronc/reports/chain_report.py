@@ -22,6 +22,14 @@ def _minutes(m):
     return "{:d} min {:02d} s".format(int(m), int(round((m - int(m)) * 60))) if m >= 1 else "{:.0f} s".format(m * 60)
 
 
+def _machine(run):
+    """The machine the programs are for, and why (pipeline.machine_choice)."""
+    m = run.get("machine") or {}
+    if not m.get("name"):
+        return "&ndash;"
+    return "<b>{}</b>: {}".format(esc(m["name"]), esc(m.get("why", "")))
+
+
 def _summary(run):
     chain = run.get("chain", {})
     units = chain.get("units", [])
@@ -29,6 +37,7 @@ def _summary(run):
     rows = [("Part", esc(run.get("part", ""))), ("Source", esc(run.get("source", ""))),
             ("Material / machine", "{} on {}".format(esc(chain.get("material", "")), esc(chain.get("machine", "")))),
             ("Process template", esc(chain.get("family", ""))),
+            ("Machine chosen", _machine(run)),
             ("Recognised elements", esc(len(run.get("recognition", {}).get("elements", [])))),
             ("Machining units", "{} ({} enabled)".format(len(units), sum(1 for u in units if u.get("enabled", True)))),
             ("Elements not machined", esc(unmachined_text(chain)))]
@@ -224,7 +233,8 @@ def write(path, run):
 
     run: {"part", "source", "recognition": result, "chain": chain dict, "operations": [{"unit", "setup",
     "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines", "partZero", "leftOut"}],
-    "noProgram": [{"setup"}], "verdict": {"ready", "status", "text"} (the first line), "failed": {"stage",
+    "noProgram": [{"setup"}], "machine": {"name", "why"}, "verdict": {"ready", "status", "text"} (the first
+    line), "failed": {"stage",
     "error"}, "leftOut": [{"label", "setup", "reason"}], "materialLeft": [{"element", "faces", "area",
     "maxLeft", "reason"}], "verification":
     [{"check", "node", "ok", "detail"}], "coverage": [{"setup", "element", "area", "leftArea", "maxLeft"}],

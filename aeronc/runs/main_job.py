@@ -1,7 +1,7 @@
 """The main job, headless: from a STEP part to posted, verified programs and a report.
 
-    read part -> recognise -> select tools -> optimise cutting data -> machining chain -> Jobs
-    -> post -> re-read and simulate -> pictures -> save and report
+    read part -> recognise -> choose the machine -> select tools -> optimise cutting data
+    -> machining chain -> Jobs -> post -> re-read and simulate -> pictures -> save and report
 
 Each stage is a function of the one context, MainJob, that carries what the stages before it
 made; runs.stages times and reports them. run() writes into one output folder:
@@ -21,6 +21,7 @@ from aeronc.pipeline.setup_job import part_zero  # noqa: F401  (the main job's p
 from aeronc.runs.stages import Run, RunError
 
 MainJobError = RunError  # the main job's failures name the stage (runs.stages)
+AUTO_MACHINE = "auto"    # the machine argument that lets the main job choose
 
 
 class MainJob:
@@ -28,7 +29,11 @@ class MainJob:
 
     def __init__(self, run, part_path, material, machine, family, cell_size):
         self.run = run
-        self.part_path, self.material, self.machine, self.family = part_path, material, machine, family
+        self.part_path, self.material, self.family = part_path, material, family
+        # The machine the user named, or None: the smallest that holds every setup (choose_machine).
+        self.named = machine if machine and machine != AUTO_MACHINE else None
+        self.machine = self.named
+        self.candidates = []   # pipeline.machine_choice.candidates, smallest first
         self.cell_size = cell_size
         self.name = os.path.splitext(os.path.basename(part_path))[0]
         self.kb_path = run.path("knowledge.sqlite")
@@ -77,6 +82,56 @@ def recognise(job):
     return "{} elements in {} setup(s): {}".format(len(result["elements"]), len(result["setups"]), _counts(result))
 
 
+def choose_machine(job):
+    """The machine named, or the smallest of the knowledge base's whose travel holds the blank in
+    every setup (pipeline.machine_choice); the post stage checks it again against the toolpaths."""
+    from aeronc.pipeline import knowledge_base, machine_choice, setup_job
+    from aeronc.errors import from_core
+    kb = knowledge_base.open_kb(job.kb_path)
+    with from_core(machine_choice.MachineChoiceError, "the knowledge base's machines"):
+        job.candidates = machine_choice.candidates(kb)
+    needs = machine_choice.need_of_blank(setup_job.blank_box(job.group), job.result["setups"])
+    choice = machine_choice.choose(job.candidates, needs, named=job.named)
+    job.machine = choice["name"]
+    job.data["machine"] = {"name": choice["name"], "why": choice["why"], "rejected": choice["rejected"],
+                           "named": bool(job.named)}
+    return "{}: {}".format(choice["name"], choice["why"])
+
+
+def check_machine_travel(job):
+    """Every setup's toolpaths, with the part zero of the setup, against the chosen machine's
+    travel: a larger machine when they leave it (the tools' speeds and feeds, chosen for the
+    smaller one, are within its limits), or the named machine's error."""
+    from aeronc import pathcompat
+    from aeronc.pipeline import machine_choice, setup_job
+    from aeronc.post import machines
+    if not job.candidates:
+        return
+    blank = setup_job.blank_box(job.group)
+    setups = []
+    for fc_job in job.chain_obj.Jobs:
+        setup = _setup_of(job.chain, fc_job, setup_job.SETUP_TAG)
+        ops = [op for op in _operations_of(fc_job) if pathcompat.op_active(op) and op.Label not in job.left_out]
+        setups.append({"name": setup["name"], "operations": ops, "partZero": part_zero(blank, setup["frame"]),
+                       "frame": setup["frame"], "job": fc_job})
+    needs = machine_choice.need_of_paths(setups)
+    choice = machine_choice.choose(job.candidates, needs, named=job.named, at_least=job.machine)
+    if choice["name"] == job.machine:
+        return
+    was = job.machine
+    job.machine = choice["name"]
+    before = job.data.get("machine") or {}
+    rejected = (before.get("rejected") or []) + choice["rejected"]
+    job.data["machine"] = {"name": choice["name"], "rejected": rejected, "named": False,
+                           "why": "the smallest machine whose travel holds every setup's toolpaths ({})".format(
+                               "; ".join("{}: {}".format(r["name"], r["text"]) for r in rejected))}
+    job.run.say("  machine: {} instead of {}: {}".format(job.machine, was, choice["rejected"][0]["text"]
+                                                         if choice["rejected"] else ""))
+    for s in setups:  # the Jobs post for it from FreeCAD too
+        pathcompat.set_job_post(s["job"], machines.post_of(job.machine),
+                                setup_job.post_arguments(job.machine, blank, s["frame"]))
+
+
 def select_tools(job):
     from aeronc.pipeline import tool_planning
     plan, _, tcs = tool_planning.select_tools(job.group, job.material, job.machine, job.kb_path)
@@ -122,6 +177,7 @@ def post(job):
     ops = _active_operations(job)
     _leave_out(job, gate.not_ready(ops), "no toolpath")
     _leave_out(job, gate.dependents(ops, job.left_out, job.result), "dependent")
+    check_machine_travel(job)
     _post_programs(job)
     return ", ".join(os.path.basename(p["path"]) for p in job.programs) + (
         "; {} operation(s) without a toolpath left out".format(len(job.left_out)) if job.left_out else "")
@@ -341,18 +397,20 @@ def save(job):
     return fcstd
 
 
-STAGES = (("read part", read_part), ("recognise", recognise), ("select tools", select_tools),
+STAGES = (("read part", read_part), ("recognise", recognise), ("machine", choose_machine),
+          ("select tools", select_tools),
           ("cutting data", cutting_data), ("machining chain", machining_chain), ("post", post),
           ("verify", verify), ("pictures", pictures), ("save", save))
 
 
-def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,
+def run(part_path, out, material="7050-T7451", machine=None, family="integral_panel", cell_size=0.5,
         say=None, pictures=True):
     """Run the main job on a STEP (or BREP) part; returns the report's data (dict), whose
     "verdict" says whether the programs are ready. Raises RunError (MainJobError) naming the
     stage that failed, or saying that no program could be delivered; report.html and run.json
     are written in either case, and no program is left that the gate did not pass.
-    say(line) receives the progress lines; by default they go to the terminal while FreeCAD's
+    machine: a machine of the knowledge base, or None (or "auto") for the smallest whose travel
+    holds every setup; report.html and run.json name it and say why. say(line) receives the progress lines; by default they go to the terminal while FreeCAD's
     own output goes to freecad.log. pictures=False skips the pictures (a corpus run's time)."""
     import shutil
     import tempfile
@@ -360,7 +418,8 @@ def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integra
     job = MainJob(run_, part_path, material, machine, family, cell_size)
     if os.path.exists(job.kb_path):  # left by a failed run: this run starts from the shipped knowledge base
         os.unlink(job.kb_path)
-    (say or print)("AeroNC main job: {} ({} on {}, {}) -> {}".format(part_path, material, machine, family, run_.out))
+    (say or print)("AeroNC main job: {} ({} on {}, {}) -> {}".format(
+        part_path, material, job.named or "the smallest machine that holds it", family, run_.out))
     job.work = tempfile.mkdtemp(prefix="aeronc_main_job_")
     try:
         with run_.console():
@@ -413,6 +472,7 @@ def run_summary(data):
     areas = [e["area"] for e in left if e.get("area") is not None]
     thick = [e["maxLeft"] for e in left if e.get("maxLeft") is not None]
     return {"part": data.get("part"), "source": data.get("source"),
+            "machine": {k: v for k, v in (data.get("machine") or {}).items() if k in ("name", "why")},
             "verdict": data.get("verdict"), "failed": data.get("failed"),
             "elements": len(recognition.get("elements", [])),
             "notMachined": not_machined,
