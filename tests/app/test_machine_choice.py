@@ -17,7 +17,10 @@ from aeronc.runs import main_job
 
 
 def _plate(folder, name, length, width, height, pocket=(100, 80, 10)):
-    """A plate with one pocket (R8 corners) in the middle of its top."""
+    """A plate with one pocket (R8 corners) in the middle of its top. The whole blank must stand
+    within the travel, not only the toolpaths (a tool that cannot reach all of the part can
+    neither face nor probe it); the long pockets make the toolpaths leave the smaller machines
+    too."""
     plate = Part.makeBox(length, width, height)
     pl, pw, depth = pocket
     cut = Part.makeBox(pl, pw, depth + 1, FreeCAD.Vector((length - pl) / 2, (width - pw) / 2, height - depth))
@@ -140,7 +143,8 @@ class MainJobMachineTest(unittest.TestCase):
         self.assertEqual(run["verificationReport"]["collisions"]["count"], 0)
 
     def test_plate_too_long_for_the_ac5ax_goes_on_the_ac5ax_l(self):
-        part = _plate(self.tmp, "plate700", 700, 200, 25)
+        # The pocket runs nearly the plate's length: its toolpaths leave the AC-5AX's X too.
+        part = _plate(self.tmp, "plate700", 700, 200, 25, pocket=(680, 120, 10))
         run, summary, html, out = self.run_job(part)
         self.assertEqual(run["machine"]["name"], "AC-5AX-L")
         self.assertEqual(summary["machine"]["name"], "AC-5AX-L")
@@ -151,7 +155,7 @@ class MainJobMachineTest(unittest.TestCase):
         self.assertEqual([round(v, 6) for v in run["programs"][0]["partZero"]], [-350.0, -100.0, 0.0])
 
     def test_plate_only_the_gantry_holds_is_posted_and_verified_on_it(self):
-        part = _plate(self.tmp, "plate1400", 1400, 200, 25)
+        part = _plate(self.tmp, "plate1400", 1400, 200, 25, pocket=(1380, 120, 10))
         run, summary, html, out = self.run_job(part)
         self.assertEqual(summary["machine"]["name"], "AC-GANTRY")
         # Turned across, the plate leaves the AC-5AX-L's Y by less than it leaves its X, and still does.
