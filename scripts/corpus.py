@@ -11,8 +11,9 @@ and OUT/summary.md: per part the elements, those machined, those not machined by
 unclaimed faces, the operations the gate left out, gouges and colliding rapids in the delivered
 programs (count, worst), the material left against the part, the time of each stage, and whether
 a program was delivered (or the stage that failed, or why there is none). A part whose post
-the machine (--machine, AC-5AX) refuses because a move leaves its travel is recorded so, and run
-again on the large machine (--large, AC-5AX-L) as a row of its own.
+the machine (--machine; by default the main job chooses the smallest that holds it,
+docs/machine-choice.md) refuses because a move leaves its travel is recorded so, and run again on
+the large machine (--large, none by default) as a row of its own.
 
 --check: exit 1 when any delivered program gouges or rapids through material (or a part's run
 left no run.json: it crashed or timed out); the ctest `corpus` runs it so.
@@ -28,7 +29,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-STAGE_SHORT = {"read part": "read", "recognise": "recog", "select tools": "tools", "cutting data": "cut",
+STAGE_SHORT = {"read part": "read", "recognise": "recog", "machine": "mach", "select tools": "tools", "cutting data": "cut",
                "machining chain": "chain", "post": "post", "verify": "verify", "pictures": "pics", "save": "save"}
 
 
@@ -87,6 +88,7 @@ def row_of(part, run, seconds, last, machine):
         k = reason_key(why)
         reasons[k] = reasons.get(k, 0) + 1
     delivered = bool(run.get("programs"))
+    machine = (run.get("machine") or {}).get("name") or machine  # the one the main job chose
     return {"part": name, "machine": machine, "file": os.path.relpath(part, ROOT), "seconds": seconds,
             "elements": run.get("elements", 0), "notMachined": len(run.get("notMachined") or {}),
             "notMachinedByReason": reasons, "unclaimedFaces": run.get("unclaimedFaces", 0),
@@ -187,8 +189,9 @@ def main(argv):
     a.add_argument("--mfcad", action="store_true", help="also the MFCAD sample")
     a.add_argument("--parts", default="", help="only these parts (file names without extension, comma-separated)")
     a.add_argument("--timeout", type=float, default=1800, help="seconds per part")
-    a.add_argument("--machine", default="AC-5AX", help="the machine the main job posts for")
-    a.add_argument("--large", default="AC-5AX-L",
+    a.add_argument("--machine", default="auto",
+                   help="the machine the main job posts for ('auto': the smallest whose travel holds the part)")
+    a.add_argument("--large", default="none",
                    help="the machine for a part beyond the first one's travel ('none': no second run)")
     a.add_argument("--no-pictures", action="store_true", help="skip the main job's pictures (the ctest: time)")
     a.add_argument("--check", action="store_true", help="exit 1 on a gouge or colliding rapid in a delivered program")
