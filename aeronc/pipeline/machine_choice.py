@@ -158,6 +158,14 @@ def misfit_text(candidate, misses):
     return "; ".join(parts)
 
 
+def worst_text(candidate, misses):
+    """The setup that leaves the machine by most, and how many others leave it too."""
+    worst = max(misses, key=lambda m: max(m["short"].values()))
+    more = len(misses) - 1
+    return misfit_text(candidate, [worst]) + ("; {} other setup{} too".format(more, "" if more == 1 else "s")
+                                              if more else "")
+
+
 def choose(cands, needs, named=None, at_least=None):
     """{"name", "why", "rejected": [{"name", "text"}]}: the machine named (if it holds every
     setup), else the smallest candidate that does, no smaller than at_least (a machine already
@@ -190,7 +198,7 @@ def choose(cands, needs, named=None, at_least=None):
             if rejected:
                 why += " ({})".format("; ".join("{}: {}".format(r["name"], r["text"]) for r in rejected))
             return {"name": c["name"], "why": why, "rejected": rejected}
-        rejected.append({"name": c["name"], "text": misfit_text(c, misses)})
+        rejected.append({"name": c["name"], "text": worst_text(c, misses)})
     largest = cands[-1]
     raise MachineChoiceError("no machine of the knowledge base holds the part: the largest, {}: {}".format(
         largest["name"], rejected[-1]["text"]))

@@ -77,6 +77,9 @@ class ChoiceTest(unittest.TestCase):
         choice = machine_choice.choose(self.cands, needs)
         self.assertEqual(choice["name"], "AC-GANTRY")
         self.assertIn("setup +X needs Z 0.0...700.0, beyond its -350...450 by 250.0 mm", choice["why"])
+        # Each smaller machine is named with the setup that leaves it by most.
+        self.assertIn("AC-5AX: setup +X needs Z 0.0...700.0, beyond its -250...300 by 400.0 mm (blank); "
+                      "1 other setup too", choice["why"])
 
     def test_too_big_for_every_machine_says_by_how_much(self):
         with self.assertRaises(machine_choice.MachineChoiceError) as ctx:
