@@ -12,6 +12,7 @@ saved by ordering, and the elements the chain does not machine (with the reason)
 Nothing is written until OK: OK makes or updates the chain's Jobs and operations in one undo
 step; Cancel leaves the document as it was.
 """
+import html
 import traceback
 
 import FreeCAD
@@ -102,6 +103,19 @@ class MachiningChainPanel:
         self.summary = QtGui.QLabel("")
         self.summary.setWordWrap(True)
         lay.addWidget(self.summary)
+        # What is not machined and what the posts refuse sit right under the summary, each tab
+        # titled with its count: below the tree they were out of sight.
+        self.findings = QtGui.QTabWidget()
+        self.unmachined = QtGui.QListWidget()
+        self.not_ready = QtGui.QListWidget()
+        self.checks = QtGui.QListWidget()
+        for lst in (self.unmachined, self.not_ready, self.checks):
+            lst.setWordWrap(True)
+            self.findings.addTab(lst, "")
+        self.findings.setMinimumHeight(130)
+        self.findings.setMaximumHeight(180)
+        self._title_findings()
+        lay.addWidget(self.findings, 1)
 
         self.tree = QtGui.QTreeWidget()
         self.tree.setColumnCount(len(COLUMNS))
@@ -130,19 +144,6 @@ class MachiningChainPanel:
         self.travel = QtGui.QLabel("")
         self.travel.setWordWrap(True)
         lay.addWidget(self.travel)
-        lay.addWidget(QtGui.QLabel("Construction rules"))
-        self.checks = QtGui.QListWidget()
-        self.checks.setMaximumHeight(100)
-        lay.addWidget(self.checks, 1)
-        lay.addWidget(QtGui.QLabel("Not machined"))
-        self.unmachined = QtGui.QListWidget()
-        self.unmachined.setMaximumHeight(70)
-        lay.addWidget(self.unmachined, 1)
-        lay.addWidget(QtGui.QLabel("Not ready: no toolpath, or failed the check (the posts refuse them)"))
-        self.not_ready = QtGui.QListWidget()
-        self.not_ready.setMaximumHeight(70)
-        self.not_ready.setWordWrap(True)
-        lay.addWidget(self.not_ready, 1)
         return w
 
     # -- building -----------------------------------------------------------------------------
@@ -237,11 +238,7 @@ class MachiningChainPanel:
             self.tree.setCurrentItem(selected_item)
             self.tree.scrollToItem(selected_item)
         self._selection_changed()
-        total = len(units)
-        disabled = sum(1 for u in units.values() if not u.get("enabled", True))
-        self.summary.setText("{} units in {} setups{}{}.".format(
-            total, len(chain.get("setups", [])), "; {} disabled".format(disabled) if disabled else "",
-            "; " + "; ".join(self.notes) if self.notes else ""))
+        self.summary.setText(self._summary_text(chain, units, not_ready))
         travel = chain.get("travel") or {}
         if travel:
             self.travel.setText("Rapid travel: {:.0f} mm in the rules' order, {:.0f} mm ordered; {:.1f} % saved."
@@ -264,6 +261,48 @@ class MachiningChainPanel:
         if not not_ready:
             self.not_ready.addItem("Every enabled unit has a toolpath.")
         self._fill_checks()
+        # The first tab with something to look at comes to the front.
+        for k, n in enumerate((len(self._unmachined_elements(chain)), len(not_ready))):
+            if n:
+                self.findings.setCurrentIndex(k)
+                break
+
+    def _recognised_elements(self):
+        """The ids of the group's elements: one the chain neither machines nor lists still counts."""
+        from aeronc.objects.machining_features import result_of
+        try:
+            return {e.get("id") for e in result_of(self.group).get("elements", [])}
+        except Exception:  # no group or no stored result: count what the chain names
+            return set()
+
+    @staticmethod
+    def _unmachined_elements(chain):
+        return {e.get("element") for e in (chain or {}).get("unmachined", [])}
+
+    def _summary_text(self, chain, units, not_ready):
+        """Rich text: elements machined and not, units and setups, units the posts refuse; the
+        counts that need a look in red."""
+        left = self._unmachined_elements(chain)
+        machined = {u.get("element") for u in units.values()}
+        elements = len(machined | left | self._recognised_elements())
+        whole = left - machined
+        setups = len(chain.get("setups", []))
+        disabled = sum(1 for u in units.values() if not u.get("enabled", True))
+        parts = ["<b>{} of {} elements machined</b> by {} unit{} in {} setup{}".format(
+            len(machined), elements, len(units), "" if len(units) == 1 else "s",
+            setups, "" if setups == 1 else "s")]
+        if whole:
+            parts.append("<span style='color:{}'><b>{} not machined</b></span>".format(RED, len(whole)))
+        partly = left & machined
+        if partly:
+            parts.append("<span style='color:{}'>{} with faces left</span>".format(RED, len(partly)))
+        if not_ready:
+            parts.append("<span style='color:{}'><b>{} unit{} not ready</b> (the posts refuse {})</span>".format(
+                RED, len(not_ready), "" if len(not_ready) == 1 else "s", "it" if len(not_ready) == 1 else "them"))
+        if disabled:
+            parts.append("{} disabled".format(disabled))
+        parts += [html.escape(str(n)) for n in self.notes]
+        return "; ".join(parts) + ".{}".format(" Reasons in the tabs below." if (left or not_ready) else "")
 
     def not_ready_units(self):
         """{unit id: why} of the enabled units that would get no toolpath (the toolpath core
@@ -344,6 +383,17 @@ class MachiningChainPanel:
             combo.currentIndexChanged.connect(lambda _i, u=uid, c=combo: self.set_tool(u, c.currentText()))
             self.tree.setItemWidget(item, TOOL_COLUMN, combo)
 
+    def _title_findings(self):
+        """Each tab's title with its count, so the numbers show even on the tab behind."""
+        left = len(self._unmachined_elements(self.chain)) if getattr(self, "chain", None) else 0
+        refused = sum(1 for i in range(self.not_ready.count()) if self.not_ready.item(i).text().startswith("\u2718"))
+        broken = sum(1 for c in (getattr(self, "chain", None) or {}).get("checks", []) if not c.get("ok", True))
+        self.findings.setTabText(0, "Not machined ({})".format(left))
+        self.findings.setTabText(1, "Not ready ({})".format(refused))
+        self.findings.setTabText(2, "Construction rules" + (" ({} broken)".format(broken) if broken else ""))
+        for k, n in enumerate((left, refused, broken)):
+            self.findings.tabBar().setTabTextColor(k, QtGui.QColor(RED if n else "#000000"))
+
     def _fill_checks(self):
         self.checks.clear()
         if not self.checked:
@@ -359,6 +409,7 @@ class MachiningChainPanel:
                 item.setForeground(QtGui.QBrush(QtGui.QColor(RED)))
             item.setToolTip(c.get("message", ""))
             self.checks.addItem(item)
+        self._title_findings()
 
     # -- the user's edits -----------------------------------------------------------------------
     def selected_unit(self):
@@ -443,6 +494,9 @@ class MachiningChainPanel:
             FreeCAD.Console.PrintMessage("AeroNC: {}\n".format(m))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {} units in {}\n".format(
             obj.Label, obj.UnitCount, ", ".join(j.Label for j in obj.Jobs)))
+        if obj.Jobs:  # one setup at a time; the Job's context menu shows another
+            from aeronc.commands.show_setup import show_setup
+            show_setup(obj, obj.Jobs[0])
         self._close()
         return True
 

@@ -228,7 +228,9 @@ class RecognisePanel:
             dialog.deleteLater()
         text = recognition.summary_text(objects.result_of(group))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {}\n".format(self.part.Label, text))
-        FreeCADGui.getMainWindow().statusBar().showMessage("AeroNC: " + text, 15000)
+        # After the console's warnings, which reach the status bar through queued events.
+        bar = FreeCADGui.getMainWindow().statusBar()
+        QtCore.QTimer.singleShot(100, lambda: bar.showMessage("AeroNC: " + text, 15000))
         self.status.setText(text)
         self.result_group = group
         return group

@@ -78,7 +78,8 @@ void outlineUnit(MachiningUnit& u, const recognition::DomainElement& e, const re
     if (e.hole) {
         const recognition::P2 c = frame.project(e.hole->location);
         u.at = {c.x, c.y};
-        u.holes.push_back({c.x, c.y, e.hole->diameter, top, bottom, e.hole->through});
+        u.holes.push_back({c.x, c.y, e.hole->diameter, top, bottom, e.hole->through,
+                           e.hole->through ? 0.0 : std::max(0.0, e.floorFilletRadius)});
     }
 }
 

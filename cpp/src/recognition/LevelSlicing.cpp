@@ -82,13 +82,23 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     const double tol = 10 * view_.tol.linear;
     if (!(z - zl > 0.1 * tol)) return {};
     Paths near;
-    for (int f : c.contourFaces) {
+    // The faces along the region's boundary: its walls, and those its contour loops run on (an
+    // exterior region knows its walls by probes only).
+    std::vector<int> bounding = c.contourFaces;
+    for (const SectionLoop* L : c.contourLoops)
+        for (int f : L->faces) pushUnique(bounding, f);
+    for (int f : bounding) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
-        // A convex face (a round) spanning the band; a hole across the axis is concave.
-        const bool falls = s.att == Attitude::Curved && !faces_[f].concave && s.lo < zl && s.hi > z;
-        if (!facesUp && !falls) continue;
-        leaning.push_back(f);
+        // A curved face spanning the band: a round falling past the floor, or a fillet across
+        // the axis whose section moves with the height (seen from a tilted setup its foot
+        // stands further into the region at the floor than at the slice).
+        const bool spans = s.att == Attitude::Curved && s.lo < zl && s.hi > z;
+        if (!facesUp && !spans) continue;
+        // The region's walls among them: bevels and rounds (a hole across the axis is concave,
+        // and what the region loses beside it is not its wall).
+        const bool wall = std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end();
+        if (wall && (facesUp || !faces_[f].concave)) leaning.push_back(f);
         // Its footprint: its box in the setup's frame (the same however the part is placed).
         P2 lo, hi;
         view_.faceBox(f, lo, hi);
