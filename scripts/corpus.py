@@ -103,8 +103,11 @@ def row_of(part, run, seconds, last, machine):
 
 
 def beyond_travel(row):
+    """The run stopped because the machine named is too small: at its post (a move beyond the
+    travel) or before (the machine choice's check of the blank and the toolpaths)."""
     failed = row.get("failed") or {}
-    return failed.get("stage") == "post" and "beyond the travel" in failed.get("error", "")
+    error = failed.get("error", "")
+    return (failed.get("stage") == "post" and "beyond the travel" in error) or "does not hold the part" in error
 
 
 def _count(items):
