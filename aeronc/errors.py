@@ -8,6 +8,10 @@
     MachiningChainError        the machining chain cannot be built or updated
     PostError                  a post failed; names the operation and the move
     ImpellerError              an impeller cannot be programmed (route, tools, toolpaths)
+    DrillingError              datum holes, measurements or compensated drilling
+      HoleError                a selected element is not a hole, or not one the set can take
+      CameraError              the camera program cannot be made (machine, calibration, poses)
+      CompensationError        measurements cannot be imported or the holes not compensated
 
 The C++ core (aeronc._core) raises exceptions of its own; `from_core` turns them into these
 at the call, so the rest of the Python side (commands, panels, scripts) catches AeroNCError
@@ -46,6 +50,22 @@ class PostError(AeroNCError):
 
 class ImpellerError(AeroNCError):
     """An impeller's route, tools or toolpaths cannot be made; the message says why."""
+
+
+class DrillingError(AeroNCError):
+    """Datum holes, their measurements or the compensated drilling failed; the message says why."""
+
+
+class HoleError(DrillingError):
+    """A selected element is not a hole, or not one the photo-hole set can take."""
+
+
+class CameraError(DrillingError):
+    """The camera program cannot be made: no camera on the machine, no calibration, a pose out of reach."""
+
+
+class CompensationError(DrillingError):
+    """Measurements cannot be imported, or the holes cannot be compensated."""
 
 
 # RuntimeErrors that are bugs in Python, not messages from the core.

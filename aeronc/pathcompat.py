@@ -304,6 +304,18 @@ def add_scripted_operation(doc, name):
 
 # --- Jobs and operations of the machining chain ---------------------------------------------
 
+def command(name, params=None):
+    """One Path command (a comment when name is in parentheses); parameters as FreeCAD's."""
+    import Path
+    return Path.Command(name, dict(params or {}))
+
+
+def path_from_commands(commands=()):
+    """A Path of Path commands (empty without them)."""
+    import Path
+    return Path.Path(list(commands))
+
+
 def path_of(commands):
     """A Path from (name, parameters) pairs; parameters are FreeCAD's (lengths mm, feeds mm/s)."""
     import Path
@@ -316,6 +328,16 @@ def path_from_gcode(text):
     p = Path.Path()
     p.setFromGCode(text)
     return p
+
+
+def set_job_post(job, name, args=""):
+    """Post the Job with the FreeCAD post `name` (as FreeCAD lists it, without "_post") and its
+    arguments. False, and the Job unchanged, when FreeCAD does not list that post."""
+    if name not in job.getEnumerationsOfProperty("PostProcessor"):
+        return False
+    job.PostProcessor = name
+    job.PostProcessorArgs = args
+    return True
 
 
 def create_path_object(doc, name):

@@ -6,17 +6,16 @@
   AeroNC_ImportMeasurements    a measurement file for a photo-hole set (or again for a measured set)
   AeroNC_CompensatedDrilling   the compensated drilling operation in the part's Job
 """
-import FreeCAD
 import FreeCADGui
 
-import aeronc
+from aeronc.commands.base import Command
 
 
 def selected_holes():
     """(part, hole faces or edges) when everything selected is a hole of one part: faces or
     circular edges picked in the 3-D view, or hole elements of a Machining Features tree;
     else None."""
-    from aeronc import hole_geometry
+    from aeronc.drilling import hole_geometry
     part, subs = None, []
     selection = FreeCADGui.Selection.getSelectionEx()
     # Picking an element in the tree also selects its faces on the part (face_highlight): those
@@ -72,106 +71,73 @@ def selected_measured_set():
     return _selected(measured_hole_set.TYPE)
 
 
-def _idle():
-    return FreeCADGui.ActiveDocument is not None and not FreeCADGui.Control.activeDialog()
+class DefineDatumHoles(Command):
+    ICON = "PhotoHoleSet"
+    MENU_TEXT = "Define as datum (photo) hole"
+    TOOLTIP = ("Add the selected holes (cylindrical faces or their circular edges) to the part's photo-hole set, "
+               "in the order selected: drilled in advance, measured by the camera, left out of the drilling")
 
+    def target(self):
+        return selected_holes()
 
-def _error(title, e):
-    from PySide import QtGui
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(e))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: " + title, str(e))
-
-
-class DefineDatumHoles:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("PhotoHoleSet"),
-                "MenuText": "Define as datum (photo) hole",
-                "ToolTip": "Add the selected holes (cylindrical faces or their circular edges) to the part's "
-                           "photo-hole set, in the order selected: drilled in advance, measured by the camera, "
-                           "left out of the drilling"}
-
-    def IsActive(self):
-        return _idle() and selected_holes() is not None
-
-    def Activated(self):
-        picked = selected_holes()
-        if picked is None:
-            return
-        from aeronc.objects import photo_hole_set
-        try:
-            obj = photo_hole_set.define_datum_holes(FreeCAD.ActiveDocument, *picked)
-        except Exception as e:
-            _error("datum holes", e)
-            return
+    def run(self, picked):
+        from aeronc.makers import datum_holes
+        obj = datum_holes.define_datum_holes(FreeCADGui.ActiveDocument.Document, *picked)
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
 
 
-class CameraProgram:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("CameraProgram"),
-                "MenuText": "Camera program...",
-                "ToolTip": "Write the camera program of the selected photo-hole set: an APT CL file "
-                           "(GOTO/x,y,z,i,j,k normal to the surface, approach and safe height) and the NC program "
-                           "posted for the camera's machine"}
+class CameraProgram(Command):
+    ICON = "CameraProgram"
+    MENU_TEXT = "Camera program..."
+    TOOLTIP = ("Write the camera program of the selected photo-hole set: an APT CL file (GOTO/x,y,z,i,j,k normal "
+               "to the surface, approach and safe height) and the NC program posted for the camera's machine")
 
-    def IsActive(self):
-        return _idle() and selected_photo_set() is not None
+    def target(self):
+        return selected_photo_set()
 
-    def Activated(self):
+    def run(self, obj):
         from aeronc.panels.photo_hole_set_panel import PhotoHoleSetPanel
-        obj = selected_photo_set()
-        if obj is not None:
-            PhotoHoleSetPanel(obj).write_camera_program()
-            PhotoHoleSetPanel.current = None
+        PhotoHoleSetPanel(obj).write_camera_program()
+        PhotoHoleSetPanel.current = None
 
 
-class ImportMeasurements:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("MeasuredHoleSet"),
-                "MenuText": "Import measurements...",
-                "ToolTip": "Import the camera's measurement file (hole,u,v,height[,quality]) of the selected "
-                           "photo-hole set through the machine's transform chain, and show each datum hole's "
-                           "deviation"}
+class ImportMeasurements(Command):
+    ICON = "MeasuredHoleSet"
+    MENU_TEXT = "Import measurements..."
+    TOOLTIP = ("Import the camera's measurement file (hole,u,v,height[,quality]) of the selected photo-hole set "
+               "through the machine's transform chain, and show each datum hole's deviation")
 
-    def IsActive(self):
-        return _idle() and (selected_photo_set() is not None or selected_measured_set() is not None)
+    def target(self):
+        return selected_measured_set() or selected_photo_set()
 
-    def Activated(self):
-        ms = selected_measured_set()
-        if ms is not None:
+    def run(self, obj):
+        from aeronc.objects import measured_hole_set
+        if measured_hole_set.is_measured_hole_set(obj):
             from aeronc.panels.measured_hole_set_panel import MeasuredHoleSetPanel
-            panel = MeasuredHoleSetPanel(ms)
+            panel = MeasuredHoleSetPanel(obj)
             FreeCADGui.Control.showDialog(panel)
             panel.reimport()
             return
-        obj = selected_photo_set()
-        if obj is not None:
-            from aeronc.panels.photo_hole_set_panel import PhotoHoleSetPanel
-            panel = PhotoHoleSetPanel(obj)
-            FreeCADGui.Control.showDialog(panel)
-            panel.import_file()
+        from aeronc.panels.photo_hole_set_panel import PhotoHoleSetPanel
+        panel = PhotoHoleSetPanel(obj)
+        FreeCADGui.Control.showDialog(panel)
+        panel.import_file()
 
 
-class CompensatedDrilling:
-    def GetResources(self):
-        return {"Pixmap": aeronc.icon("CompensatedDrilling"),
-                "MenuText": "Compensated drilling",
-                "ToolTip": "Drill the part's holes (not the datum holes) at their compensated positions along "
-                           "the surface normals: a Path operation in the part's Job, updated when new "
-                           "measurements are imported"}
+class CompensatedDrilling(Command):
+    ICON = "CompensatedDrilling"
+    MENU_TEXT = "Compensated drilling"
+    TOOLTIP = ("Drill the part's holes (not the datum holes) at their compensated positions along the surface "
+               "normals: a Path operation in the part's Job, updated when new measurements are imported")
 
-    def IsActive(self):
-        return _idle() and (selected_photo_set() is not None or selected_measured_set() is not None)
+    def target(self):
+        return selected_measured_set() or selected_photo_set()
 
-    def Activated(self):
-        from aeronc.objects import compensated_drilling
-        ms = selected_measured_set()
-        ps = ms.PhotoHoleSet if ms is not None else selected_photo_set()
-        try:
-            op = compensated_drilling.create_for_photo_set(ps, ms)
-        except Exception as e:
-            _error("compensated drilling", e)
-            return
+    def run(self, obj):
+        from aeronc.makers import datum_holes
+        from aeronc.objects import measured_hole_set
+        ms = obj if measured_hole_set.is_measured_hole_set(obj) else None
+        op = datum_holes.create_for_photo_set(ms.PhotoHoleSet if ms is not None else obj, ms)
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(op)

@@ -35,8 +35,28 @@ def _on_workbench_activated(name):
         wb = FreeCADGui.getWorkbench(PATH_WORKBENCH)
         if extend(wb):
             wb.reloadActive()
+        from PySide import QtCore
+        QtCore.QTimer.singleShot(0, own_row)
     except Exception as e:
         FreeCAD.Console.PrintError("AeroNC: could not extend the Path workbench: {}\n".format(e))
+
+
+def own_row():
+    """Start the AeroNC toolbar on a row of its own: behind Path's nine toolbars it would fall
+    into the overflow menu of a 1600 px window. A toolbar the user moved to another area or
+    row stays where it is."""
+    from PySide import QtCore, QtGui
+    mw = FreeCADGui.getMainWindow()
+    bar = next((t for t in mw.findChildren(QtGui.QToolBar) if t.objectName() == TOOLBAR and t.isVisible()), None)
+    if bar is None or mw.toolBarArea(bar) != QtCore.Qt.TopToolBarArea:
+        return
+    tops = [t for t in mw.findChildren(QtGui.QToolBar)
+            if t.isVisible() and mw.toolBarArea(t) == QtCore.Qt.TopToolBarArea and t is not bar]
+    if all(t.y() != bar.y() for t in tops):
+        return  # already alone on its row
+    mw.addToolBarBreak(QtCore.Qt.TopToolBarArea)
+    mw.addToolBar(QtCore.Qt.TopToolBarArea, bar)  # moved behind the break: the last row, its own
+    bar.show()
 
 
 def extend(wb):

@@ -15,23 +15,20 @@ under the route.
 """
 import traceback
 
-import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import impeller_program
+from aeronc.impeller import programming
 from aeronc.panels.narrow import widen_dock
 from aeronc.errors import AeroNCError
+from aeronc.panels.base import error_reporter
 
 COLUMNS = ["On", "Step", "Tool", "Allowance"]
 DOCK_WIDTH = 520  # the route's four columns and the checks without a horizontal scroll bar
 ON, STEP, TOOL, ALLOWANCE = range(4)
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: program impeller", text)
+show_error = error_reporter("program impeller")  # tests may replace it
 
 
 class ImpellerPanel:
@@ -45,7 +42,8 @@ class ImpellerPanel:
         self.form = self._build_form()
         self._show_program()
         ImpellerPanel.current = self
-        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
+        self._restore_dock = lambda: None
+        QtCore.QTimer.singleShot(0, self._widen)
 
     # --- the form ----------------------------------------------------------------------------
 
@@ -128,9 +126,9 @@ class ImpellerPanel:
             if not has:
                 self.summary.setText("Choose the blank allowance and press Program.")
                 return
-            steps = impeller_program.steps_of(p)
+            steps = programming.steps_of(p)
             # The channel roughing and blade finishing take balls and tapered balls only.
-            library = sorted(k for k, t in impeller_program.tool_library(self.kb_path).items()
+            library = sorted(k for k, t in programming.tool_library(self.kb_path).items()
                              if t["type"] in ("ball", "tapered_ball"))
             self.table.setRowCount(len(steps))
             for row, s in enumerate(steps):
@@ -210,7 +208,7 @@ class ImpellerPanel:
         doc = self.part.Document
 
         def work():
-            self.program = impeller_program.create(doc, self.part, allowance=self.allowance.value(),
+            self.program = programming.create(doc, self.part, allowance=self.allowance.value(),
                                                    kb_path=self.kb_path, stations=self.stations.value(),
                                                    channels=self.channels.value())
         return self._run(work)
@@ -224,37 +222,41 @@ class ImpellerPanel:
         QtCore.QTimer.singleShot(0, lambda: self.set_enabled(position, on))
 
     def set_enabled(self, position, on):
-        return self._run(lambda: impeller_program.set_step_enabled(self.program, position, on))
+        return self._run(lambda: programming.set_step_enabled(self.program, position, on))
 
     def choose_tool(self, position, tool_id):
         if self._filling or self.program is None:
             return False
-        return self._run(lambda: impeller_program.set_step_tool(self.program, position, tool_id))
+        return self._run(lambda: programming.set_step_tool(self.program, position, tool_id))
 
     def change_allowance(self, position, value):
         if self._filling or self.program is None:
             return False
-        current = next(s for s in impeller_program.steps_of(self.program) if s["position"] == position)
+        current = next(s for s in programming.steps_of(self.program) if s["position"] == position)
         if abs(float(current["allowance"]) - value) < 1e-9:
             return False
-        return self._run(lambda: impeller_program.set_step_allowance(self.program, position, value))
+        return self._run(lambda: programming.set_step_allowance(self.program, position, value))
 
     def apply_allowance(self):
         if self.program is None:
             return False
-        return self._run(lambda: impeller_program.set_allowance(self.program, self.allowance.value()))
+        return self._run(lambda: programming.set_allowance(self.program, self.allowance.value()))
 
     def rerun(self):
         if self.program is None:
             return False
-        return self._run(lambda: impeller_program.update(self.program, title="Re-run impeller program"))
+        return self._run(lambda: programming.update(self.program, title="Re-run impeller program"))
 
     # --- task dialog -------------------------------------------------------------------------
 
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Close)
 
+    def _widen(self):
+        self._restore_dock = widen_dock(DOCK_WIDTH)
+
     def reject(self):
         FreeCADGui.Control.closeDialog()
         ImpellerPanel.current = None
+        self._restore_dock()
         return True

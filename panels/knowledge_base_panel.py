@@ -12,14 +12,13 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import knowledge_base
+from aeronc.pipeline import knowledge_base
 from aeronc.errors import KnowledgeBaseError, from_core
 from aeronc.panels.narrow import ElidedLabel, button_rows, scrolling
+from aeronc.panels.base import error_reporter
 
 
-def show_error(text):
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: knowledge base", text)
+show_error = error_reporter("knowledge base")  # tests may replace it
 
 
 class _TableTab:

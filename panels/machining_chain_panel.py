@@ -18,9 +18,10 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import chain_edits, knowledge_base
+from aeronc.pipeline import chain_edits, knowledge_base
 from aeronc.panels.narrow import widen_dock
-from aeronc import machining_chain as mc
+from aeronc.pipeline import chain_building as mc
+from aeronc.panels.base import error_reporter
 
 COLUMNS = ["Chain", "Element", "Operation", "Tool", "Top", "Bottom", "Radial", "Axial", "Est. time"]
 TOOL_COLUMN = COLUMNS.index("Tool")
@@ -32,10 +33,7 @@ RED = "#b00020"
 DOCK_WIDTH = 760
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: machining chain", text)
+show_error = error_reporter("machining chain")  # tests may replace it
 
 
 def _mm(v):
@@ -61,7 +59,8 @@ class MachiningChainPanel:
         self.notes = []
         self.form = self._build_form()
         MachiningChainPanel.current = self
-        QtCore.QTimer.singleShot(0, lambda: widen_dock(DOCK_WIDTH))
+        self._restore_dock = lambda: None
+        QtCore.QTimer.singleShot(0, self._widen)
         if self.built:
             self.chain = mc.check(chain_edits.apply(self.built, self.edits)[0])
             self._refresh()
@@ -358,9 +357,16 @@ class MachiningChainPanel:
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
 
+    def _widen(self):
+        self._restore_dock = widen_dock(DOCK_WIDTH)
+
+    def _close(self):
+        MachiningChainPanel.current = None
+        FreeCADGui.Control.closeDialog()
+        self._restore_dock()
+
     def accept(self):
-        if self.built is None:
-            show_error("Build the chain first.")
+        if self.built is None and not self.build():  # OK on a fresh panel builds the chain first
             return False
         progress = QtGui.QProgressDialog("Making the Jobs...", "Cancel", 0, 100, FreeCADGui.getMainWindow())
         progress.setWindowModality(QtCore.Qt.WindowModal)
@@ -389,11 +395,9 @@ class MachiningChainPanel:
             FreeCAD.Console.PrintMessage("AeroNC: {}\n".format(m))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {} units in {}\n".format(
             obj.Label, obj.UnitCount, ", ".join(j.Label for j in obj.Jobs)))
-        MachiningChainPanel.current = None
-        FreeCADGui.Control.closeDialog()
+        self._close()
         return True
 
     def reject(self):
-        MachiningChainPanel.current = None
-        FreeCADGui.Control.closeDialog()
+        self._close()
         return True

@@ -9,15 +9,14 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtGui
 
-from aeronc.panels.photo_hole_set_panel import ask_open_file, ask_save_file
+from aeronc.panels.base import ask_open_file, ask_save_file, error_reporter
+
 
 DEVIATION_COLUMNS = ["Id", "dX", "dY", "dZ", "|dP| mm", "Quality"]
 LOO_COLUMNS = ["Method", "RMS mm", "Max mm", "Note"]
 
 
-def show_error(text):
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: measured holes", text)
+show_error = error_reporter("measured holes")  # tests may replace it
 
 
 def _table(columns):
@@ -153,20 +152,20 @@ class MeasuredHoleSetPanel:
             self.obj.Document.recompute([self.obj])
 
     def reimport(self, path=None):
-        from aeronc.objects import measured_hole_set as mhs
+        from aeronc.makers import datum_holes
         if path is None:
             path = ask_open_file("Measured datum holes (hole,u,v,height[,quality])", "CSV (*.csv *.txt);;All (*)")
             if not path:
                 return None
-        return self._run(lambda: mhs.import_measurements(self.obj.PhotoHoleSet, path, measured_set=self.obj))
+        return self._run(lambda: datum_holes.import_measurements(self.obj.PhotoHoleSet, path, measured_set=self.obj))
 
     def compensated_drilling(self):
-        from aeronc.objects import compensated_drilling
-        return self._run(lambda: compensated_drilling.create_for_photo_set(self.obj.PhotoHoleSet, self.obj))
+        from aeronc.makers import datum_holes
+        return self._run(lambda: datum_holes.create_for_photo_set(self.obj.PhotoHoleSet, self.obj))
 
     def write_report(self, path=None):
-        from aeronc import compensation_report
-        from aeronc.objects import compensated_drilling
+        from aeronc.reports import compensation_report
+        from aeronc.operations import compensated_drilling
         ops = [op for op in compensated_drilling.operations_of(self.obj.PhotoHoleSet) if op.MeasuredHoleSet is self.obj]
         if not ops:
             show_error("no compensated drilling uses these measurements yet: make one first")

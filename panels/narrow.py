@@ -7,12 +7,24 @@ from PySide import QtCore, QtGui
 
 def widen_dock(width):
     """Widen the visible combo view or task dock to `width` pixels when it is narrower (a panel
-    whose table needs more than FreeCAD's default width)."""
+    whose table needs more than FreeCAD's default width). Returns restore(), which gives the
+    docks their widths back: the panel calls it when it closes."""
     import FreeCADGui
     mw = FreeCADGui.getMainWindow()
+    widened = []
     for dock in mw.findChildren(QtGui.QDockWidget):
         if dock.isVisible() and dock.objectName() in ("Combo View", "Tasks") and dock.width() < width:
+            widened.append((dock, dock.width()))
             mw.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
+
+    def restore():
+        for dock, was in widened:
+            try:
+                mw.resizeDocks([dock], [was], QtCore.Qt.Horizontal)
+            except RuntimeError:  # the dock is gone (FreeCAD closing)
+                pass
+        widened.clear()
+    return restore
 
 
 class ElidedLabel(QtGui.QLabel):

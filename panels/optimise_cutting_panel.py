@@ -13,11 +13,12 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import cutting_optimisation as co
-from aeronc import knowledge_base
+from aeronc.pipeline import cutting_optimisation as co
+from aeronc.pipeline import knowledge_base
 from aeronc.errors import AeroNCError
 from aeronc.panels.narrow import ScaledPicture, compact_combo, scrolling, wrapping_form
 from aeronc.panels.result_table import add_run_and_results
+from aeronc.panels.base import error_reporter
 
 COLUMNS = ["ToolController", "Operation", "a_p \u00d7 a_e mm", "n r/min", "v_f mm/min", "Active limits / problem"]
 METHOD_LABELS = [("nlopt", "Deterministic (scan + NLopt)"), ("ga", "Genetic algorithm"),
@@ -27,10 +28,7 @@ PLOT_SIZE_IN, PLOT_DPI = (5.4, 4.2), 80
 PREFS = "User parameter:BaseApp/Preferences/Mod/AeroNC/Optimise"
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: cutting-parameter optimisation", text)
+show_error = error_reporter("cutting-parameter optimisation")  # tests may replace it
 
 
 def _spin(value, low, high, decimals, suffix="", step=None):
@@ -243,7 +241,7 @@ class OptimiseCuttingPanel:
             self.plot.setWordWrap(True)
             self.report.setPlainText(p.error)
             return
-        from aeronc import optimisation_plot
+        from aeronc.reports import optimisation_plot
         try:
             png = optimisation_plot.render(p.result, "{}: {} / {} / {}".format(
                 p.tc.Label, p.params["kb"]["workpiece_material"], p.tool_material, p.operation), *PLOT_SIZE_IN, PLOT_DPI)

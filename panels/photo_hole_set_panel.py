@@ -11,23 +11,14 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
+from aeronc.panels.base import ask_open_file, ask_save_file, error_reporter  # noqa: F401  (tests replace them here)
+
 COLUMNS = ["#", "Id", "Faces", "\u00d8 mm", "Position (part frame)", "Normal"]
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: datum holes", text)
+show_error = error_reporter("datum holes")  # tests may replace it
 
 
-def ask_open_file(caption, pattern):
-    """A file to read, or '' (tests may replace this)."""
-    return QtGui.QFileDialog.getOpenFileName(FreeCADGui.getMainWindow(), caption, "", pattern)[0]
-
-
-def ask_save_file(caption, pattern, default):
-    """A file to write, or '' (tests may replace this)."""
-    return QtGui.QFileDialog.getSaveFileName(FreeCADGui.getMainWindow(), caption, default, pattern)[0]
 
 
 def _vec(v, digits=3):
@@ -209,7 +200,7 @@ class PhotoHoleSetPanel:
 
     def write_camera_program(self, path=None):
         """Write <name>.apt and <name>.mpf (840D for the set's machine); path: the APT file."""
-        from aeronc import compensation
+        from aeronc.drilling import compensation
         if path is None:
             path = ask_save_file("Camera program (APT; the NC program is written beside it)", "APT CL (*.apt)",
                                  "camera.apt")
@@ -223,12 +214,12 @@ class PhotoHoleSetPanel:
 
     def import_file(self, path=None):
         """Import a measurement file; on success the measured-hole set's panel replaces this one."""
-        from aeronc.objects import measured_hole_set as mhs
+        from aeronc.makers import datum_holes
         if path is None:
             path = ask_open_file("Measured datum holes (hole,u,v,height[,quality])", "CSV (*.csv *.txt);;All (*)")
             if not path:
                 return None
-        ms = self._run(lambda: mhs.import_measurements(self.obj, path))
+        ms = self._run(lambda: datum_holes.import_measurements(self.obj, path))
         if ms is None:
             return None
         self.reject()
@@ -237,5 +228,5 @@ class PhotoHoleSetPanel:
         return ms
 
     def compensated_drilling(self):
-        from aeronc.objects import compensated_drilling
-        return self._run(lambda: compensated_drilling.create_for_photo_set(self.obj))
+        from aeronc.makers import datum_holes
+        return self._run(lambda: datum_holes.create_for_photo_set(self.obj))

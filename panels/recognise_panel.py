@@ -11,8 +11,9 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import recognition
+from aeronc.pipeline import recognition
 from aeronc.panels.narrow import ElidedLabel, compact_combo, wrapping_form
+from aeronc.panels.base import error_reporter
 
 DIRECTION_CHOICES = [  # (text, directions; None = custom vector)
     ("Automatic (from the part)", []),
@@ -33,10 +34,36 @@ def _spin(value, lo, hi, decimals, suffix="", step=1.0):
     return box
 
 
-def show_error(text):
-    """Report an error to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: recognition failed", text)
+show_error = error_reporter("recognition failed")  # tests may replace it
+
+
+# The roles the 3-D view colours the part by, in the words of the legend.
+LEGEND = [("floor", "floor"), ("wall", "wall"), ("island_wall", "island wall"), ("hole_wall", "hole"),
+          ("floor_fillet", "floor fillet"), ("corner_fillet", "corner fillet"), ("counterbore_floor", "counterbore floor"),
+          ("countersink", "countersink"), ("chamfer", "chamfer"), ("open_bevel", "open bevel"),
+          ("closed_bevel", "closed bevel"), ("rib_top", "rib top"), ("top", "top"), ("stock", "stock (blank surface)"),
+          ("unclaimed", "no element")]
+
+
+def colour_legend():
+    """The legend of the role colours of the 3-D view, two columns of swatches; a face painted
+    in FreeCAD's selection colour belongs to the element selected in the tree."""
+    from aeronc.feature_colours import ROLE_COLOURS
+    box = QtGui.QGroupBox("Face colours")
+    grid = QtGui.QGridLayout(box)
+    grid.setSpacing(2)
+    for k, (role, text) in enumerate(LEGEND):
+        r, g, b = (int(round(255 * c)) for c in ROLE_COLOURS[role])
+        swatch = QtGui.QLabel()
+        swatch.setObjectName("legend_" + role)
+        swatch.setFixedSize(14, 14)
+        swatch.setStyleSheet("background-color: rgb({},{},{}); border: 1px solid #555;".format(r, g, b))
+        label = QtGui.QLabel(text)
+        grid.addWidget(swatch, k // 2, 2 * (k % 2))
+        grid.addWidget(label, k // 2, 2 * (k % 2) + 1)
+    grid.setColumnStretch(1, 1)
+    grid.setColumnStretch(3, 1)
+    return box
 
 
 class RecognisePanel:
@@ -101,6 +128,9 @@ class RecognisePanel:
         f.addRow("Angular", self.angular)
         f.addRow("Chord", self.chord)
         lay.addWidget(box)
+
+        self.legend = colour_legend()
+        lay.addWidget(self.legend)
 
         self.status = QtGui.QLabel("")
         self.status.setWordWrap(True)

@@ -12,18 +12,16 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
-from aeronc import knowledge_base, tool_planning
+from aeronc.pipeline import knowledge_base, tool_planning
 from aeronc.errors import AeroNCError
 from aeronc.panels.narrow import ElidedLabel, compact_combo, wrapping_form
 from aeronc.panels.result_table import add_run_and_results
+from aeronc.panels.base import error_reporter
 
 COLUMNS = ["Element", "Type", "Finishing", "Roughing", "\u03b7", "Narrow", "Problem"]
 
 
-def show_error(text):
-    """Report to the report view and a message box (tests may replace this)."""
-    FreeCAD.Console.PrintError("AeroNC: {}\n".format(text))
-    QtGui.QMessageBox.critical(FreeCADGui.getMainWindow(), "AeroNC: tool selection failed", text)
+show_error = error_reporter("tool selection failed")  # tests may replace it
 
 
 class SelectToolsPanel:

@@ -2,12 +2,12 @@
 
     HOME=<a FreeCAD home with AeroNC installed> AERONC_OUT=out/demo freecadcmd scripts/demo.py
 
-(`scripts/run.sh demo` does this.) Runs aeronc.main_job on resources/samples/sample_panel.step,
+(`scripts/run.sh demo` does this.) Runs aeronc.runs.main_job on resources/samples/sample_panel.step,
 an integral panel with pockets on both faces, islands, openings, lightening and bolt holes, a
 flange and a joggle: recognise -> select tools -> optimise cutting data -> machining chain ->
 one Path Job per setup -> Sinumerik 840D and LinuxCNC programs -> the LinuxCNC programs re-read
 by LinuxCNC's interpreter and simulated against the blank -> pictures and report.html, all in
-AERONC_OUT (see aeronc/main_job.py for the list). AERONC_PART=<file.step> runs the same on
+AERONC_OUT (see aeronc/runs/main_job.py for the list). AERONC_PART=<file.step> runs the same on
 another part; AERONC_MATERIAL, AERONC_MACHINE, AERONC_FAMILY and AERONC_CELL (the verification's
 cell size, mm) change the defaults (7050-T7451, AC-5AX, integral_panel, 0.5). Exit code 0 on success, 1 with the failed stage named.
 """
@@ -18,7 +18,7 @@ def main():
     import sys
 
     import aeronc
-    from aeronc import main_job
+    from aeronc.runs import main_job
     from aeronc.errors import AeroNCError
 
     part = os.environ.get("AERONC_PART") or os.path.join(aeronc.PACKAGE_DIR, "resources", "samples",

@@ -2,11 +2,12 @@
 
     HOME=<a FreeCAD home with AeroNC installed> AERONC_OUT=out/impeller freecadcmd scripts/impeller.py
 
-(`scripts/run.sh impeller` does this.) Runs aeronc.impeller_job: a generated 2 x 9 impeller
+(`scripts/run.sh impeller` does this.) Generates a 2 x 9 impeller with its truth
+(aeronc.tests.parts.impeller_part) and runs aeronc.runs.impeller_run on it:
 programmed in FreeCAD by Program impeller (recognition nodes, blank as the Job's stock, the
 route's operations with 5-axis toolpaths, cutting data from the optimiser, the 840D program),
 the document saved, the program re-read and checked, pictures and report.html in AERONC_OUT
-(see aeronc/impeller_job.py for the list). AERONC_IMPELLER_SPEC (JSON, ImpellerSpec's keys),
+(see aeronc/runs/impeller_run.py for the list). AERONC_IMPELLER_SPEC (JSON, ImpellerSpec's keys),
 AERONC_ALLOWANCE (mm), AERONC_STATIONS and AERONC_CHANNELS (0: all) change the defaults.
 Exit code 0 on success, 1 with the failed stage named.
 """
@@ -17,12 +18,16 @@ def main():
     import json
     import sys
 
-    from aeronc import impeller_job
     from aeronc.errors import AeroNCError
+    from aeronc.runs import impeller_run
+    from aeronc.tests.parts import impeller_part
 
     try:
-        impeller_job.run(os.environ.get("AERONC_OUT", "out/impeller"),
-                         spec=json.loads(os.environ.get("AERONC_IMPELLER_SPEC") or "{}"),
+        spec = json.loads(os.environ.get("AERONC_IMPELLER_SPEC") or "{}")
+        shape, truth = impeller_part.make_test_impeller(spec)
+        impeller_run.run(os.environ.get("AERONC_OUT", "out/impeller"), shape, truth,
+                         source="generated impeller, spec {}".format(json.dumps(spec) if spec else
+                                                                     "default (2 x 9 blades)"),
                          allowance=float(os.environ.get("AERONC_ALLOWANCE", "2.0")),
                          stations=int(os.environ.get("AERONC_STATIONS", "24")),
                          channels=int(os.environ.get("AERONC_CHANNELS", "0")))

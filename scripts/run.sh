@@ -5,12 +5,14 @@
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
+#   scripts/run.sh drill     datum holes and compensated drilling of a generated wing skin -> out/drill/
 #   scripts/run.sh impeller  a generated 2 x 9 impeller programmed in FreeCAD -> out/impeller/:
 #                            document, 840D program, report.html with pictures (docs/impeller.md)
 #   scripts/run.sh test      every test: C++ unit tests, freecadcmd tests, GUI test under
 #                            Xvfb, FreeCAD's own Path suite with the addon installed
 #   scripts/run.sh bench     the benchmarks (figures on stdout)
-#   scripts/run.sh install   install the addon into your FreeCAD Mod folder
+#   scripts/run.sh install   install the addon into your FreeCAD Mod folder ($HOME/.local/share/FreeCAD/Mod,
+#                            or AERONC_MOD_DIR)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
@@ -46,6 +48,12 @@ case "${1:-}" in
     mkdir -p "$out"
     HOME=$(fc_home post) AERONC_OUT=$out freecadcmd "$ROOT/scripts/post_sample.py"
     ;;
+  drill)
+    out=$ROOT/out/drill
+    mkdir -p "$out"
+    HOME=$(fc_home drill) AERONC_OUT=$out freecadcmd "$ROOT/scripts/drill.py" 2>&1 |
+      awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
+    ;;
   impeller)
     out=$ROOT/out/impeller
     mkdir -p "$out"
@@ -60,10 +68,15 @@ case "${1:-}" in
     cmake --build "$BUILD" --target bench
     ;;
   install)
-    cmake --install "$BUILD" --component addon  # without the tests
+    # Into the FreeCAD of the HOME it runs under (the prefix configured with the build is not
+    # used: it is the configuring user's), or into AERONC_MOD_DIR when given.
+    dest=${AERONC_MOD_DIR:-$HOME/.local/share/FreeCAD/Mod}
+    rm -rf "$dest/AeroNC"  # afresh, as the stage: nothing of an older install lingers
+    cmake --install "$BUILD" --component addon --prefix "$dest" > /dev/null  # without the tests
+    echo "AeroNC installed into $dest/AeroNC; start FreeCAD and switch to the Path workbench"
     ;;
   *)
-    echo "usage: scripts/run.sh demo|post|impeller|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|drill|post|impeller|test|bench|install" >&2
     exit 2
     ;;
 esac

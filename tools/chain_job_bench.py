@@ -38,19 +38,20 @@ def _sample(doc):
 
 def run(name, make, kb_path):
     import FreeCAD
-    from aeronc import _core, chain_edits, machining_chain, makers
+    from aeronc import _core, makers
+    from aeronc.pipeline import chain_edits, chain_building
     doc = FreeCAD.newDocument("ChainBench")
     doc.UndoMode = 1
     part = make(doc)
     doc.recompute()
     group = makers.create_machining_features(doc, part)
     t0 = time.perf_counter()
-    built = machining_chain.compute(group, "integral_panel", "7050-T7451", kb_path=kb_path)
+    built = chain_building.compute(group, "integral_panel", "7050-T7451", kb_path=kb_path)
     t_chain = time.perf_counter() - t0
     t0 = time.perf_counter()
-    chain = machining_chain.build(group, "integral_panel", "7050-T7451", kb_path=kb_path, built=built)
+    chain = chain_building.build(group, "integral_panel", "7050-T7451", kb_path=kb_path, built=built)
     t_build = time.perf_counter() - t0
-    ops = machining_chain.chain_operations(chain)
+    ops = chain_building.chain_operations(chain)
     t0 = time.perf_counter()
     for op in ops:
         op.touch()
@@ -69,7 +70,7 @@ def run(name, make, kb_path):
     t_core = time.perf_counter() - t0
     edits = chain_edits.with_enabled({}, ops[-1].UnitId, False)
     t0 = time.perf_counter()
-    machining_chain.update(chain, edits)
+    chain_building.update(chain, edits)
     t_update = time.perf_counter() - t0
     commands = sum(len(op.Path.Commands) for op in ops)
     failed = sum(1 for op in ops if "Invalid" in op.State)

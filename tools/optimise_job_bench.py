@@ -35,7 +35,7 @@ def build(doc, tcs, ops):
 def main():
     import tempfile
     import FreeCAD
-    from aeronc import cutting_optimisation as co
+    from aeronc.pipeline import cutting_optimisation as co
     tcs = int(os.environ.get("AERONC_BENCH_TCS", "25"))
     ops = int(os.environ.get("AERONC_BENCH_OPS", "500"))
     doc = FreeCAD.newDocument("OptimiseBench")

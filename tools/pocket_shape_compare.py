@@ -106,7 +106,7 @@ def recompute_all(ops):
 def path_moves(commands, arc_step=ARC_STEP_MM):
     """[kind, x, y, z] tool-tip moves (0 rapid, 1 feed) of Path commands, and drill cycles
     [3, x, y, bottom, r, peck, dwell]; XY arcs (G2/G3, I J relative to the start) become chords."""
-    from aeronc.verification import _arc_points
+    from aeronc.pipeline.verification import _arc_points
     pos = [None, None, None]
     moves = []
     for c in commands:
@@ -155,7 +155,7 @@ def _length(op, prop):
 
 def floor_figures(part_shape, ops, blank, pockets, cell):
     """Simulate ops on the blank; the +Z floors' figures of the pockets."""
-    from aeronc import verification
+    from aeronc.pipeline import verification
     floors = {f for e in pockets for f in e["floorFaces"]}
     fillets = {f for e in pockets for f in e.get("filletFaces", [])} - floors
     elements = {"E{}".format(e["id"]): list(e["floorFaces"]) for e in pockets}
@@ -185,7 +185,8 @@ def floor_figures(part_shape, ops, blank, pockets, cell):
 
 def main():
     import FreeCAD
-    from aeronc import _core, machining_chain, setup_job, tool_planning
+    from aeronc import _core
+    from aeronc.pipeline import chain_building, setup_job, tool_planning
     from aeronc.makers import create_machining_features
     from aeronc.objects import result_of
     from aeronc.operations.base import cutter_of
@@ -202,7 +203,7 @@ def main():
     group = create_machining_features(doc, part)
     result = result_of(group)
     tool_planning.select_tools(group, MATERIAL, MACHINE, kb_path)
-    chain_obj = machining_chain.build(group, FAMILY, MATERIAL, MACHINE, kb_path)
+    chain_obj = chain_building.build(group, FAMILY, MATERIAL, MACHINE, kb_path)
     t_prepare = time.perf_counter() - t0
     chain = json.loads(chain_obj.Chain)
     sid, pockets = closed_pockets_from_top(result)
@@ -214,7 +215,7 @@ def main():
     # The chain's operations of those pockets, in chain order, in the +Z Job.
     setup = [s for s in chain["setups"] if int(s["id"]) == sid][0]
     to_part = setup_job.frame_placement(setup["frame"]).inverse()
-    chain_ops = [op for op in machining_chain.chain_operations(chain_obj)
+    chain_ops = [op for op in chain_building.chain_operations(chain_obj)
                  if op.SetupId == sid and op.ElementId in ids and op.Active]
     missing = sorted(ids - {op.ElementId for op in chain_ops})
     t_chain_ops, chain_runs = _best(runs, lambda: recompute_all(chain_ops))
@@ -247,7 +248,7 @@ def main():
 
     chain_fig = floor_figures(part.Shape, chain_sim(chain_ops), blank, pockets, cell)
     # The same floors after every operation of the +Z setup, in chain order (not timed).
-    setup_ops = [op for op in machining_chain.chain_operations(chain_obj) if op.SetupId == sid and op.Active]
+    setup_ops = [op for op in chain_building.chain_operations(chain_obj) if op.SetupId == sid and op.Active]
     setup_fig = floor_figures(part.Shape, chain_sim(setup_ops), blank, pockets, cell)
 
     print("  chain operations of those pockets: {} (steps {}){}".format(

@@ -11,7 +11,8 @@ import time
 
 def main():
     import Part
-    from aeronc import picture, recognition
+    from aeronc.reports import picture
+    from aeronc.pipeline import recognition
 
     out = os.path.abspath(os.environ.get("AERONC_OUT", "out/review"))
     os.makedirs(out, exist_ok=True)

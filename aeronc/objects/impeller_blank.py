@@ -2,7 +2,7 @@
 about the axis (docs/impeller.md §4), and the Stock of the impeller's Path Job.
 
 A Part::FeaturePython so that Path's Job treats it like its own stock objects (their view
-providers are Python ones). The shape is made by aeronc.impeller_program from the core's
+providers are Python ones). The shape is made by aeronc.impeller.programming from the core's
 profile and saved with the document; recompute keeps it.
 """
 from aeronc.objects.base import BaseProxy, declare_property, proxy_type

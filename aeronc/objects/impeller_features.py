@@ -4,7 +4,7 @@ The group holds the core's recognition and dimensions (Result, JSON with every f
 role added as faceRoles, so the 3D view and the pictures colour it the same way) and one
 ImpellerFeature node per blade (main or splitter, in angular order), and for the hub, the
 root fillets, the shroud faces, the bore, the planes and the turned faces. Each node lists the
-FaceN of the source solid it stands for. Made by aeronc.impeller_program.
+FaceN of the source solid it stands for. Made by aeronc.impeller.programming.
 """
 import json
 

@@ -6,7 +6,7 @@ route as the knowledge base planned it (Route), the user's edits of it (Edits: d
 other tools, other allowances), the settings (blank allowance, material, machine, knowledge
 base, stations and channels of the toolpaths), the cutting data the optimiser chose, the
 checks of the toolpaths and the posted 840D program. All JSON lives in string properties, so
-the program survives save and reopen. Made and updated by aeronc.impeller_program.
+the program survives save and reopen. Made and updated by aeronc.impeller.programming.
 """
 import json
 

@@ -5,7 +5,7 @@ overrides, disabled units), the chain with the edits applied and the rules check
 (Chain), the settings it was built with (family, material, machine, knowledge base), and links
 to the Machining Features group it was built from and to the Path Jobs made from it, one per
 setup. All JSON lives in string properties, so the chain survives save and reopen. The chain
-is built and updated by aeronc.machining_chain, which also makes the Jobs.
+is built and updated by aeronc.pipeline.chain_building, which also makes the Jobs.
 """
 import json
 

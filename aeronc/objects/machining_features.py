@@ -10,7 +10,7 @@ import math
 
 import FreeCAD
 
-from aeronc import recognition
+from aeronc.pipeline import recognition
 from aeronc.objects.base import BaseProxy, declare_property, proxy_type
 
 TYPE = "AeroNC::MachiningFeatures"
@@ -49,7 +49,7 @@ class MachiningFeatures(BaseProxy):
         declare_property(obj, "App::PropertyStringList", "Warnings", g, "Warnings of the recognition", read_only=True)
         declare_property(obj, "App::PropertyBool", "Outdated", g,
                          "The source part changed since recognition: recognise again", read_only=True)
-        g = "Tools"  # filled by Select tools (aeronc.tool_planning)
+        g = "Tools"  # filled by Select tools (aeronc.pipeline.tool_planning)
         declare_property(obj, "App::PropertyString", "Material", g, "Workpiece material of the tool plan",
                          read_only=True)
         declare_property(obj, "App::PropertyString", "Machine", g, "Machine of the tool plan (spindle limit)",

@@ -11,11 +11,10 @@ than two datum holes, a malformed line) is refused as a whole: the document stay
 """
 import datetime
 import json
-import os
 
 import FreeCAD
 
-from aeronc import compensation
+from aeronc.drilling import compensation
 from aeronc.objects.base import BaseProxy, add_property, proxy_type
 from aeronc.objects.transaction import in_transaction
 
@@ -125,7 +124,7 @@ def result_of(obj):
     return json.loads(obj.Result) if obj.Result else {}
 
 
-def _store(obj, photo_set, imported, text, path):
+def store_readings(obj, photo_set, imported, text, path):
     obj.PhotoHoleSet = photo_set
     obj.SourceFile = path or ""
     obj.ImportedAt = datetime.datetime.now().isoformat(timespec="seconds")
@@ -138,48 +137,6 @@ def _store(obj, photo_set, imported, text, path):
     obj.Quality = [-1.0 if d["quality"] is None else float(d["quality"]) for d in imported]
     obj.Readings = json.dumps([{"id": d["id"], "u": d["u"], "v": d["v"], "height": d["height"], "line": d["line"]}
                                for d in imported], separators=(",", ":"))
-
-
-def import_measurements(photo_set, path=None, text=None, measured_set=None, max_deviation=None, min_quality=None):
-    """Import a measurement file (path, or its text) for photo_set into measured_set (updated in
-    place, keeping its settings), or into the set's measured-hole set, or a new one; one undo
-    step. Drilling operations of the photo-hole set without measurements are linked to it.
-    Bad input raises CompensationError and leaves the document as it was. Returns the set."""
-    from aeronc.objects import compensated_drilling
-    if text is None:
-        if not path:
-            raise compensation.CompensationError("no measurement file given")
-        text = compensation.read_measurement_file(path)
-    if measured_set is None:
-        existing = measured_sets_of(photo_set)
-        measured_set = existing[0] if existing else None
-    if max_deviation is None:
-        max_deviation = measured_set.MaxDeviation.Value if measured_set is not None else 5.0
-    if min_quality is None:
-        min_quality = measured_set.MinQuality if measured_set is not None else 0.0
-    imported = compensation.import_readings(photo_set, text, max_deviation, min_quality)
-    doc = photo_set.Document
-
-    def work():
-        obj = measured_set
-        if obj is None:
-            obj = doc.addObject("App::FeaturePython", "MeasuredHoleSet")
-            MeasuredHoleSet(obj)
-            obj.Label = "Measured holes ({})".format(os.path.basename(path) if path else photo_set.Label)
-            obj.Visibility = True
-            if FreeCAD.GuiUp:
-                from aeronc import viewproviders
-                viewproviders.attach(obj)
-        obj.MaxDeviation = max_deviation
-        obj.MinQuality = min_quality
-        _store(obj, photo_set, imported, text, path)
-        for op in compensated_drilling.operations_of(photo_set):
-            if op.MeasuredHoleSet is None:
-                op.MeasuredHoleSet = obj
-        doc.recompute()
-        return obj
-
-    return in_transaction(doc, "Import datum-hole measurements", work)
 
 
 def set_method(obj, method):

@@ -11,7 +11,8 @@ warning for every row of holes without a datum hole at one of its ends.
 """
 import FreeCAD
 
-from aeronc import hole_geometry
+from aeronc.drilling import hole_geometry
+from aeronc.drilling.hole_pattern import drawn_rows, holes_of, pattern_rows  # noqa: F401  (the set's holes and rows)
 from aeronc.objects.base import BaseProxy, add_property, declare_property, proxy_type
 from aeronc.objects.transaction import in_transaction
 
@@ -114,28 +115,6 @@ def _to_part(part, v, direction=False):
     return inv.Rotation.multVec(v) if direction else inv.multVec(v)
 
 
-def assembly_from_part(part):
-    """(position, normal) in the part frame -> the same in the assembly (document) frame."""
-    pl = part.Placement
-
-    def convert(p, n):
-        a = pl.multVec(FreeCAD.Vector(*p))
-        b = pl.Rotation.multVec(FreeCAD.Vector(*n))
-        return [a.x, a.y, a.z], [b.x, b.y, b.z]
-    return convert
-
-
-def holes_of(obj):
-    """The datum holes as dicts (id, faces, position, normal, diameter, depth, segment), in order."""
-    out = []
-    for i, hid in enumerate(obj.HoleIds):
-        p, n = obj.Positions[i], obj.Normals[i]
-        out.append({"id": hid, "faces": obj.HoleFaces[i].split(), "position": (p.x, p.y, p.z),
-                    "normal": (n.x, n.y, n.z), "diameter": obj.Diameters[i], "depth": obj.Depths[i],
-                    "segment": obj.Segments[i]})
-    return out
-
-
 def pattern_of(obj):
     """The stored hole pattern: [{faces, entry, normal, diameter, depth, datum}] (part frame)."""
     by_face = {}
@@ -156,14 +135,14 @@ def datum_faces(obj):
     return {f for faces in obj.HoleFaces for f in faces.split()}
 
 
-def _measure(part, face, surface, up):
+def measure_hole(part, face, surface, up):
     h = hole_geometry.hole(part.Shape, face, surface or None, tuple(up))
     return {"faces": " ".join(h["faces"]), "position": _to_part(part, h["entry"]),
             "normal": _to_part(part, h["normal"], True), "diameter": h["diameter"], "depth": h["depth"],
             "segment": h["solid"]}
 
 
-def _write(obj, rows):
+def write_holes(obj, rows):
     """Set every hole list from rows (dicts with id, faces, position, normal, ...), in order."""
     obj.HoleIds = [r["id"] for r in rows]
     obj.HoleFaces = [r["faces"] for r in rows]
@@ -190,44 +169,7 @@ def _new_rows(obj, part, sub_names):
     already = ["{} (datum hole {})".format(f, taken[f]) for f in faces if f in taken]
     if already:
         raise hole_geometry.HoleError("already datum holes of {}: {}".format(obj.Label, ", ".join(already)))
-    return [_measure(part, f, surface_faces(obj), obj.Up) for f in faces]
-
-
-def _attach_view(obj):
-    if FreeCAD.GuiUp:
-        from aeronc import viewproviders
-        viewproviders.attach(obj)
-
-
-def create_photo_hole_set(doc, part, sub_names, surface=None, label=None):
-    """A new photo-hole set on part with the holes named by sub_names (faces or circular
-    edges, in order) and the surface for normals (face names), in one undo step."""
-    if surface:
-        for s in surface:
-            if not s.startswith("Face"):
-                raise hole_geometry.HoleError("the surface for normals must be faces, not {}".format(s))
-    faces = hole_geometry.selected_hole_faces(part.Shape, sub_names)
-    rows = [_measure(part, f, surface, (0, 0, 1)) for f in faces]  # fails before the document changes
-
-    def work():
-        obj = doc.addObject("App::FeaturePython", "PhotoHoleSet")
-        PhotoHoleSet(obj)
-        obj.Label = label or "Photo holes ({})".format(part.Label)
-        obj.Source = part
-        if surface:
-            obj.Surface = [(part, tuple(surface))]
-        for i, r in enumerate(rows):
-            r["id"] = "DH{}".format(i + 1)
-        obj.NextNumber = len(rows) + 1
-        _write(obj, rows)
-        # Clear of the part with the camera on its way to every datum hole.
-        obj.SafeHeight = part.Shape.BoundBox.ZMax + obj.Standoff.Value + obj.Approach.Value + 30.0
-        obj.Visibility = True
-        _attach_view(obj)
-        doc.recompute([obj])
-        return obj
-
-    return in_transaction(doc, "Define datum (photo) holes", work)
+    return [measure_hole(part, f, surface_faces(obj), obj.Up) for f in faces]
 
 
 def add_datum_holes(obj, sub_names):
@@ -242,20 +184,11 @@ def add_datum_holes(obj, sub_names):
             r["id"] = "DH{}".format(obj.NextNumber + len(ids))
             ids.append(r["id"])
         obj.NextNumber = obj.NextNumber + len(ids)
-        _write(obj, rows + new)
+        write_holes(obj, rows + new)
         obj.Document.recompute([obj])
         return ids
 
     return in_transaction(obj.Document, "Define datum (photo) holes", work)
-
-
-def define_datum_holes(doc, part, sub_names):
-    """The command: add the holes to the part's photo-hole set, or make one. Returns the set."""
-    existing = photo_hole_sets_of(doc, part)
-    if existing:
-        add_datum_holes(existing[0], sub_names)
-        return existing[0]
-    return create_photo_hole_set(doc, part, sub_names)
 
 
 def set_order(obj, ids):
@@ -266,7 +199,7 @@ def set_order(obj, ids):
             obj.Label, ", ".join(rows)))
 
     def work():
-        _write(obj, [rows[i] for i in ids])
+        write_holes(obj, [rows[i] for i in ids])
         obj.Document.recompute([obj])
 
     in_transaction(obj.Document, "Reorder datum holes", work)
@@ -280,7 +213,7 @@ def remove_datum_holes(obj, ids):
         raise ValueError("{} holds no datum hole {}".format(obj.Label, ", ".join(unknown)))
 
     def work():
-        _write(obj, [r for r in rows if r["id"] not in set(ids)])
+        write_holes(obj, [r for r in rows if r["id"] not in set(ids)])
         obj.Document.recompute([obj])
 
     in_transaction(obj.Document, "Remove datum holes", work)
@@ -292,12 +225,12 @@ def set_surface(obj, face_names):
     part = obj.Source
     rows = _rows(obj)
     for r in rows:
-        m = _measure(part, r["faces"].split()[0], face_names, obj.Up)
+        m = measure_hole(part, r["faces"].split()[0], face_names, obj.Up)
         r.update({k: m[k] for k in ("position", "normal", "diameter", "depth", "segment")})
 
     def work():
         obj.Surface = [(part, tuple(face_names))] if face_names else []
-        _write(obj, rows)
+        write_holes(obj, rows)
         obj.Document.recompute([obj])
 
     in_transaction(obj.Document, "Surface for the datum-hole normals", work)
@@ -358,38 +291,6 @@ def spacing_checks(obj, holes=None):
         if ends:
             warnings.append("{}: no datum hole at its {}".format(where, " and ".join(ends)))
     return warnings, len(members)
-
-
-def drawn_rows(obj):
-    """The rows drawn by hand: lists of hole face names (each hole's first face), in order."""
-    return [r.split() for r in getattr(obj, "DrawnRows", [])]
-
-
-def pattern_rows(obj, points, faces):
-    """(row per point, station per point, members per row) of the pattern holes at `points`
-    (part frame) whose first faces are `faces`: the rows drawn by hand first, each in its drawn
-    order with stations along it; the rows of the other holes found automatically."""
-    from aeronc import _core
-    index = {f: i for i, f in enumerate(faces)}
-    rows, stations, members = [None] * len(points), [0.0] * len(points), []
-    for drawn in drawn_rows(obj):
-        m = [index[f] for f in drawn if f in index]
-        if len(m) < 2:
-            continue  # a hole of the row is no longer in the pattern (MaxHoleDiameter changed)
-        s = 0.0
-        for k, i in enumerate(m):
-            if k:
-                s += sum((a - b) ** 2 for a, b in zip(points[i], points[m[k - 1]])) ** 0.5
-            rows[i], stations[i] = len(members), s
-        members.append(m)
-    rest = [i for i in range(len(points)) if rows[i] is None]
-    if rest:
-        r, st, mem = _core.find_rows([points[i] for i in rest])
-        offset = len(members)
-        for k, i in enumerate(rest):
-            rows[i], stations[i] = offset + r[k], st[k]
-        members += [[rest[k] for k in m] for m in mem]
-    return rows, stations, members
 
 
 def draw_row(obj, sub_names):

@@ -5,7 +5,7 @@ every move as U V W (aeronc/post/orientation.py), which Path.Command keeps and t
 saves; AeroNC's posts read the axis from there. FreeCAD's 3-D view draws X Y Z only: the
 tip's path, not the axis. Every step has its toolpath; the lathe's turning and what a step cuts
 from the back face in a second setup (Operation "<step>_back") are switched off and kept out of
-the 5-axis program, with the reason in Note. The Path is made by aeronc.impeller_program, never by recompute: the toolpaths come
+the 5-axis program, with the reason in Note. The Path is made by aeronc.impeller.programming, never by recompute: the toolpaths come
 from the whole route at once and take seconds to minutes.
 """
 from aeronc.objects.base import BaseProxy, declare_property, proxy_type
@@ -41,7 +41,7 @@ class ImpellerOperation(BaseProxy):
                          read_only=True)
 
     def execute(self, obj):
-        pass  # the Path is set by aeronc.impeller_program; recompute keeps it
+        pass  # the Path is set by aeronc.impeller.programming; recompute keeps it
 
 
 def is_impeller_operation(obj):

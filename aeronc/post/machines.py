@@ -30,6 +30,15 @@ def machine_path(name):
     return path
 
 
+def post_of(name):
+    """The name of AeroNC's FreeCAD post for the machine's controller ("aeronc_840d" for a
+    Sinumerik, "aeronc_linuxcnc" for LinuxCNC)."""
+    import json
+    text, _ = load(name)
+    controller = str(json.loads(text).get("controller", ""))
+    return "aeronc_linuxcnc" if "linuxcnc" in controller.lower() else "aeronc_840d"
+
+
 def load(name=None, path=None):
     """(JSON text, source) of the machine given by name or by file path."""
     if path:

@@ -25,14 +25,14 @@ UNIT_TOLERANCE = 1e-4
 
 def oriented_command(name, params, axis):
     """A Path.Command carrying the tool axis `axis` (normalised here) on top of `params`."""
-    import Path
+    from aeronc import pathcompat
     u = tuple(float(c) for c in axis)
     n = math.sqrt(sum(c * c for c in u))
     if not all(math.isfinite(c) for c in u) or n == 0.0:
         raise ValueError("tool axis {} is not a direction".format(axis))
     p = dict(params)
     p.update(zip(AXIS_PARAMETERS, (c / n for c in u)))
-    return Path.Command(name, p)
+    return pathcompat.command(name, p)
 
 
 def axis_of(command, previous=(0.0, 0.0, 1.0)):

@@ -17,7 +17,8 @@ def attach(obj, restoring=False):
     if vobj is None or getattr(vobj, "Proxy", None) is not None:
         return
     from aeronc.objects import DOMAIN_ELEMENT, MACHINING_FEATURES, SETUP_DIRECTION
-    from aeronc.objects import compensated_drilling, measured_hole_set, photo_hole_set
+    from aeronc.objects import measured_hole_set, photo_hole_set
+    from aeronc.operations import compensated_drilling
     from aeronc.objects.machining_chain import TYPE as MACHINING_CHAIN
     from aeronc.objects import impeller_features, impeller_program
     from aeronc.operations import TYPES as OPERATIONS

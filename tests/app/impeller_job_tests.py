@@ -9,7 +9,8 @@ import unittest
 
 import FreeCAD
 
-from aeronc import impeller_job
+from aeronc.runs import impeller_run
+from aeronc.tests.parts import impeller_part
 from aeronc.objects.impeller_program import is_impeller_program
 
 SPEC = {"bladeCount": 3, "filletRadius": 2.0, "bladeHeight": 11.0}
@@ -22,7 +23,9 @@ class ImpellerJobTest(unittest.TestCase):
     def setUpClass(cls):
         cls.out = tempfile.mkdtemp(prefix="aeronc_impeller_job_")
         cls.lines = []
-        cls.data = impeller_job.run(cls.out, SPEC, allowance=2.0, stations=4, channels=1, say=cls.lines.append)
+        shape, truth = impeller_part.make_test_impeller(SPEC)
+        cls.data = impeller_run.run(cls.out, shape, truth, source="generated impeller", allowance=2.0, stations=4,
+                                    channels=1, say=cls.lines.append)
 
     @classmethod
     def tearDownClass(cls):
@@ -55,9 +58,9 @@ class ImpellerJobTest(unittest.TestCase):
         self.assertEqual(self.data["check"]["linkCollisions"], 0)
         self.assertGreater(self.data["check"]["links"], 0)
         d, t = self.data["result"]["dimensions"], self.data["truth"]
-        for key in impeller_job.DIMENSION_KEYS:
+        for key in impeller_run.DIMENSION_KEYS:
             self.assertAlmostEqual(d[key], t[key], delta=1e-3, msg=key)
-        self.assertLessEqual(self.data["recheck"]["maxGougeMm"], impeller_job.LIMIT_GOUGE_MM)
+        self.assertLessEqual(self.data["recheck"]["maxGougeMm"], impeller_run.LIMIT_GOUGE_MM)
         self.assertEqual(self.data["recheck"]["holderCollisions"], 0)
         self.assertGreater(self.data["recheck"]["positions"], 0)
 

@@ -16,7 +16,10 @@ import unittest
 import FreeCAD
 import Part
 
-from aeronc import impeller, impeller_program, pathcompat
+from aeronc.impeller import recognition, programming
+
+from aeronc.tests.parts import impeller_part
+from aeronc import pathcompat
 from aeronc.errors import ImpellerError, RecognitionError
 from aeronc.objects.impeller_features import is_impeller_feature, is_impeller_features
 from aeronc.objects.impeller_program import cutting_of, is_impeller_program
@@ -28,7 +31,7 @@ QUICK = {"stations": 4, "channels": 1}
 
 
 def _part(doc, spec, name="Impeller"):
-    shape, truth = impeller.make_test_impeller(spec)
+    shape, truth = impeller_part.make_test_impeller(spec)
     obj = doc.addObject("Part::Feature", name)
     obj.Shape = shape
     doc.recompute()
@@ -47,7 +50,7 @@ class ProgramImpellerTest(unittest.TestCase):
         cls.doc = new_document("ImpellerProgram")
         cls.part, cls.truth = _part(cls.doc, SPEC)
         cls.before = len(cls.doc.Objects)
-        cls.prog = impeller_program.create(cls.doc, cls.part, allowance=2.5, kb_path=cls.kb, out_dir=cls.dir, **QUICK)
+        cls.prog = programming.create(cls.doc, cls.part, allowance=2.5, kb_path=cls.kb, out_dir=cls.dir, **QUICK)
 
     @classmethod
     def tearDownClass(cls):
@@ -84,7 +87,7 @@ class ProgramImpellerTest(unittest.TestCase):
         self.assertEqual(single["root_fillets"], sorted(f for b in t["blades"] for f in b["fillets"]))
         self.assertEqual(single["shroud"], sorted(b["shroud"] for b in t["blades"]))
         # Every face of the part has a colour role, none left unclaimed.
-        roles = impeller.face_role_names(impeller_program_result(self.prog))
+        roles = recognition.face_role_names(impeller_program_result(self.prog))
         self.assertEqual(len(roles), len(self.part.Shape.Faces))
         self.assertNotIn("unclaimed", roles)
 
@@ -112,7 +115,7 @@ class ProgramImpellerTest(unittest.TestCase):
 
     def test_operations_in_route_order_with_5_axis_paths(self):
         ops = [o for o in pathcompat.job_operations(self.prog.Job) if is_impeller_operation(o)]
-        route = impeller_program.route_of(self.prog)["steps"]
+        route = programming.route_of(self.prog)["steps"]
         # Each route step in order, what a step cuts from the back face right after it.
         self.assertEqual([o.Position for o in ops if not o.Operation.endswith("_back")],
                          [s["position"] for s in route])
@@ -125,12 +128,12 @@ class ProgramImpellerTest(unittest.TestCase):
         # Every step of the route has its toolpath now.
         self.assertTrue(all(len(o.Path.Commands) and o.MoveCount == len(o.Path.Commands) for o in ops),
                         [(o.Label, o.MoveCount) for o in ops])
-        five = [o for o in ops if o.Operation in impeller_program.FIVE_AXIS_STEPS]
+        five = [o for o in ops if o.Operation in programming.FIVE_AXIS_STEPS]
         self.assertEqual([o.Operation for o in five], ["rough_channels", "finish_blades", "finish_hub",
                                                        "finish_fillets"])
         axis = impeller_program_result(self.prog)["axis"]["direction"]
         for o in ops:
-            axial = o.Operation not in impeller_program.FIVE_AXIS_STEPS
+            axial = o.Operation not in programming.FIVE_AXIS_STEPS
             tilted, against = 0, 0
             for cmd in o.Path.Commands:
                 p = cmd.Parameters
@@ -172,7 +175,7 @@ class ProgramImpellerTest(unittest.TestCase):
         self.assertGreater(rapids["checked"], 0)
         self.assertEqual(rapids["collisions"], 0)
         axial_moves = sum(o.MoveCount for o in pathcompat.job_operations(self.prog.Job)
-                          if o.Operation not in impeller_program.FIVE_AXIS_STEPS)
+                          if o.Operation not in programming.FIVE_AXIS_STEPS)
         self.assertGreater(axial["positions"], 0)
         self.assertLessEqual(axial["positions"], axial_moves)
         self.assertLessEqual(axial["maxGougeMm"], 0.002)
@@ -182,7 +185,7 @@ class ProgramImpellerTest(unittest.TestCase):
         self.assertEqual(self.prog.LinksChecked, five["links"] + rapids["checked"])
         # The bore is bored to its size: the boring tool's tip runs at the bore radius less its own.
         bore = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "bore"][0]
-        r_tool = impeller_program.tool_library(self.kb)[bore.Tool]["diameter"] / 2
+        r_tool = programming.tool_library(self.kb)[bore.Tool]["diameter"] / 2
         r_bore = self.truth["boreDiameter"] / 2
         radii = [math.hypot(c.Parameters["X"], c.Parameters["Y"]) for c in bore.Path.Commands if c.Name == "G1"]
         self.assertAlmostEqual(max(radii), r_bore - r_tool, delta=1e-3)
@@ -211,7 +214,7 @@ class ProgramImpellerTest(unittest.TestCase):
         with open(path) as f:
             self.assertEqual(f.read(), p.Posted)
         # The program as FreeCAD holds it (6 decimals), written as APT, read back and checked.
-        again = impeller_program.check_posted(p)
+        again = programming.check_posted(p)
         cutting = sum(1 for o in pathcompat.job_operations(p.Job) if o.Active
                       for c in o.Path.Commands if c.Name == "G1")
         self.assertEqual(again["positions"], cutting)
@@ -223,17 +226,17 @@ class ProgramImpellerTest(unittest.TestCase):
         rough = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "rough_channels"][0]
         blades = [o for o in pathcompat.job_operations(self.prog.Job) if o.Operation == "finish_blades"][0]
         with self.assertRaisesRegex(ImpellerError, "needs a ball or tapered ball end mill; FM-125 is a face tool"):
-            impeller_program.set_step_tool(self.prog, rough.Position, "FM-125")
+            programming.set_step_tool(self.prog, rough.Position, "FM-125")
         with self.assertRaisesRegex(ImpellerError, "no tool NO-SUCH-TOOL"):
-            impeller_program.set_step_tool(self.prog, rough.Position, "NO-SUCH-TOOL")
+            programming.set_step_tool(self.prog, rough.Position, "NO-SUCH-TOOL")
         with self.assertRaisesRegex(ImpellerError, "only the channel roughing's allowance"):
-            impeller_program.set_step_allowance(self.prog, blades.Position, 0.3)
+            programming.set_step_allowance(self.prog, blades.Position, 0.3)
         with self.assertRaisesRegex(ImpellerError, "must be zero or more"):
-            impeller_program.set_step_allowance(self.prog, rough.Position, -0.1)
+            programming.set_step_allowance(self.prog, rough.Position, -0.1)
         with self.assertRaisesRegex(ImpellerError, "the route has no step 99"):
-            impeller_program.set_step_enabled(self.prog, 99, False)
+            programming.set_step_enabled(self.prog, 99, False)
         with self.assertRaisesRegex(ImpellerError, "blank allowance must be zero or more"):
-            impeller_program.set_allowance(self.prog, float("nan"))
+            programming.set_allowance(self.prog, float("nan"))
         self.assertEqual((_state(self.doc), self.prog.Edits, self.prog.Posted), before)
 
     def test_save_and_reopen(self):
@@ -255,7 +258,7 @@ class ProgramImpellerTest(unittest.TestCase):
             self.assertEqual(prog.Posted, posted)
             move = [o for o in pathcompat.job_operations(prog.Job) if len(o.Path.Commands)][0].Path.Commands[1]
             self.assertEqual(move.Parameters, first_move.Parameters)
-            self.assertEqual(len(impeller_program.route_of(prog)["steps"]),
+            self.assertEqual(len(programming.route_of(prog)["steps"]),
                              len([o for o in pathcompat.job_operations(prog.Job) if not o.Operation.endswith("_back")]))
             self.assertEqual(prog.Checks, self.prog.Checks)
         finally:
@@ -274,11 +277,11 @@ class EditAndUndoTest(unittest.TestCase):
         try:
             part, _ = _part(doc, SPEC)
             names, undo = _state(doc)
-            prog = impeller_program.create(doc, part, kb_path=os.path.join(d, "kb.sqlite"), **QUICK)
+            prog = programming.create(doc, part, kb_path=os.path.join(d, "kb.sqlite"), **QUICK)
             self.assertEqual(doc.UndoNames[: len(undo) + 1], ["Program impeller"] + undo)
             hub = [o for o in pathcompat.job_operations(prog.Job) if o.Operation == "finish_hub"][0]
             self.assertIn("finish hub", prog.Posted)
-            impeller_program.set_step_enabled(prog, hub.Position, False)
+            programming.set_step_enabled(prog, hub.Position, False)
             self.assertEqual(doc.UndoNames[0], "Switch impeller step off")
             self.assertEqual(len(doc.UndoNames), len(undo) + 2)
             hub = [o for o in pathcompat.job_operations(prog.Job) if o.Operation == "finish_hub"][0]
@@ -293,7 +296,7 @@ class EditAndUndoTest(unittest.TestCase):
             for operation in ("finish_fillets", "drill"):
                 op = [o for o in pathcompat.job_operations(prog.Job) if o.Operation == operation][0]
                 self.assertIn(op.Label, prog.Posted)
-                impeller_program.set_step_enabled(prog, op.Position, False)
+                programming.set_step_enabled(prog, op.Position, False)
                 ops = pathcompat.job_operations(prog.Job)
                 op = [o for o in ops if o.Operation == operation][0]
                 self.assertFalse(op.Active)
@@ -321,7 +324,7 @@ class BadPartsTest(unittest.TestCase):
             part = make(doc)
             before = _state(doc)
             with self.assertRaisesRegex(RecognitionError, message):
-                impeller_program.create(doc, part, kb_path=os.path.join(d, "kb.sqlite"), **QUICK)
+                programming.create(doc, part, kb_path=os.path.join(d, "kb.sqlite"), **QUICK)
             self.assertEqual(_state(doc), before)
         finally:
             FreeCAD.closeDocument(doc.Name)

@@ -106,7 +106,8 @@ def _add_op(doc, job, label, commands, tc):
 
 def build_job(doc, part):
     """The sample Job on `part`; returns (job, recognised 6.6 mm holes)."""
-    from aeronc import pathcompat, recognition
+    from aeronc import pathcompat
+    from aeronc.pipeline import recognition
     from aeronc.tests import pathcompat as test_pathcompat
 
     job = pathcompat.create_job(doc, [part])

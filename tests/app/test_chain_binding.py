@@ -10,7 +10,8 @@ import tempfile
 import unittest
 
 import aeronc
-from aeronc import _core, knowledge_base
+from aeronc import _core
+from aeronc.pipeline import knowledge_base
 from aeronc.errors import KnowledgeBaseError, from_core
 
 SAMPLE = os.path.join(aeronc.PACKAGE_DIR, "resources", "samples", "sample_panel.step")

@@ -2,7 +2,7 @@
 applied to hand-made chains whose result is known; plain Python."""
 import unittest
 
-from aeronc import chain_edits
+from aeronc.pipeline import chain_edits
 
 
 def _chain():

@@ -11,7 +11,8 @@ import unittest
 
 import FreeCAD
 
-from aeronc import machining_chain, makers, pathcompat
+from aeronc.pipeline import chain_building
+from aeronc import makers, pathcompat
 from aeronc.post import machines
 from aeronc.tests.app import post_support as ps
 from aeronc.tests import pathcompat as test_pathcompat
@@ -46,7 +47,7 @@ class ChainPostTest(unittest.TestCase):
         cls.doc = new_document("AeroNCChainPost")
         part, _ = make_panel_object(cls.doc, PANEL)
         group = makers.create_machining_features(cls.doc, part)
-        cls.chain = machining_chain.build(group, "integral_panel", "7050-T7451",
+        cls.chain = chain_building.build(group, "integral_panel", "7050-T7451",
                                           kb_path=os.path.join(cls.tmp, "kb.sqlite"))
         cls.machine_json, _ = machines.load("AC-5AX")
 

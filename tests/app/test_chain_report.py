@@ -4,7 +4,7 @@ import re
 import tempfile
 import unittest
 
-from aeronc import chain_report, toolpath_picture
+from aeronc.reports import chain_report, toolpath_picture
 
 
 def _run():

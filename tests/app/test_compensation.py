@@ -14,10 +14,13 @@ import Part
 
 import aeronc
 
-from aeronc import _core, compensation, hole_geometry, pathcompat, wing_skin
-from aeronc.objects import compensated_drilling as cd
+from aeronc import _core, pathcompat
+from aeronc.drilling import compensation, hole_geometry
+from aeronc.tests.parts import wing_skin
+from aeronc.operations import compensated_drilling as cd
 from aeronc.objects import measured_hole_set as mhs
 from aeronc.objects import photo_hole_set as phs
+from aeronc.makers import datum_holes
 from aeronc.post import apt, machines, nc_post
 from aeronc.tests.app import post_support as ps
 from aeronc.tests.app.support import new_document, temp_fcstd
@@ -106,11 +109,11 @@ class CompensationTest(unittest.TestCase):
 
     def loaded(self, skin, moved, places=DATUM_PLACES, decimals=6):
         """Photo-hole set, measurements of `moved`, a Job and the drilling operation."""
-        photo = phs.create_photo_hole_set(skin.doc, skin.part, skin.faces_at(places))
-        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved, decimals=decimals))
+        photo = datum_holes.create_photo_hole_set(skin.doc, skin.part, skin.faces_at(places))
+        ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved, decimals=decimals))
         job = pathcompat.create_job(skin.doc, [skin.part])
         skin.doc.recompute()
-        op = cd.create_compensated_drilling(job, photo, ms)
+        op = datum_holes.create_compensated_drilling(job, photo, ms)
         return photo, ms, job, op
 
     # -- the photo-hole set ------------------------------------------------------------------
@@ -123,7 +126,7 @@ class CompensationTest(unittest.TestCase):
                     if any(e.isSame(x) for x in shape.getElement(faces[1]).Edges) and not isinstance(e.Curve, Part.Line))
         skin_face = max(range(len(shape.Faces)), key=lambda i: shape.Faces[i].Area)
         outer = "Face{}".format(skin_face + 1)
-        photo = phs.create_photo_hole_set(s.doc, s.part, [faces[0], edge, faces[2]], surface=[outer])
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, [faces[0], edge, faces[2]], surface=[outer])
         self.assertEqual(list(photo.HoleIds), ["DH1", "DH2", "DH3"])
         self.assertEqual([f.split()[0] for f in photo.HoleFaces], faces)
         self.assertEqual(phs.surface_faces(photo), [outer])
@@ -159,14 +162,14 @@ class CompensationTest(unittest.TestCase):
 
     def test_spacing_checks(self):
         s = self.skin()
-        full = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
+        full = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
         self.assertEqual(full.RowCount, 4)
         self.assertEqual(list(full.SpacingWarnings), [])
-        one_end = phs.create_photo_hole_set(s.doc, s.part, s.faces_at((0, 7)))
+        one_end = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at((0, 7)))
         self.assertEqual(len(one_end.SpacingWarnings), 4, one_end.SpacingWarnings)
         self.assertTrue(all("no datum hole at its end" in w or "no datum hole at its start" in w
                             for w in one_end.SpacingWarnings), one_end.SpacingWarnings)
-        single = phs.create_photo_hole_set(s.doc, s.part, s.faces_at((3,), rows=(1,)))
+        single = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at((3,), rows=(1,)))
         warnings = list(single.SpacingWarnings)
         self.assertTrue(any("has 1 datum hole: at least two" in w for w in warnings), warnings)
         self.assertEqual(sum("no datum hole" in w for w in warnings), 4, warnings)
@@ -175,14 +178,14 @@ class CompensationTest(unittest.TestCase):
         other.translate(FreeCAD.Vector(0, 600, 0))
         s.part.Shape = Part.makeCompound([s.part.Shape, other])
         s.doc.recompute()
-        two = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
+        two = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
         self.assertTrue(any("part segment 2" in w and "0 datum holes" in w for w in two.SpacingWarnings),
                         two.SpacingWarnings)
 
     # -- the camera program ------------------------------------------------------------------
     def test_camera_program_apt_and_nc_normal_to_the_surface(self):
         s = self.skin()
-        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
         out = os.path.dirname(temp_fcstd("camera"))
         apt_text, nc_text = compensation.camera_program(photo, os.path.join(out, "camera.apt"),
                                                         os.path.join(out, "camera.mpf"))
@@ -225,7 +228,7 @@ class CompensationTest(unittest.TestCase):
 
     def test_camera_program_refuses_a_table_machine_and_an_empty_set(self):
         s = self.skin()
-        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at((0,), rows=(0,)))
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at((0,), rows=(0,)))
         photo.Machine = "AC-5AX"
         with self.assertRaisesRegex(compensation.CompensationError, "no camera calibration|not a head machine"):
             compensation.camera_program(photo)
@@ -241,7 +244,7 @@ class CompensationTest(unittest.TestCase):
     def test_transform_chain_round_trips_with_a_placed_part(self):
         placement = FreeCAD.Placement(FreeCAD.Vector(812.5, -240.0, 95.0), FreeCAD.Rotation(FreeCAD.Vector(1, 2, 5), 23))
         s = self.skin(placement=placement)
-        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
         # Positions are in the part frame: the generator's truth, whatever the placement.
         for f, p in zip(photo.HoleFaces, photo.Positions):
             r, k = s.place[f.split()[0]]
@@ -254,7 +257,7 @@ class CompensationTest(unittest.TestCase):
             back = _core.camera_to_part(f["chain"], uvh)
             self.assertLess(max(abs(a - b) for a, b in zip(back, f["nominal"])), 1e-9)
         _, moved = _distortions(s.box())[3]
-        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
+        ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
         for n, m in zip(ms.Nominal, ms.Measured):
             self.assertLess((m - _vec(moved(tuple(n)))).Length, 3e-6)  # the file keeps 6 decimals
         self.assertEqual(ms.Machine, "AC-HEAD")
@@ -271,7 +274,7 @@ class CompensationTest(unittest.TestCase):
                 photo, ms, job, op = self.loaded(s, moved, decimals=9)
                 holes = cd.nominal_holes(op)
             else:
-                mhs.import_measurements(photo, text=text, measured_set=ms)
+                datum_holes.import_measurements(photo, text=text, measured_set=ms)
             row = {}
             for method in _core.compensation_methods():
                 r = compensation.compensate(ms, holes, method)
@@ -330,7 +333,7 @@ class CompensationTest(unittest.TestCase):
         # interpolation to the middle row, which the rows found automatically leave without one.
         s = self.skin({"rows": 3})
         _, bending = _distortions(s.box())[3]
-        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(0, 2)))
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(0, 2)))
         self.assertTrue(any("no datum hole" in w for w in photo.SpacingWarnings), photo.SpacingWarnings)
         face = {place: f for f, place in s.place.items()}
         columns = [[face[(r, k)] for r in range(3)] for k in DATUM_PLACES]
@@ -348,10 +351,10 @@ class CompensationTest(unittest.TestCase):
             phs.draw_row(photo, [face[(1, 3)], face[(1, 7)]])  # (1, 7) is in a drawn row
         self.assertEqual(len(photo.DrawnRows), 3)
 
-        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, bending, decimals=9))
+        ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, bending, decimals=9))
         job = pathcompat.create_job(s.doc, [s.part])
         s.doc.recompute()
-        op = cd.create_compensated_drilling(job, photo, ms)
+        op = datum_holes.create_compensated_drilling(job, photo, ms)
         mhs.set_method(ms, "seed")
         dev = {i: d for i, d in zip(ms.HoleIds, ms.Deviations)}
         datum = {s.place[f.split()[0]]: i for f, i in zip(photo.HoleFaces, photo.HoleIds)}
@@ -422,7 +425,7 @@ class CompensationTest(unittest.TestCase):
         for c, n in zip(first, op.NominalPositions):
             self.assertLess((c - _vec(rigid(tuple(n)))).Length, 1e-5)
         undo = s.doc.UndoCount
-        mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, scale), measured_set=ms)
+        datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, scale), measured_set=ms)
         self.assertEqual(s.doc.UndoCount, undo + 1)
         self.assertEqual(len(mhs.measured_sets_of(photo)), 1)
         for c, n in zip(op.CompensatedPositions, op.NominalPositions):
@@ -454,7 +457,7 @@ class CompensationTest(unittest.TestCase):
             mhs.set_method(ms, "kriging")
         ms.Tolerance = 0.9
         s.doc.recompute()
-        from aeronc import compensation_report
+        from aeronc.reports import compensation_report
         out = os.path.dirname(temp_fcstd("report"))
         page = compensation_report.write_report(op, os.path.join(out, "report.html"), os.path.join(out, "report.png"))
         html = open(page, encoding="utf-8").read()
@@ -531,27 +534,27 @@ class CompensationTest(unittest.TestCase):
         kept = (ms.FileText, [tuple(v) for v in ms.Measured], op.Path.toGCode(), s.doc.UndoCount)
         for what, text, says in cases:
             with self.assertRaisesRegex(compensation.CompensationError, says, msg=what):
-                mhs.import_measurements(photo, text=text, measured_set=ms)
+                datum_holes.import_measurements(photo, text=text, measured_set=ms)
             self.assertEqual(set(o.Name for o in s.doc.Objects), names, what)
             self.assertEqual((ms.FileText, [tuple(v) for v in ms.Measured], op.Path.toGCode(), s.doc.UndoCount), kept,
                              what)
         with self.assertRaisesRegex(compensation.CompensationError, "cannot read the measurement file"):
-            mhs.import_measurements(photo, path="/nonexistent/measured.csv")
+            datum_holes.import_measurements(photo, path="/nonexistent/measured.csv")
 
     def test_too_few_or_collinear_datum_holes(self):
         s = self.skin({"radius": 0})
         _, moved = _distortions(s.box())[0]
-        one = phs.create_photo_hole_set(s.doc, s.part, s.faces_at((0,), rows=(0,)))
+        one = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at((0,), rows=(0,)))
         names = set(o.Name for o in s.doc.Objects)
         with self.assertRaisesRegex(compensation.CompensationError, "fewer than two datum holes"):
-            mhs.import_measurements(one, text=compensation.synthetic_measurements(one, moved))
+            datum_holes.import_measurements(one, text=compensation.synthetic_measurements(one, moved))
         self.assertEqual(set(o.Name for o in s.doc.Objects), names)
         # Datum holes along one straight row only: no 3-D fit; the seed's method still works.
-        line = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(1,)))
-        ms = mhs.import_measurements(line, text=compensation.synthetic_measurements(line, moved))
+        line = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES, rows=(1,)))
+        ms = datum_holes.import_measurements(line, text=compensation.synthetic_measurements(line, moved))
         job = pathcompat.create_job(s.doc, [s.part])
         s.doc.recompute()
-        op = cd.create_compensated_drilling(job, line, ms)
+        op = datum_holes.create_compensated_drilling(job, line, ms)
         self.assertEqual(ms.ProposedMethod, "seed")
         self.assertEqual(op.MethodUsed, "seed")
         self.assertEqual(sum("not available" in l for l in ms.LeaveOneOut), 6, ms.LeaveOneOut)
@@ -566,16 +569,16 @@ class CompensationTest(unittest.TestCase):
 
     def test_without_measurements_the_operation_says_it_drills_nominal(self):
         s = self.skin({"rows": 2})
-        photo = phs.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(DATUM_PLACES))
         job = pathcompat.create_job(s.doc, [s.part])
         s.doc.recompute()
-        op = cd.create_compensated_drilling(job, photo)
+        op = datum_holes.create_compensated_drilling(job, photo)
         self.assertEqual(op.Status, cd.NOT_MEASURED)
         self.assertEqual(op.MethodUsed, "none")
         for c, n in zip(op.CompensatedPositions, cd.nominal_holes(op)):
             self.assertLess((c - _vec(n["position"])).Length, 1e-12)
         _, moved = _distortions(s.box())[0]
-        ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
+        ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved))
         self.assertIs(op.MeasuredHoleSet, ms)  # the new measurements are linked and used
         self.assertNotEqual(op.MethodUsed, "none")
 
@@ -610,7 +613,7 @@ class CompensationTest(unittest.TestCase):
             # Three of them, a countersunk one among them, in the order picked, as the command
             # defines them.
             picks = [elements[0], next(e for e in elements if e.CountersinkDiameter.Value > 0), elements[-1]]
-            photo = phs.define_datum_holes(doc, part, [hole_geometry.element_hole_face(e)[1] for e in picks])
+            photo = datum_holes.define_datum_holes(doc, part, [hole_geometry.element_hole_face(e)[1] for e in picks])
             holes = phs.holes_of(photo)
             self.assertEqual(len(holes), 3)
             for h, e in zip(holes, picks):
@@ -644,7 +647,7 @@ class CompensationTest(unittest.TestCase):
             d = (pts[j] - pts[i]).normalize()
             off = sorted(range(len(pts)), key=lambda k: -((pts[k] - pts[i]) - d * (pts[k] - pts[i]).dot(d)).Length)
             picks = [i, j] + [k for k in off if k not in (i, j)][:2]
-            photo = phs.create_photo_hole_set(doc, part, [holes[k]["faces"][0] for k in picks])
+            photo = datum_holes.create_photo_hole_set(doc, part, [holes[k]["faces"][0] for k in picks])
             apt_text, nc_text = compensation.camera_program(photo)
             self.assertEqual(nc_text.count("G4 F0.5"), 4)
 
@@ -652,10 +655,10 @@ class CompensationTest(unittest.TestCase):
                 a = math.radians(0.1)
                 return (p[0] * math.cos(a) - p[1] * math.sin(a) + 0.3, p[0] * math.sin(a) + p[1] * math.cos(a) - 0.2,
                         p[2] + 0.05)
-            ms = mhs.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved, decimals=9))
+            ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(photo, moved, decimals=9))
             job = pathcompat.create_job(doc, [part])
             doc.recompute()
-            op = cd.create_compensated_drilling(job, photo, ms)
+            op = datum_holes.create_compensated_drilling(job, photo, ms)
             mhs.set_method(ms, "rigid")
             self.assertEqual(len(op.CompensatedPositions), len(holes) - 4)
             for c, n in zip(op.CompensatedPositions, op.NominalPositions):
@@ -664,6 +667,17 @@ class CompensationTest(unittest.TestCase):
             self.assertEqual(text.count("CYCLE81("), len(holes) - 4)
         finally:
             FreeCAD.closeDocument(doc.Name)
+
+
+class MovedModuleTest(unittest.TestCase):
+    def test_documents_saved_before_the_layout_find_the_compensated_drilling(self):
+        # FreeCAD rebuilds a proxy from the module path saved with it: the old path must import
+        # as the module now in its place, with the same class.
+        import importlib
+        old = importlib.import_module("aeronc.objects.compensated_drilling")
+        self.assertIs(old.CompensatedDrilling, cd.CompensatedDrilling)
+        with self.assertRaises(ImportError):
+            importlib.import_module("aeronc.objects.no_such_module")
 
 
 if __name__ == "__main__":

@@ -8,8 +8,9 @@ import unittest
 
 import FreeCAD
 
-from aeronc import cutting_optimisation as co
-from aeronc import knowledge_base, makers, pathcompat, tool_planning
+from aeronc.pipeline import cutting_optimisation as co
+from aeronc.pipeline import knowledge_base, tool_planning
+from aeronc import makers, pathcompat
 from aeronc.tests.app.support import end_mill, make_panel_object, make_pocket_job, new_document, temp_fcstd
 
 

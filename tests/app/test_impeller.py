@@ -5,7 +5,9 @@ import unittest
 
 import Part
 
-from aeronc import impeller
+from aeronc.impeller import recognition
+
+from aeronc.tests.parts import impeller_part
 from aeronc.errors import RecognitionError
 
 SPEC = {"bladeCount": 5, "filletRadius": 2.0, "bladeHeight": 11.0}
@@ -14,8 +16,8 @@ SPEC = {"bladeCount": 5, "filletRadius": 2.0, "bladeHeight": 11.0}
 class ImpellerRecognitionTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.shape, cls.truth = impeller.make_test_impeller(SPEC)
-        cls.result = impeller.recognise(cls.shape)
+        cls.shape, cls.truth = impeller_part.make_test_impeller(SPEC)
+        cls.result = recognition.recognise(cls.shape)
 
     def test_roles_match_truth(self):
         r, t = self.result, self.truth
@@ -45,14 +47,14 @@ class ImpellerRecognitionTest(unittest.TestCase):
             self.assertAlmostEqual(d[key], t[key], delta=1e-3, msg=key)
 
     def test_roles_cover_every_face(self):
-        roles = impeller.face_roles(self.result)
+        roles = recognition.face_roles(self.result)
         self.assertEqual(sorted(roles), list(range(1, len(self.shape.Faces) + 1)))
 
     def test_blank_and_route(self):
         import os
         import tempfile
         with tempfile.TemporaryDirectory() as d:
-            result, blank = impeller.program_data(self.shape, 3.0, kb_path=os.path.join(d, "kb.sqlite"))
+            result, blank = recognition.program_data(self.shape, 3.0, kb_path=os.path.join(d, "kb.sqlite"))
         self.assertTrue(blank.isValid())
         # The blank holds the part and is the outer profile grown by the allowance.
         self.assertLess(self.shape.cut(blank).Volume, 1e-6 * self.shape.Volume)
@@ -71,15 +73,15 @@ class ImpellerRecognitionTest(unittest.TestCase):
 
     def test_not_an_impeller(self):
         with self.assertRaisesRegex(RecognitionError, "not an impeller: no rotational pattern"):
-            impeller.recognise(Part.makeBox(10, 20, 30))
+            recognition.recognise(Part.makeBox(10, 20, 30))
 
     def test_not_a_solid(self):
         with self.assertRaisesRegex(RecognitionError, "not a solid"):
-            impeller.recognise(Part.makeBox(10, 20, 30).Faces[0])
+            recognition.recognise(Part.makeBox(10, 20, 30).Faces[0])
 
     def test_bad_spec(self):
         with self.assertRaisesRegex(RecognitionError, "unknown key blades"):
-            impeller.make_test_impeller({"blades": 4})
+            impeller_part.make_test_impeller({"blades": 4})
 
 
 class ImpellerToolpathRequestTest(unittest.TestCase):
@@ -90,7 +92,8 @@ class ImpellerToolpathRequestTest(unittest.TestCase):
     def setUpClass(cls):
         import os
         import tempfile
-        from aeronc import _core, knowledge_base
+        from aeronc import _core
+        from aeronc.pipeline import knowledge_base
         cls.core = _core
         cls.dir = tempfile.mkdtemp(prefix="aeronc_impeller_request_")
         cls.kb = os.path.join(cls.dir, "kb.sqlite")

@@ -13,7 +13,8 @@ import FreeCAD
 import Part
 
 import aeronc
-from aeronc import chain_edits, machining_chain, makers, operations, pathcompat, setup_job
+from aeronc.pipeline import chain_edits, chain_building, setup_job
+from aeronc import makers, operations, pathcompat
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
@@ -73,7 +74,7 @@ class ChainFixture:
         self.group = makers.create_machining_features(self.doc, self.part, directions=directions)
 
     def build(self, **kw):
-        return machining_chain.build(self.group, FAMILY, MATERIAL, kb_path=self.kb_path, **kw)
+        return chain_building.build(self.group, FAMILY, MATERIAL, kb_path=self.kb_path, **kw)
 
     def close(self):
         FreeCAD.closeDocument(self.doc.Name)
@@ -121,6 +122,14 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             # The blank: the part's box (no allowance), seen in the same frame.
             for g, w in zip(got_stock, want):
                 self.assertAlmostEqual(g, w, places=6)
+            # FreeCAD's Post command writes what the main job writes: AeroNC's post for the
+            # machine, the blank centred on the table.
+            self.assertEqual(job.PostProcessor, "aeronc_840d")
+            zero = [-(want[0] + want[3]) / 2, -(want[1] + want[4]) / 2, -want[2]]
+            self.assertIn("--machine {} --part-zero=".format(chain.Machine), job.PostProcessorArgs)
+            given = [float(v) for v in job.PostProcessorArgs.split("--part-zero=")[1].split(",")]
+            for g, w in zip(given, zero):
+                self.assertAlmostEqual(g, w, places=5)
         # The truth's -Z pockets: in the -Z Job just above the floor is air, just below is part.
         job = next(j for j in chain.Jobs if getattr(j, setup_job.SETUP_TAG) ==
                    next(s["id"] for s in setups if s["name"] == "-Z"))
@@ -159,7 +168,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         chain = self.build()
         data = chain_object.chain_of(chain)
         elements = {e["id"] for e in machining_features.result_of(self.group)["elements"]}
-        machined = {op.ElementId for op in machining_chain.chain_operations(chain)}
+        machined = {op.ElementId for op in chain_building.chain_operations(chain)}
         unmachined = {u["element"] for u in data["unmachined"]}
         self.assertEqual(machined | unmachined, elements)
         for entry in data["unmachined"]:
@@ -196,7 +205,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         # centre may reach is an offset of an offset (measured: 0.013 mm at worst).
         chain = self.build()
         checked = 0
-        for op in machining_chain.chain_operations(chain):
+        for op in chain_building.chain_operations(chain):
             unit = json.loads(op.Unit)
             if unit["operation"] not in ("pocket", "rest", "profile") or unit["openEdges"]:
                 continue
@@ -224,7 +233,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
 
     def test_save_reopen_keeps_everything_and_paths_recompute_identically(self):
         chain = self.build()
-        gcode = {op.Name: op.Path.toGCode() for op in machining_chain.chain_operations(chain)}
+        gcode = {op.Name: op.Path.toGCode() for op in chain_building.chain_operations(chain)}
         self.assertTrue(gcode)
         props = (chain.Chain, chain.Built, chain.Edits, chain.UnitCount, [j.Name for j in chain.Jobs])
         name = chain.Name
@@ -235,7 +244,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         chain = self.doc.getObject(name)
         self.assertTrue(chain_object.is_machining_chain(chain))
         self.assertEqual((chain.Chain, chain.Built, chain.Edits, chain.UnitCount, [j.Name for j in chain.Jobs]), props)
-        ops = machining_chain.chain_operations(chain)
+        ops = chain_building.chain_operations(chain)
         self.assertEqual(sorted(op.Name for op in ops), sorted(gcode))
         for op in ops:
             self.assertEqual(op.Path.toGCode(), gcode[op.Name])
@@ -246,10 +255,10 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
             self.assertEqual(op.Path.toGCode(), gcode[op.Name], op.Label)
 
     def test_tool_controllers_reuse_select_tools_and_the_optimisers_values(self):
-        from aeronc import tool_planning
-        from aeronc.cutting_optimisation import RESULT_PROPERTY
+        from aeronc.pipeline import tool_planning
+        from aeronc.pipeline.cutting_optimisation import RESULT_PROPERTY
         _, _, planned = tool_planning.select_tools(self.group, MATERIAL, kb_path=self.kb_path)
-        built = machining_chain.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        built = chain_building.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
         wanted = {setup_job.tag_of(u) for u in built["units"]}
         shared = [tc for tc in planned if tc.AeroNCTool in wanted]
         self.assertTrue(shared, (sorted(wanted), [tc.AeroNCTool for tc in planned]))
@@ -280,7 +289,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         self.part.Shape = self.part.Shape.cut(Part.makeCylinder(2, 40, FreeCAD.Vector(6, 40, -10)))  # a hole in the border
         self.doc.recompute()
         before, undo = names(self.doc), self.doc.UndoCount
-        with self.assertRaises(machining_chain.MachiningChainError) as ctx:
+        with self.assertRaises(chain_building.MachiningChainError) as ctx:
             self.build()
         self.assertIn("changed since its features were recognised", str(ctx.exception))
         self.assertEqual(names(self.doc), before)
@@ -289,7 +298,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
     def test_user_edits_survive_an_update_and_a_rebuild(self):
         chain = self.build()
         data = chain_object.chain_of(chain)
-        pocket = next(op for op in machining_chain.chain_operations(chain) if op.Operation == "pocket")
+        pocket = next(op for op in chain_building.chain_operations(chain) if op.Operation == "pocket")
         step_down = pocket.StepDown.Value / 2
         pocket.StepDown = step_down
         self.assertEqual(pocket.UserEdited, ["StepDown"])
@@ -311,9 +320,9 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
         self.assertIsNotNone(other)
         edits = chain_edits.with_tool(edits, data, other[0], other[1])
         before_update = self.doc.UndoCount
-        chain = machining_chain.update(chain, edits)
+        chain = chain_building.update(chain, edits)
         self.assertEqual(self.doc.UndoCount, before_update + 1)
-        ops = {op.UnitId: op for op in machining_chain.chain_operations(chain)}
+        ops = {op.UnitId: op for op in chain_building.chain_operations(chain)}
         self.assertAlmostEqual(ops[pocket.UnitId].StepDown.Value, step_down)
         self.assertFalse(ops[disabled].Active)
         self.assertEqual(ops[other[0]].ToolController.AeroNCTool.split("/")[0], other[1])
@@ -323,7 +332,7 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
 
         # A rebuild from the group computes the chain again; the edits and the hand edit stay.
         chain = self.build()
-        ops = {op.UnitId: op for op in machining_chain.chain_operations(chain)}
+        ops = {op.UnitId: op for op in chain_building.chain_operations(chain)}
         self.assertAlmostEqual(ops[pocket.UnitId].StepDown.Value, step_down)
         self.assertIn("StepDown", ops[pocket.UnitId].UserEdited)
         self.assertFalse(ops[disabled].Active)
@@ -350,21 +359,21 @@ class BadInputTest(unittest.TestCase):
         group = makers.create_machining_features(self.doc, block, directions=[(0, 0, 1)])
         self.assertEqual(machining_features.result_of(group)["elements"], [])
         before, undo = names(self.doc), self.doc.UndoCount
-        with self.assertRaises(machining_chain.MachiningChainError) as ctx:
-            machining_chain.build(group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        with self.assertRaises(chain_building.MachiningChainError) as ctx:
+            chain_building.build(group, FAMILY, MATERIAL, kb_path=self.kb_path)
         self.assertIn("no domain element", str(ctx.exception))
         self.assertEqual(names(self.doc), before)
         self.assertEqual(self.doc.UndoCount, undo)
 
     def test_not_a_group_and_an_unknown_material(self):
         part, _ = make_panel_object(self.doc, {"pocketsX": 1, "pocketsY": 1})
-        with self.assertRaises(machining_chain.MachiningChainError) as ctx:
-            machining_chain.build(part, FAMILY, MATERIAL, kb_path=self.kb_path)
+        with self.assertRaises(chain_building.MachiningChainError) as ctx:
+            chain_building.build(part, FAMILY, MATERIAL, kb_path=self.kb_path)
         self.assertIn("is not a Machining Features group", str(ctx.exception))
         group = makers.create_machining_features(self.doc, part, directions=[(0, 0, 1)])
         before = names(self.doc)
-        with self.assertRaises(machining_chain.MachiningChainError) as ctx:
-            machining_chain.build(group, FAMILY, "unobtainium", kb_path=self.kb_path)
+        with self.assertRaises(chain_building.MachiningChainError) as ctx:
+            chain_building.build(group, FAMILY, "unobtainium", kb_path=self.kb_path)
         self.assertIn("unobtainium", str(ctx.exception))
         self.assertEqual(names(self.doc), before)
 
@@ -384,7 +393,7 @@ class SamplePanelTest(unittest.TestCase, ChainFixture):
     def test_every_element_machined_or_listed_and_ops_in_order(self):
         data = chain_object.chain_of(self.chain)
         elements = {e["id"] for e in machining_features.result_of(self.fixture.group)["elements"]}
-        ops = machining_chain.chain_operations(self.chain)
+        ops = chain_building.chain_operations(self.chain)
         unmachined = {u["element"] for u in data["unmachined"] if u.get("reason")}
         self.assertEqual({op.ElementId for op in ops} | unmachined, elements)
         self.assertEqual(len(ops), len(data["units"]))
@@ -399,7 +408,7 @@ class SamplePanelTest(unittest.TestCase, ChainFixture):
         self.assertTrue(kinds & {"Drilling", "HelicalInterpolation"}, kinds)
 
     def test_drilling_writes_path_drill_cycles(self):
-        drills = [op for op in machining_chain.chain_operations(self.chain) if type(op.Proxy).__name__ == "Drilling"]
+        drills = [op for op in chain_building.chain_operations(self.chain) if type(op.Proxy).__name__ == "Drilling"]
         self.assertTrue(drills)
         for op in drills:
             cycles = [c for c in op.Path.Commands if c.Name in ("G81", "G82", "G83")]
@@ -436,7 +445,7 @@ class NistPartsTest(unittest.TestCase):
                 try:
                     chain = fixture.build()
                     data = chain_object.chain_of(chain)
-                    ops = machining_chain.chain_operations(chain)
+                    ops = chain_building.chain_operations(chain)
                     self.assertEqual(sorted(op.UnitId for op in ops), sorted(u["id"] for u in data["units"]))
                     order = [int(u) for u in data["order"]]
                     for job in chain.Jobs:

@@ -5,7 +5,8 @@ import unittest
 import FreeCAD
 import Part
 
-from aeronc import makers, objects, recognition
+from aeronc import makers, objects
+from aeronc.pipeline import recognition
 from aeronc.objects.domain_element import DomainElement
 from aeronc.objects.machining_features import MachiningFeatures
 from aeronc.objects.setup_direction import SetupDirection
@@ -176,13 +177,14 @@ class TestMachiningFeatures(unittest.TestCase):
 
         def boom(objs):
             raise RuntimeError("boom")
-        saved = makers.attach_views
-        makers.attach_views = boom
+        from aeronc.makers import machining_features as maker
+        saved = maker.attach_views
+        maker.attach_views = boom
         try:
             with self.assertRaisesRegex(RuntimeError, "boom"):
                 makers.create_machining_features(self.doc, self.part, directions=BOTH_SIDES)
         finally:
-            makers.attach_views = saved
+            maker.attach_views = saved
         self.assertEqual([o.Name for o in self.doc.Objects], names)
         self.assertEqual(self.doc.UndoCount, undo)
 

@@ -8,7 +8,8 @@ import unittest
 import FreeCAD
 import Part
 
-from aeronc import _core, main_job
+from aeronc import _core
+from aeronc.runs import main_job
 
 PANEL = {"pocketsX": 2, "pocketsY": 1, "islands": False, "openings": False, "lighteningHoles": False,
          "joggles": False, "lowerRibs": False, "flange": False, "bottomPockets": True, "boltHoles": True}

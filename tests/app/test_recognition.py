@@ -1,10 +1,10 @@
-"""aeronc.recognition: the App-side wrapper of the C++ core."""
+"""aeronc.pipeline.recognition: the App-side wrapper of the C++ core."""
 import unittest
 
 import FreeCAD
 import Part
 
-from aeronc import recognition
+from aeronc.pipeline import recognition
 from aeronc.tests.app import support
 
 

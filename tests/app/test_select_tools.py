@@ -16,7 +16,8 @@ import FreeCAD
 import Part
 
 import aeronc
-from aeronc import _core, knowledge_base, makers, pathcompat, recognition, tool_planning
+from aeronc import _core, makers, pathcompat
+from aeronc.pipeline import knowledge_base, recognition, tool_planning
 from aeronc.objects import machining_features
 from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd

@@ -6,7 +6,8 @@ import unittest
 import FreeCAD
 import Part
 
-from aeronc import _core, knowledge_base, recognition
+from aeronc import _core
+from aeronc.pipeline import knowledge_base, recognition
 
 
 def _panel():

@@ -113,20 +113,20 @@ class FinishedFacesTest(unittest.TestCase):
         return {"units": units, "unmachined": unmachined}
 
     def test_floors_and_walls_of_the_finishing_units(self):
-        from aeronc import verification
+        from aeronc.pipeline import verification
         faces, elements = verification.finished_faces(self.chain([]), self.RESULT)
         self.assertEqual(faces, [10, 11, 12, 13, 20])
         self.assertEqual(elements, {"E1": [10, 11, 12, 13], "E2": [20]})
 
     def test_an_unmachined_element_takes_its_faces_out_even_where_shared(self):
-        from aeronc import verification
+        from aeronc.pipeline import verification
         faces, elements = verification.finished_faces(
             self.chain([{"element": 2, "reason": "no tool", "step": "fs"}]), self.RESULT)
         self.assertEqual(faces, [10, 11, 13])  # 12 is element 2's wall too
         self.assertEqual(elements, {"E1": [10, 11, 13]})
 
     def test_an_entry_naming_faces_takes_out_only_those(self):
-        from aeronc import verification
+        from aeronc.pipeline import verification
         faces, elements = verification.finished_faces(
             self.chain([{"element": 1, "reason": "island top", "step": None, "faces": [13]}]), self.RESULT)
         self.assertEqual(faces, [10, 11, 12, 20])
@@ -139,7 +139,7 @@ class PartBoxTest(unittest.TestCase):
     parts, which would put stock round them that no tool has to cut."""
 
     def test_arcs_extremes_are_bounded_within_the_deflection(self):
-        from aeronc import setup_job
+        from aeronc.pipeline import setup_job
         shape = Part.makeCylinder(10, 5, FreeCAD.Vector(3, 4, 1))
         box = setup_job.part_box(shape)
         for got, want in zip(box, (-7, -6, 1, 13, 14, 6)):
@@ -148,7 +148,7 @@ class PartBoxTest(unittest.TestCase):
     @unittest.skipUnless(os.path.isfile(os.path.join(SHARED, "nist", "nist_ftc_10_asme1_rb.stp")),
                          "no NIST parts in AERONC_SHARED_DATA")
     def test_nist_ftc_10_gets_its_drawn_size(self):
-        from aeronc import setup_job
+        from aeronc.pipeline import setup_job
         box = setup_job.part_box(Part.read(os.path.join(SHARED, "nist", "nist_ftc_10_asme1_rb.stp")))
         for got, want in zip(box, (-79, 0, -37.5, 79, 31, 37.5)):
             self.assertAlmostEqual(got, want, delta=2e-6)

@@ -43,7 +43,8 @@ def tool_node(item):
 
 def run():
     import json
-    from aeronc import _core, chain_edits, knowledge_base, machining_chain, makers, pathcompat
+    from aeronc import _core, makers, pathcompat
+    from aeronc.pipeline import chain_edits, knowledge_base, chain_building
     from aeronc.objects import machining_chain as chain_object
     from aeronc.panels import machining_chain_panel
     from aeronc.panels.machining_chain_panel import UNIT_ROLE, MachiningChainPanel
@@ -82,6 +83,11 @@ def run():
 
     undo_before = doc.UndoCount
     names_before = set(o.Name for o in doc.Objects)
+    mw = Gui.getMainWindow()
+    combo_view = next((d for d in mw.findChildren(QtGui.QDockWidget)
+                       if d.isVisible() and d.objectName() == "Combo View"), None)
+    check("the Combo View is shown", combo_view is not None)
+    width_before = combo_view.width() if combo_view else 0
     Gui.runCommand("AeroNC_MachiningChain")
     pump()
     panel = MachiningChainPanel.current
@@ -167,11 +173,13 @@ def run():
     pump(1.0)
     check("no error on OK", not errors, errors)
     check("panel closed", not Gui.Control.activeDialog())
+    check("the Combo View back to its width", combo_view and abs(combo_view.width() - width_before) <= 2,
+          combo_view and (combo_view.width(), width_before))
     chains = [o for o in doc.Objects if chain_object.is_machining_chain(o)]
     check("one Machining chain", len(chains) == 1, len(chains))
     chain = chains[0]
     check("one undo step", doc.UndoCount == undo_before + 1, doc.UndoNames)
-    ops = {op.UnitId: op for op in machining_chain.chain_operations(chain)}
+    ops = {op.UnitId: op for op in chain_building.chain_operations(chain)}
     check("an operation per unit", sorted(ops) == sorted(units), (len(ops), len(units)))
     job = next(j for j in chain.Jobs if ops[first] in pathcompat.job_operations(j))
     ids = [op.UnitId for op in pathcompat.job_operations(job) if op.UnitId in ops]
@@ -226,6 +234,18 @@ def run():
     pump()
     check("undo removes the chain and its Jobs", set(o.Name for o in doc.Objects) == names_before,
           sorted(set(o.Name for o in doc.Objects) - names_before))
+
+    # OK on a freshly opened panel builds the chain with its settings, then makes the Jobs.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(group)
+    Gui.runCommand("AeroNC_MachiningChain")
+    pump()
+    check("OK pressed on a fresh panel", click_ok())
+    pump(1.0)
+    check("no error on OK without Build", not errors, errors)
+    fresh = [o for o in doc.Objects if chain_object.is_machining_chain(o)]
+    check("OK alone built the chain and its Jobs", len(fresh) == 1 and len(fresh[0].Jobs) == 2 and
+          fresh[0].UnitCount > 0, [(o.Label, len(o.Jobs)) for o in fresh])
     FreeCAD.closeDocument(doc.Name)
 
 

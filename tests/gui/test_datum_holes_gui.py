@@ -29,8 +29,10 @@ from aeronc.tests.gui.harness import (  # noqa: E402
 
 def run():
     import tempfile
-    from aeronc import compensation, hole_geometry, wing_skin
-    from aeronc.objects import compensated_drilling, measured_hole_set, photo_hole_set
+    from aeronc.drilling import compensation, hole_geometry
+    from aeronc.tests.parts import wing_skin
+    from aeronc.objects import measured_hole_set, photo_hole_set
+    from aeronc.operations import compensated_drilling
     from aeronc.panels import measured_hole_set_panel, photo_hole_set_panel
     from aeronc.panels.measured_hole_set_panel import MeasuredHoleSetPanel
     from aeronc.panels.photo_hole_set_panel import PhotoHoleSetPanel
@@ -194,7 +196,8 @@ def tree_nodes():
     """Datum holes defined from hole elements picked in the Machining Features tree."""
     import aeronc
     import Part
-    from aeronc import hole_geometry, makers
+    from aeronc.drilling import hole_geometry
+    from aeronc import makers
     from aeronc.objects import photo_hole_set
     doc = FreeCAD.newDocument("TreeHoles")
     part = doc.addObject("Part::Feature", "Panel")

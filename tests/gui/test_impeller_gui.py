@@ -39,7 +39,9 @@ def wait_for(cond, seconds=240):
 
 def run():
     import Part
-    from aeronc import impeller, knowledge_base, pathcompat
+    from aeronc.tests.parts import impeller_part
+    from aeronc.pipeline import knowledge_base
+    from aeronc import pathcompat
     from aeronc.feature_colours import ROLE_COLOURS
     from aeronc.objects.impeller_program import is_impeller_program
     from aeronc.panels import impeller_panel
@@ -85,7 +87,7 @@ def run():
     doc.removeObject(box.Name)
     del errors[:]
 
-    shape, truth = impeller.make_test_impeller(SPEC)
+    shape, truth = impeller_part.make_test_impeller(SPEC)
     part = doc.addObject("Part::Feature", "Impeller")
     part.Shape = shape
     doc.recompute()

@@ -30,7 +30,8 @@ PART = os.path.join(os.environ.get("AERONC_SHARED_DATA", ""), "nist", "nist_ctc_
 
 def run():
     import ImportGui
-    from aeronc import knowledge_base, objects, pathcompat
+    from aeronc.pipeline import knowledge_base
+    from aeronc import objects, pathcompat
     from aeronc.panels import optimise_cutting_panel, recognise_panel, select_tools_panel
     from aeronc.panels.optimise_cutting_panel import OptimiseCuttingPanel
     from aeronc.panels.recognise_panel import RecognisePanel

@@ -30,7 +30,8 @@ def feeds(tc):
 
 
 def run():
-    from aeronc import knowledge_base, pathcompat
+    from aeronc.pipeline import knowledge_base
+    from aeronc import pathcompat
     from aeronc.panels import optimise_cutting_panel
     from aeronc.panels.optimise_cutting_panel import OptimiseCuttingPanel
     from aeronc.tests.app.support import end_mill, make_pocket_job

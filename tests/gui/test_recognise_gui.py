@@ -69,6 +69,12 @@ def run():
     bars = [t for t in mw.findChildren(QtGui.QToolBar) if t.objectName() == "AeroNC"]
     check("AeroNC toolbar shown", bars and bars[0].isVisible() and
           any(a.text() == "Recognise machining features" for a in bars[0].actions()))
+    if bars:
+        pump(1.0)  # the toolbar moves to its row after the workbench is shown
+        hidden = [a.text() for a in bars[0].actions()
+                  if not a.isSeparator() and not (bars[0].widgetForAction(a) and bars[0].widgetForAction(a).isVisible())]
+        check("every AeroNC button on the toolbar, none in its overflow menu", not hidden,
+              (hidden, mw.toolBarBreak(bars[0]), bars[0].geometry(), mw.width()))
     menus = {a.text().replace("&", ""): [m.text() for m in a.menu().actions()]
              for a in mw.menuBar().actions() if a.menu()}
     check("AeroNC menu in Path's menu bar", "Recognise machining features" in menus.get("AeroNC", []),
@@ -121,6 +127,14 @@ def run():
     pump()
     panel = RecognisePanel.current
     check("task panel open", Gui.Control.activeDialog() and panel is not None)
+    from aeronc.feature_colours import ROLE_COLOURS as _roles
+    swatches = panel.form.findChildren(QtGui.QLabel, QtCore.QRegExp("legend_.*")) if panel else []
+    check("the panel's legend shows the role colours", len(swatches) == len(recognise_panel.LEGEND) and
+          all(r in _roles for r, _ in recognise_panel.LEGEND) and
+          {"wall", "floor", "unclaimed"} <= {s.objectName()[len("legend_"):] for s in swatches},
+          [s.objectName() for s in swatches])
+    shot = window_shot(doc, "aeronc_recognise_panel")
+    check("panel screenshot saved", os.path.getsize(shot) > 20000, shot)
     panel.direction.setCurrentIndex(3)  # +Z and -Z
 
     # Cancel in the progress dialog: nothing added, no error box, the panel stays open.
@@ -185,16 +199,28 @@ def run():
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(el)
     pump()
-    sel = [s for s in Gui.Selection.getSelectionEx() if s.Object == part]
+    pump()
     want = set(el.Faces[0][1])
-    check("element selection highlights its faces", sel and set(sel[0].SubElementNames) == want,
-          [s.SubElementNames for s in sel])
+    check("selecting an element selects the element alone (its properties in the editor)",
+          [o.Name for o in Gui.Selection.getSelection()] == [el.Name], [o.Name for o in Gui.Selection.getSelection()])
+    from aeronc.viewproviders.face_highlight import HIGHLIGHT
+    painted = {"Face{}".format(i + 1) for i, c in enumerate(part.ViewObject.DiffuseColor)
+               if all(abs(a - b) < 1e-3 for a, b in zip(c[:3], HIGHLIGHT))}
+    check("element selection paints its faces in the selection colour", painted == want, (painted, want))
+    # FreeCAD's selection green is no role colour: selected faces stand out on any role.
+    from aeronc.feature_colours import ROLE_COLOURS
+    check("no role has the selection colour", all(max(abs(a - b) for a, b in zip(c, HIGHLIGHT)) > 0.2
+                                                  for c in ROLE_COLOURS.values()))
     # What a person sees: the tree opened on the machining-domain tree, an element selected.
     for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
         tree_view.expandAll()
     window = window_shot(doc, "aeronc_main_window")
     check("main window screenshot saved", os.path.getsize(window) > 20000, window)
     Gui.Selection.clearSelection()
+    pump()
+    painted = [i for i, c in enumerate(part.ViewObject.DiffuseColor)
+               if all(abs(a - b) < 1e-3 for a, b in zip(c[:3], HIGHLIGHT))]
+    check("the role colours come back when the element is no longer selected", not painted, painted)
 
     # double-click: the panel edits the group; OK recognises again into it
     count = group.ElementCount

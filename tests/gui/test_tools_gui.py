@@ -28,7 +28,8 @@ from aeronc.tests.gui.harness import (  # noqa: E402
 def run():
     import json
     import tempfile
-    from aeronc import _core, knowledge_base, makers, pathcompat
+    from aeronc import _core, makers, pathcompat
+    from aeronc.pipeline import knowledge_base
     from aeronc.panels import knowledge_base_panel, select_tools_panel
     from aeronc.panels.knowledge_base_panel import KnowledgeBasePanel
     from aeronc.panels.select_tools_panel import SelectToolsPanel

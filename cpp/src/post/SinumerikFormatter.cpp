@@ -8,6 +8,7 @@
 // the workpiece frame, orientation is machine A/C words or A3= B3= C3=.
 #include "NcFormatter.h"
 
+#include <map>
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -74,11 +75,14 @@ private:
         if (o_.comments) {
             w_.comment(postedBy(name, m_.controller.empty() ? "Sinumerik 840D" : m_.controller));
             w_.comment("lengths in mm, angles in degrees; 3+2 planes by CYCLE800, simultaneous 5-axis under TRAORI");
-            for (const auto& r : prog_.records) {
-                if (r.kind != ClKind::LoadTool) continue;
+            // The tool list an operator loads the magazine from: each tool once, by number.
+            std::map<int, const kinematics::ClRecord*> tools;
+            for (const auto& r : prog_.records)
+                if (r.kind == ClKind::LoadTool) tools.emplace(r.tool.number, &r);
+            for (const auto& [number, r] : tools) {
                 char b[64];
-                std::snprintf(b, sizeof b, "  diameter %.3f", r.tool.diameter);
-                w_.comment("T" + std::to_string(r.tool.number) + " " + r.tool.name + (r.tool.diameter > 0 ? b : ""));
+                std::snprintf(b, sizeof b, "  diameter %.3f", r->tool.diameter);
+                w_.comment("T" + std::to_string(number) + " " + r->tool.name + (r->tool.diameter > 0 ? b : ""));
             }
         }
         w_.line("G17 G90 G71 G94 G40");

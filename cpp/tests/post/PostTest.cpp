@@ -239,6 +239,26 @@ TEST(Post, IndexedPlaneWithArcs) {
     }
 }
 
+TEST(Post, The840DHeaderListsEachToolOnceByNumber) {
+    // Tools come back in the change order (T3, T5, T3 again): the header is the magazine list.
+    const std::string gcode = "(Op)\nG0 Z15.000000\nG1 F5.000000 X10.000000 Y0.000000 Z-2.000000\nG0 Z15.000000\n";
+    std::vector<PathSection> sections = job(gcode);
+    std::vector<PathSection> again = job(gcode);
+    again[1].tool.number = 5;
+    again[1].tool.name = "EM6";
+    again[1].tool.diameter = 6;
+    sections.insert(sections.end(), again.begin() + 1, again.end());
+    std::vector<PathSection> third = job(gcode);
+    sections.insert(sections.end(), third.begin() + 1, third.end());
+    NcOptions o = exactOptions(Dialect::Sinumerik840D);
+    o.comments = true;
+    const std::string nc = post(sections, "AC-5AX", o);
+    EXPECT_EQ(count(nc, "; T3 EM10  diameter 10.000\n"), 1) << nc;
+    EXPECT_EQ(count(nc, "; T5 EM6  diameter 6.000\n"), 1) << nc;
+    EXPECT_LT(nc.find("; T3 EM10"), nc.find("; T5 EM6"));
+    EXPECT_EQ(count(nc, "T3 D1 M6"), 2) << nc;  // the changes themselves stay
+}
+
 TEST(Post, FreeCadThreeAxisOperationPostsAsAPlainPlane) {
     // FreeCAD's own operations carry no tool axis: the post keeps them 3-axis.
     const std::string gcode =

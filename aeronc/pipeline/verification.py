@@ -143,6 +143,59 @@ def plunges_marked(moves):
     return out
 
 
+def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, blank, cell_size=0.5):
+    """Re-read each posted LinuxCNC program and simulate them all against the blank: (the core's
+    report, the number of operations simulated). programs: [{"path", "setup", "partZero", "job",
+    "frame"}] in machining order; ops_by_label: {label: (Job, operation)} of the chain's Jobs;
+    blank: the part frame's box. One Z-dexel model for parts machined along +-Z only (what one
+    setup removes, the next finds gone); otherwise each setup in its own frame (simulate_by_setup)."""
+    import FreeCAD
+    from aeronc import pathcompat
+    from aeronc.operations import base as op_base
+    from aeronc.pipeline import setup_job
+    from aeronc.post import machines
+    machine_json, _ = machines.load(machine)
+    tools = {}
+    for job in {id(p["job"]): p["job"] for p in programs}.values():
+        for tc in pathcompat.tool_controllers(job):
+            cutter = op_base.cutter_of(tc)
+            if cutter:
+                tools[tc.ToolNumber] = cutter["diameter"]
+    sim_ops, setups = [], []
+    for p in programs:
+        read = reread(p["path"], tools)
+        to_part = setup_job.frame_placement(p["frame"]).inverse()
+        placed = json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"])))
+        in_part = to_part_frame(read, placed, to_part)
+        in_job = to_part_frame(read, placed, FreeCAD.Placement())
+        for op, op_job in zip(in_part, in_job):
+            job, fc_op = ops_by_label.get(op["label"], (None, None))
+            if fc_op is None:
+                raise VerificationError("{} holds an operation '{}' that the Jobs do not".format(
+                    os.path.basename(p["path"]), op["label"]))
+            cutter = op_base.cutter_of(fc_op.ToolController)
+            for o in (op, op_job):
+                o.update(cutter={"diameter": cutter["diameter"], "cornerRadius": cutter["cornerRadius"]},
+                         radialAllowance=_length(fc_op, "RadialAllowance"),
+                         axialAllowance=_length(fc_op, "AxialAllowance"))
+            sim_ops.append(op)
+        setups.append({"name": p["setup"], "id": int(getattr(p["job"], setup_job.SETUP_TAG)),
+                       "to_part": to_part, "ops": in_job})
+    finished, elements = finished_faces(chain, result)
+    if all(axis_is_vertical(op["axis"]) for op in sim_ops):
+        return simulate(part_shape, sim_ops, blank, finished, elements, cell_size), len(sim_ops)
+    setup_of_element = {"E{}".format(e["id"]): e.get("setup") for e in result.get("elements", [])}
+    for s in setups:
+        s["elements"] = {k: v for k, v in elements.items() if setup_of_element.get(k) == s["id"]}
+    return simulate_by_setup(part_shape, setups, blank, cell_size), len(sim_ops)
+
+
+def _length(obj, prop):
+    """A length property's value in mm; 0 for an operation without it (drilling leaves nothing)."""
+    v = getattr(obj, prop, 0.0)
+    return float(getattr(v, "Value", v))
+
+
 def finished_faces(chain, result):
     """(faces the plan finishes, {element label: its finished faces}): floors and walls of the
     elements with an enabled finishing unit (webs, walls, flanges, corners). The faces of an

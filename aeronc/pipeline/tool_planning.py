@@ -13,7 +13,8 @@ import json
 
 import FreeCAD
 
-from aeronc import knowledge_base, pathcompat
+from aeronc.pipeline import knowledge_base
+from aeronc import pathcompat
 from aeronc.objects import machining_features
 from aeronc.objects.base import descendants, proxy_type
 from aeronc.objects.transaction import in_transaction

@@ -28,7 +28,9 @@ import time
 
 import FreeCAD
 
-from aeronc import impeller, knowledge_base, pathcompat
+from aeronc.impeller import recognition
+from aeronc.pipeline import knowledge_base
+from aeronc import pathcompat
 from aeronc.errors import AeroNCError, ImpellerError, from_core
 from aeronc.makers import face_links
 from aeronc.objects.base import attach_views, descendants
@@ -52,7 +54,7 @@ NOT_POSTED_NOTE = {
             "limits): checked, not posted with the first setup's program",
 }
 NO_PATH_NOTE = "no toolpath: {}"
-# Optimiser settings as the Optimise cutting command's (aeronc.cutting_optimisation).
+# Optimiser settings as the Optimise cutting command's (aeronc.pipeline.cutting_optimisation).
 ROUGHING_RA_MAX_UM = 12.5
 CHIP_LOAD_FACTOR = 1.5
 
@@ -193,7 +195,7 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
     c.settings = dict(allowance=float(allowance), material=material, machine=machine, kb_path=kb_path or "",
                       stations=int(stations), channels=int(channels))
     t0 = time.perf_counter()
-    c.result, c.blank = impeller.program_data(part_obj, allowance, kb_path=kb_path)
+    c.result, c.blank = recognition.program_data(part_obj, allowance, kb_path=kb_path)
     c.seconds["recognise"] = time.perf_counter() - t0
     c.route = route or c.result["route"]
     c.steps = _steps_with_tools(c.route, edits, kb_path)
@@ -329,13 +331,13 @@ def _features(doc, part, result):
     for prop, key, _ in DIMENSIONS:
         setattr(group, prop, float(result["dimensions"].get(key) or 0.0))
     stored = {k: v for k, v in result.items() if k not in ("route", "blank")}
-    stored["faceRoles"] = impeller.face_role_names(result)
+    stored["faceRoles"] = recognition.face_role_names(result)
     group.Result = json.dumps(stored, separators=(",", ":"))
     nodes = []
     for i, b in enumerate(result["blades"]):
         kind = b["kind"]
         nodes.append(_node(doc, part, kind + "_blade", "Blade {} ({})".format(i, kind),
-                           impeller.blade_wall_faces(b), b, i))
+                           recognition.blade_wall_faces(b), b, i))
     nodes.append(_node(doc, part, "hub", "Hub", [result["hub"]]))
     nodes.append(_node(doc, part, "root_fillets", "Root fillets", [f for b in result["blades"] for f in b["fillets"]]))
     nodes.append(_node(doc, part, "shroud", "Shroud", [b["shroud"] for b in result["blades"]]))

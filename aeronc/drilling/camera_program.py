@@ -9,21 +9,18 @@ Written in two forms from the same Path commands (AeroNC's U V W tool-axis conve
   NC        through the 5-axis post for the camera machine (AC-HEAD by default)
 
 The poses also fix the tool-mount frame of each picture, the `machine_from_mount` link of the
-transform chain (aeronc.compensation): the gauge point `length` above the camera position and
+transform chain (aeronc.drilling.compensation): the gauge point `length` above the camera position and
 the head's orientation, chosen as the post chooses it (the solution moving least from the
 previous hole's, from 0, 0).
 """
 import json
 import math
 
+from aeronc.errors import CameraError
 from aeronc.post import machines
 from aeronc.post.output import write_atomically
 
 DEFAULT_MACHINE = "AC-HEAD"
-
-
-class CameraError(ValueError):
-    """The camera program cannot be made; the message says what to change."""
 
 
 def _matrix(rows, name, source):
@@ -159,17 +156,17 @@ def camera_poses(holes, camera, standoff, approach, safe_z, assembly_from_part=N
 
 def path_commands(poses, feed, dwell):
     """Path commands of the camera program (AeroNC's U V W tool axis on every move)."""
-    import Path
+    from aeronc.pathcompat import command
     from aeronc.post.orientation import oriented_command
     cmds = []
     for p in poses:
         n = p["normal"]
-        cmds.append(Path.Command("(datum hole {})".format(p["id"])))
+        cmds.append(command("(datum hole {})".format(p["id"])))
         high = p["safe"][2] > p["approach"][2] + 1e-6  # the safe height is above the approach point
         for point in ([p["safe"]] if high else []) + [p["approach"]]:
             cmds.append(oriented_command("G0", {"X": point[0], "Y": point[1], "Z": point[2]}, n))
         cmds.append(oriented_command("G1", {"X": p["tip"][0], "Y": p["tip"][1], "Z": p["tip"][2], "F": feed}, n))
-        cmds.append(Path.Command("G4", {"P": dwell}))
+        cmds.append(command("G4", {"P": dwell}))
         for point in [p["approach"]] + ([p["safe"]] if high else []):
             cmds.append(oriented_command("G0", {"X": point[0], "Y": point[1], "Z": point[2]}, n))
     return cmds
@@ -178,8 +175,8 @@ def path_commands(poses, feed, dwell):
 def sections(poses, camera, label, feed, dwell):
     """The sections the posts take: the camera as a tool (its offset as the tool length), then
     the camera moves."""
-    import Path
-    gcode = Path.Path(path_commands(poses, feed, dwell)).toGCode()
+    from aeronc.pathcompat import path_from_commands
+    gcode = path_from_commands(path_commands(poses, feed, dwell)).toGCode()
     return [
         {"kind": "tool", "label": camera["name"],
          "tool": {"number": camera["tool_number"], "name": camera["name"], "diameter": 0.0, "corner_radius": 0.0,

@@ -20,7 +20,8 @@ from aeronc.post.output import write_atomically
 
 def report_data(op):
     """Everything the report shows, from the operation and its sets (a dict)."""
-    from aeronc.objects import compensated_drilling, measured_hole_set
+    from aeronc.objects import measured_hole_set
+    from aeronc.operations import compensated_drilling
     ms, ps = op.MeasuredHoleSet, op.PhotoHoleSet
     result = json.loads(op.Report) if op.Report else {}
     survey = measured_hole_set.result_of(ms) if ms is not None else {}

@@ -16,7 +16,7 @@ import math
 
 import FreeCAD
 
-from aeronc import recognition
+from aeronc.pipeline import recognition
 from aeronc.errors import RecognitionError
 from aeronc.objects.base import attach_views, descendants
 from aeronc.objects.domain_element import ELEMENT_TYPES, DomainElement

@@ -13,8 +13,10 @@ import json
 
 import FreeCAD
 
+from aeronc import pathcompat
+from aeronc.drilling import compensation
+from aeronc.objects import photo_hole_set
 from aeronc.objects.base import BaseProxy, add_property, proxy_type
-from aeronc.objects.transaction import in_transaction
 
 TYPE = "AeroNC::CompensatedDrilling"
 NOT_MEASURED = "nominal positions: no measurements imported, not compensated"
@@ -63,7 +65,6 @@ class CompensatedDrilling(BaseProxy):
         add_property(obj, "App::PropertyString", "Report", g, "The last compensation (JSON)", hidden=True)
 
     def execute(self, obj):
-        import Path
         try:
             holes, result, status = _compensated(obj)
         except Exception as e:  # the compensation refused: drill nothing rather than the wrong places
@@ -71,7 +72,7 @@ class CompensatedDrilling(BaseProxy):
             obj.MethodUsed = ""
             obj.Corrections, obj.CompensatedPositions, obj.Flagged = [], [], []
             obj.Report = ""
-            obj.Path = Path.Path()
+            obj.Path = pathcompat.path_from_commands()
             FreeCAD.Console.PrintError("AeroNC: {}: {}\n".format(obj.Label, obj.Status))
             return
         obj.Status = status
@@ -80,13 +81,12 @@ class CompensatedDrilling(BaseProxy):
         obj.CompensatedPositions = [FreeCAD.Vector(*h["compensated"]) for h in holes]
         obj.Flagged = [i for i, h in enumerate(holes) if h.get("exceeds_tolerance")]
         obj.Report = json.dumps(result, separators=(",", ":")) if result else ""
-        obj.Path = Path.Path(drilling_commands(obj, holes))
+        obj.Path = pathcompat.path_from_commands(drilling_commands(obj, holes))
 
 
 def nominal_holes(obj):
     """The holes to drill: [{id, faces, position, normal, diameter, depth}] (part frame), datum
     holes of the photo-hole set left out."""
-    from aeronc.objects import photo_hole_set
     datum = photo_hole_set.datum_faces(obj.PhotoHoleSet) if obj.PhotoHoleSet is not None else set()
     out = []
     for i, hid in enumerate(obj.HoleIds):
@@ -101,7 +101,6 @@ def nominal_holes(obj):
 
 def _compensated(obj):
     """(holes with compensated position and normal, core result or None, status)."""
-    from aeronc import compensation
     holes = nominal_holes(obj)
     ms = obj.MeasuredHoleSet
     if ms is None or len(ms.HoleIds) == 0:
@@ -121,11 +120,10 @@ def _compensated(obj):
 def drilling_commands(obj, holes):
     """Each hole drilled along its normal: rapid at the safe height above it, down its normal to
     the R level, G81 (G83 with a peck depth) to the depth plus the extra, back up (G98)."""
-    import Path
     from aeronc.post.orientation import oriented_command
     part = obj.Source
     pl = part.Placement if part is not None else FreeCAD.Placement()
-    cmds = [Path.Command("G98")]
+    cmds = [pathcompat.command("G98")]
     for h in holes:
         entry = pl.multVec(FreeCAD.Vector(*h["compensated"]))
         n = pl.Rotation.multVec(FreeCAD.Vector(*h["drill_normal"]))
@@ -134,7 +132,7 @@ def drilling_commands(obj, holes):
         bottom = entry - n * reach
         lift = max(obj.SafeHeight.Value - entry.z, obj.Clearance.Value)
         above = entry + n * (lift / n.z if n.z > 0.2 else lift)
-        cmds.append(Path.Command("(hole {})".format(h["id"])))
+        cmds.append(pathcompat.command("(hole {})".format(h["id"])))
         cmds.append(oriented_command("G0", {"X": above.x, "Y": above.y, "Z": above.z}, n))
         # R - Z is the distance from the bottom to the R level along the axis (docs/post.md).
         p = {"X": bottom.x, "Y": bottom.y, "Z": bottom.z, "R": bottom.z + reach + obj.Clearance.Value,
@@ -142,7 +140,7 @@ def drilling_commands(obj, holes):
         if obj.PeckDepth.Value > 0:
             p["Q"] = obj.PeckDepth.Value
         cmds.append(oriented_command("G83" if "Q" in p else "G81", p, n))
-    cmds.append(Path.Command("G80"))
+    cmds.append(pathcompat.command("G80"))
     return cmds
 
 
@@ -157,68 +155,3 @@ def is_compensated_drilling(obj):
 
 def operations_of(photo_set):
     return [o for o in photo_set.Document.Objects if is_compensated_drilling(o) and o.PhotoHoleSet is photo_set]
-
-
-def create_for_photo_set(photo_set, measured_set=None):
-    """The compensated drilling of the set's part: the existing operation, or a new one in the
-    part's Job (made when the part has none); one undo step."""
-    existing = operations_of(photo_set)
-    if existing:
-        return existing[0]
-    from aeronc import pathcompat
-    jobs = pathcompat.jobs_of_part(photo_set.Document, photo_set.Source)
-    return create_compensated_drilling(jobs[0] if jobs else None, photo_set, measured_set)
-
-
-def create_compensated_drilling(job, photo_set, measured_set=None, tool_controller=None, holes=None,
-                                label="Compensated drilling"):
-    """A compensated drilling operation in job (None: a new Job for the part) for the holes of
-    photo_set's part (default: every hole of the part's pattern that is not a datum hole), with
-    a drill tool controller made for the holes' diameter unless one is given; one undo step."""
-    from aeronc import pathcompat
-    from aeronc.objects import measured_hole_set, photo_hole_set
-    part = photo_set.Source
-    if holes is None:
-        holes = [h for h in photo_hole_set.pattern_of(photo_set) if not h["datum"]]
-    if not holes:
-        raise ValueError("{} has no holes to drill besides its datum holes".format(part.Label))
-    if measured_set is None:
-        sets = measured_hole_set.measured_sets_of(photo_set)
-        measured_set = sets[0] if sets else None
-    doc = photo_set.Document
-
-    def work():
-        nonlocal job
-        if job is None:
-            job = pathcompat.create_job(doc, [part])
-            doc.recompute()
-        tc = tool_controller
-        if tc is None:
-            number = max([int(t.ToolNumber) for t in pathcompat.tool_controllers(job)] + [0]) + 1
-            d = max(h["diameter"] for h in holes)
-            tc = pathcompat.add_tool_controller(job, "TC: {:g} mm drill".format(round(d, 3)), number)
-            tc.Tool.Diameter = d
-            tc.Tool.Label = "Drill {:g}".format(round(d, 3))
-            tc.VertFeed, tc.HorizFeed, tc.SpindleSpeed = "300 mm/min", "300 mm/min", 4000
-        op = pathcompat.add_scripted_operation(doc, "CompensatedDrilling")
-        CompensatedDrilling(op)
-        op.Label = label
-        op.ToolController = tc
-        op.Source = part
-        op.PhotoHoleSet = photo_set
-        op.MeasuredHoleSet = measured_set
-        op.HoleIds = ["H{}".format(i + 1) for i in range(len(holes))]
-        op.HoleFaces = [" ".join(h["faces"]) for h in holes]
-        op.NominalPositions = [FreeCAD.Vector(*h["entry"]) for h in holes]
-        op.NominalNormals = [FreeCAD.Vector(*h["normal"]) for h in holes]
-        op.Diameters = [float(h["diameter"]) for h in holes]
-        op.Depths = [float(h["depth"]) for h in holes]
-        op.SafeHeight = part.Shape.BoundBox.ZMax + 20.0
-        job.Operations.addObject(op)
-        if FreeCAD.GuiUp:
-            from aeronc import viewproviders
-            viewproviders.attach(op)
-        doc.recompute()
-        return op
-
-    return in_transaction(doc, "Compensated drilling", work)

@@ -13,7 +13,8 @@ kept, or could not be kept, is listed in the chain's Messages.
 """
 import json
 
-from aeronc import chain_edits, knowledge_base, operations, pathcompat, setup_job
+from aeronc.pipeline import chain_edits, knowledge_base, setup_job
+from aeronc import operations, pathcompat
 from aeronc.errors import AeroNCError, MachiningChainError, from_core
 from aeronc.objects import machining_chain as chain_object
 from aeronc.objects import machining_features
@@ -220,7 +221,7 @@ def _sync_jobs(obj, chain, part, blank, kb, progress):
     kept = []
     for setup in chain.get("setups", []):
         job = jobs.pop(int(setup["id"]), None) or setup_job.make_job(doc, part, setup)
-        setup_job.place(job, part, setup, blank)
+        setup_job.place(job, part, setup, blank, obj.Machine)
         doc.recompute([job.Stock] + pathcompat.job_models(job))
         setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == int(setup["id"])]
         kept.append((job, setup_units))

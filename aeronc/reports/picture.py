@@ -44,29 +44,12 @@ def _rasterise(tris, colours, edges, elev, azim, size):
     light = eye.copy()  # a headlight: what faces the viewer is brightest
     light /= np.linalg.norm(light)
     shade = 0.45 + 0.55 * np.abs((normals / nn[:, None]) @ light)
-    img = np.ones((size, size, 3))
-    zbuf = np.full((size, size), -np.inf)
-    for t in range(len(tris)):
-        xs, ys, zs = px[t], py[t], pz[t]
-        x0, x1 = max(int(xs.min()), 0), min(int(xs.max()) + 1, size - 1)
-        y0, y1 = max(int(ys.min()), 0), min(int(ys.max()) + 1, size - 1)
-        if x0 > x1 or y0 > y1:
-            continue
-        gx, gy = np.meshgrid(np.arange(x0, x1 + 1) + 0.5, np.arange(y0, y1 + 1) + 0.5)
-        d = (ys[1] - ys[2]) * (xs[0] - xs[2]) + (xs[2] - xs[1]) * (ys[0] - ys[2])
-        if abs(d) < 1e-12:
-            continue
-        w0 = ((ys[1] - ys[2]) * (gx - xs[2]) + (xs[2] - xs[1]) * (gy - ys[2])) / d
-        w1 = ((ys[2] - ys[0]) * (gx - xs[2]) + (xs[0] - xs[2]) * (gy - ys[2])) / d
-        w2 = 1 - w0 - w1
-        inside = (w0 >= -1e-6) & (w1 >= -1e-6) & (w2 >= -1e-6)
-        if not inside.any():
-            continue
-        depth = w0 * zs[0] + w1 * zs[1] + w2 * zs[2]
-        sub = zbuf[y0:y1 + 1, x0:x1 + 1]
-        win = inside & (depth > sub)
-        sub[win] = depth[win]
-        img[y0:y1 + 1, x0:x1 + 1][win] = colours[t] * shade[t]
+    zbuf, owner = _zbuffer(px, py, pz, size)
+    img = np.ones((size * size, 3))
+    hit = owner >= 0
+    img[hit] = colours[owner[hit]] * shade[owner[hit], None]
+    img = img.reshape(size, size, 3)
+    zbuf = zbuf.reshape(size, size)
     if len(edges):
         # Face boundaries: dense samples along each edge, drawn where they are not hidden.
         ex, ey, ez = edges @ right, edges @ up, edges @ eye
@@ -75,6 +58,58 @@ def _rasterise(tris, colours, edges, elev, azim, size):
         visible = ez >= zbuf[iy, ix] - span * 4e-3
         img[iy[visible], ix[visible]] *= 0.35
     return img
+
+
+def _zbuffer(px, py, pz, size, budget=4_000_000):
+    """(depth, triangle) per pixel of a size x size image, flattened: the nearest triangle whose
+    inside holds the pixel's centre (-inf, -1 where none). All triangles at once, in groups of
+    like bounding-box size, each group as one numpy computation of at most `budget` samples."""
+    import numpy as np
+    x0 = np.maximum(np.floor(px.min(1)).astype(np.int64), 0)
+    x1 = np.minimum(np.floor(px.max(1)).astype(np.int64) + 1, size - 1)
+    y0 = np.maximum(np.floor(py.min(1)).astype(np.int64), 0)
+    y1 = np.minimum(np.floor(py.max(1)).astype(np.int64) + 1, size - 1)
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    d = (py[:, 1] - py[:, 2]) * (px[:, 0] - px[:, 2]) + (px[:, 2] - px[:, 1]) * (py[:, 0] - py[:, 2])
+    usable = (w > 0) & (h > 0) & (np.abs(d) >= 1e-12)
+    extent = np.maximum(w, h)
+    pixels, depths, owners = [], [], []
+    low = 0
+    side = 2
+    while low < size:
+        group = np.nonzero(usable & (extent > low) & (extent <= side))[0]
+        per = max(1, budget // (side * side))
+        for start in range(0, len(group), per):
+            k = group[start:start + per]
+            steps = np.arange(side)
+            gx = x0[k, None, None] + steps[None, None, :]
+            gy = y0[k, None, None] + steps[None, :, None]
+            inbox = (steps[None, None, :] < w[k, None, None]) & (steps[None, :, None] < h[k, None, None])
+            cx, cy = gx + 0.5, gy + 0.5
+            xs, ys, zs = px[k], py[k], pz[k]
+            dk = d[k][:, None, None]
+            w0 = ((ys[:, 1, None, None] - ys[:, 2, None, None]) * (cx - xs[:, 2, None, None]) +
+                  (xs[:, 2, None, None] - xs[:, 1, None, None]) * (cy - ys[:, 2, None, None])) / dk
+            w1 = ((ys[:, 2, None, None] - ys[:, 0, None, None]) * (cx - xs[:, 2, None, None]) +
+                  (xs[:, 0, None, None] - xs[:, 2, None, None]) * (cy - ys[:, 2, None, None])) / dk
+            w2 = 1 - w0 - w1
+            inside = inbox & (w0 >= -1e-6) & (w1 >= -1e-6) & (w2 >= -1e-6)
+            depth = w0 * zs[:, 0, None, None] + w1 * zs[:, 1, None, None] + w2 * zs[:, 2, None, None]
+            pixels.append((gy * size + gx)[inside])
+            depths.append(depth[inside])
+            owners.append(np.broadcast_to(k[:, None, None], inside.shape)[inside])
+        low, side = side, side * 2
+    zbuf = np.full(size * size, -np.inf)
+    owner = np.full(size * size, -1, dtype=np.int64)
+    if pixels:
+        pix, dep, own = np.concatenate(pixels), np.concatenate(depths), np.concatenate(owners)
+        if len(pix):
+            order = np.lexsort((dep, pix))  # by pixel, nearest last
+            pix, dep, own = pix[order], dep[order], own[order]
+            last = np.ones(len(pix), dtype=bool)
+            last[:-1] = pix[1:] != pix[:-1]
+            zbuf[pix[last]], owner[pix[last]] = dep[last], own[last]
+    return zbuf, owner
 
 
 def render(shape, result, path, title="", views=VIEWS, size=700):

@@ -12,11 +12,9 @@ import math
 import FreeCAD
 import Part
 
+from aeronc.errors import HoleError  # noqa: F401  (raised here; callers catch it as hole_geometry.HoleError)
+
 LINEAR_TOLERANCE = 1e-4
-
-
-class HoleError(ValueError):
-    """A selected face or edge is not a hole; the message names it."""
 
 
 def _vec(v):

@@ -22,7 +22,8 @@ import os
 
 import FreeCAD
 
-from aeronc import knowledge_base, pathcompat
+from aeronc.pipeline import knowledge_base
+from aeronc import pathcompat
 from aeronc.objects.base import add_property
 from aeronc.errors import CuttingOptimisationError, from_core
 from aeronc.objects.transaction import in_transaction

@@ -14,11 +14,9 @@ The transform chain of a picture (camera -> tool mount -> machine -> assembly ->
 """
 import FreeCAD
 
-from aeronc import camera_program as cp
-
-
-class CompensationError(RuntimeError):
-    """Bad measurements or a compensation that cannot be done; the message says which and why."""
+from aeronc.drilling import camera_program as cp
+from aeronc.drilling import hole_pattern
+from aeronc.errors import CompensationError
 
 
 def _matrix(rows):
@@ -53,13 +51,12 @@ def camera_of(photo_set):
 
 def poses(photo_set, camera=None):
     """The camera pose of every datum hole of the set, in order (camera_program.camera_poses)."""
-    from aeronc.objects import photo_hole_set as phs
     camera = camera or camera_of(photo_set)
     if photo_set.Source is None:
         raise CompensationError("{} has no source part".format(photo_set.Label))
     try:
-        return cp.camera_poses(phs.holes_of(photo_set), camera, photo_set.Standoff.Value, photo_set.Approach.Value,
-                               photo_set.SafeHeight.Value, phs.assembly_from_part(photo_set.Source))
+        return cp.camera_poses(hole_pattern.holes_of(photo_set), camera, photo_set.Standoff.Value, photo_set.Approach.Value,
+                               photo_set.SafeHeight.Value, hole_pattern.assembly_from_part(photo_set.Source))
     except cp.CameraError as e:
         raise CompensationError(str(e)) from None
 
@@ -67,12 +64,11 @@ def poses(photo_set, camera=None):
 def datum_frames(photo_set):
     """[{id, nominal, normal, chain}] for the core's import: nominal and normal in the part frame,
     chain the four 4x4s (row lists) of each datum hole's picture."""
-    from aeronc.objects import photo_hole_set as phs
     camera = camera_of(photo_set)
     machine_from_assembly = _rigid_inverse(camera["assembly_from_machine"])
     part_from_assembly = _rows(photo_set.Source.Placement.toMatrix().inverse())
     out = []
-    for h, pose in zip(phs.holes_of(photo_set), poses(photo_set, camera)):
+    for h, pose in zip(hole_pattern.holes_of(photo_set), poses(photo_set, camera)):
         out.append({"id": h["id"], "nominal": list(h["position"]), "normal": list(h["normal"]),
                     "chain": {"mount_from_camera": camera["mount_from_camera"],
                               "machine_from_mount": _mul(machine_from_assembly, pose["mount"]),
@@ -144,13 +140,11 @@ def assign_rows(photo_set, items, field):
     the photo-hole set's pattern (drawn by hand or found), so that the seed's method sees the
     part's rows whichever holes are compensated. A hole that is not in the pattern gets a row of
     its own."""
-    from aeronc import _core
     pattern = [(p.x, p.y, p.z) for p in photo_set.PatternPositions] if photo_set is not None else []
     if not pattern:
         return items
-    from aeronc.objects import photo_hole_set
     faces = [f.split()[0] for f in photo_set.PatternFaces]
-    rows, stations, members = photo_hole_set.pattern_rows(photo_set, pattern, faces)
+    rows, stations, members = hole_pattern.pattern_rows(photo_set, pattern, faces)
     where = {_key(p): (r, s) for p, r, s in zip(pattern, rows, stations)}
     spare = len(members)
     for it in items:

@@ -5,47 +5,16 @@ checks and the verification of the posted programs (gouge, coverage, collisions)
 saved by sequencing, the elements left unmachined and why, and the pictures. The page is
 self-contained apart from its pictures, which sit beside it and are linked by file name.
 """
-import html
 import os
 
 from aeronc.post.output import write_atomically
+from aeronc.reports.html import STYLE, esc, num, verdict
 
 STEP_NAMES = {
     "r": "rough inner and outer shape", "w": "finish webs (floors)", "c": "corners",
     "ss": "semi-finish walls", "sf": "semi-finish flanges", "fs": "finish walls", "ff": "finish flanges",
     "t": "cut off", "d": "drill holes", "h": "mill holes (helical)",
 }
-
-_STYLE = """
-body { font-family: 'DejaVu Sans', Arial, sans-serif; margin: 24px 32px; color: #222; max-width: 1280px; }
-h1 { font-size: 22px; margin-bottom: 2px; } h2 { font-size: 18px; border-bottom: 2px solid #3a6ea5;
-padding-bottom: 2px; margin-top: 28px; } h3 { font-size: 15px; margin: 18px 0 6px; }
-table { border-collapse: collapse; margin: 6px 0 12px; font-size: 13px; }
-th, td { border: 1px solid #c8c8c8; padding: 3px 8px; text-align: left; vertical-align: top; }
-th { background: #eef2f7; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
-tr.process td { background: #f6f6f6; font-weight: bold; } .ok { color: #11772b; font-weight: bold; }
-.fail { color: #b3141b; font-weight: bold; } .muted { color: #777; } .small { font-size: 12px; }
-img { max-width: 100%; border: 1px solid #ddd; margin: 6px 0; }
-.summary td:first-child { font-weight: bold; background: #fafafa; }
-"""
-
-
-def _e(x):
-    return html.escape(str(x))
-
-
-def _num(x, digits=1):
-    if x is None:
-        return "&ndash;"
-    try:
-        return "{:,.{}f}".format(float(x), digits)
-    except (TypeError, ValueError):
-        return _e(x)
-
-
-def _verdict(ok):
-    return '<span class="ok">pass</span>' if ok else '<span class="fail">FAIL</span>'
-
 
 def _minutes(m):
     if m is None:
@@ -57,12 +26,12 @@ def _summary(run):
     chain = run.get("chain", {})
     units = chain.get("units", [])
     ops = run.get("operations", [])
-    rows = [("Part", _e(run.get("part", ""))), ("Source", _e(run.get("source", ""))),
-            ("Material / machine", "{} on {}".format(_e(chain.get("material", "")), _e(chain.get("machine", "")))),
-            ("Process template", _e(chain.get("family", ""))),
-            ("Recognised elements", _e(len(run.get("recognition", {}).get("elements", [])))),
+    rows = [("Part", esc(run.get("part", ""))), ("Source", esc(run.get("source", ""))),
+            ("Material / machine", "{} on {}".format(esc(chain.get("material", "")), esc(chain.get("machine", "")))),
+            ("Process template", esc(chain.get("family", ""))),
+            ("Recognised elements", esc(len(run.get("recognition", {}).get("elements", [])))),
             ("Machining units", "{} ({} enabled)".format(len(units), sum(1 for u in units if u.get("enabled", True)))),
-            ("Elements not machined", _e(unmachined_text(chain)))]
+            ("Elements not machined", esc(unmachined_text(chain)))]
     total = sum(o.get("minutes") or 0 for o in ops)
     if ops:
         rows.append(("Estimated machining time", _minutes(total) + ' <span class="muted small">(cutting at the '
@@ -70,14 +39,14 @@ def _summary(run):
     travel = chain.get("travel")
     if travel:
         rows.append(("Rapid travel", "{} mm in rule order &rarr; {} mm sequenced ({}% saved)".format(
-            _num(travel.get("rulesOnly"), 0), _num(travel.get("optimised"), 0), _num(travel.get("savedPercent"), 1))))
+            num(travel.get("rulesOnly"), 0), num(travel.get("optimised"), 0), num(travel.get("savedPercent"), 1))))
     for p in run.get("programs", []):
         zero = p.get("partZero")
         where = (" &middot; program zero at ({}) from the table's reference point: the blank centred on the "
-                 "table".format(", ".join(_num(v, 3) for v in zero)) if zero else "")
-        rows.append(("Program " + _e(p.get("setup", "")), '<a href="{0}">{0}</a> <span class="muted small">'
-                     '{1} &middot; {2} lines{3}</span>'.format(_e(os.path.basename(p["path"])), _e(p.get("dialect", "")),
-                                                             _e(p.get("lines", "")), where)))
+                 "table".format(", ".join(num(v, 3) for v in zero)) if zero else "")
+        rows.append(("Program " + esc(p.get("setup", "")), '<a href="{0}">{0}</a> <span class="muted small">'
+                     '{1} &middot; {2} lines{3}</span>'.format(esc(os.path.basename(p["path"])), esc(p.get("dialect", "")),
+                                                             esc(p.get("lines", "")), where)))
     body = "".join("<tr><td>{}</td><td>{}</td></tr>".format(k, v) for k, v in rows)
     return '<table class="summary">{}</table>'.format(body)
 
@@ -86,10 +55,10 @@ def _checks(run):
     out = ["<h2>Checks</h2>", "<table><tr><th>check</th><th>node</th><th>result</th><th>detail</th></tr>"]
     for c in run.get("chain", {}).get("checks", []):
         out.append("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>".format(
-            _e(c.get("rule", "")), _e(c.get("node", "")), _verdict(c.get("ok", False)), _e(c.get("message", ""))))
+            esc(c.get("rule", "")), esc(c.get("node", "")), verdict(c.get("ok", False)), esc(c.get("message", ""))))
     for v in run.get("verification", []):
         out.append("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>".format(
-            _e(v["check"]), _e(v.get("node", "")), _verdict(v["ok"]), _e(v.get("detail", ""))))
+            esc(v["check"]), esc(v.get("node", "")), verdict(v["ok"]), esc(v.get("detail", ""))))
     out.append("</table>")
     return "".join(out)
 
@@ -101,7 +70,7 @@ def _setup_tables(run):
     out = []
     for s in chain.get("setups", []):
         out.append("<h2>Setup {} <span class='muted small'>tool axis {}</span></h2>".format(
-            _e(s.get("name", "")), _e(s.get("direction", ""))))
+            esc(s.get("name", "")), esc(s.get("direction", ""))))
         out.append("<table><tr><th>#</th><th>step</th><th>tool</th><th>unit</th><th>element</th><th>operation</th>"
                    "<th>top</th><th>bottom</th><th>radial / axial allowance</th><th>n (r/min)</th>"
                    "<th>feed (mm/min)</th><th>cut (mm)</th><th>time</th></tr>")
@@ -109,7 +78,7 @@ def _setup_tables(run):
             minutes = sum((op_of.get(uid, {}).get("minutes") or 0)
                           for st in p.get("steps", []) for pr in st.get("programs", []) for uid in pr.get("units", []))
             out.append("<tr class='process'><td colspan='13'>process {} &middot; {} &middot; tool {} &middot; {}"
-                       "</td></tr>".format(_e(p.get("id", "")), _e(p.get("machine", "")), _e(p.get("tool", "")),
+                       "</td></tr>".format(esc(p.get("id", "")), esc(p.get("machine", "")), esc(p.get("tool", "")),
                                            _minutes(minutes)))
             for st in p.get("steps", []):
                 for pr in st.get("programs", []):
@@ -123,13 +92,13 @@ def _setup_tables(run):
                             "<td class='n'>{}</td><td class='n'>{}</td><td>{}</td><td class='n'>{}</td>"
                             "<td class='n'>{}</td><td class='n'>{} / {}</td><td class='n'>{}</td><td class='n'>{}</td>"
                             "<td class='n'>{}</td><td class='n'>{}</td></tr>".format(
-                                muted, _e(u.get("order", "")), _e(st.get("code", "")),
-                                _e(STEP_NAMES.get(st.get("code", ""), "")), _e(pr.get("tool", u.get("tool", ""))),
-                                _e(uid), _e(u.get("element", "")),
-                                _e(u.get("operation", "")) + ("" if u.get("enabled", True) else " (disabled)"),
-                                _num(u.get("top"), 2), _num(u.get("bottom"), 2), _num(u.get("radialAllowance"), 2),
-                                _num(u.get("axialAllowance"), 2), _num(setting.get("spindleRpm"), 0),
-                                _num(setting.get("feedMmMin"), 0), _num(o.get("cutLength"), 0),
+                                muted, esc(u.get("order", "")), esc(st.get("code", "")),
+                                esc(STEP_NAMES.get(st.get("code", ""), "")), esc(pr.get("tool", u.get("tool", ""))),
+                                esc(uid), esc(u.get("element", "")),
+                                esc(u.get("operation", "")) + ("" if u.get("enabled", True) else " (disabled)"),
+                                num(u.get("top"), 2), num(u.get("bottom"), 2), num(u.get("radialAllowance"), 2),
+                                num(u.get("axialAllowance"), 2), num(setting.get("spindleRpm"), 0),
+                                num(setting.get("feedMmMin"), 0), num(o.get("cutLength"), 0),
                                 _minutes(o.get("minutes"))))
         out.append("</table>")
     return "".join(out)
@@ -150,7 +119,7 @@ def _unmachined(run):
     if not items:
         return "<h2>Elements not machined</h2><p class='ok'>Every recognised element is machined by some unit.</p>"
     rows = "".join("<tr><td class='n'>{}</td><td>{}</td><td>{}</td></tr>".format(
-        _e(i.get("element")), _e(", ".join(str(f) for f in i.get("faces") or []) or "all"), _e(i.get("reason")))
+        esc(i.get("element")), esc(", ".join(str(f) for f in i.get("faces") or []) or "all"), esc(i.get("reason")))
         for i in items)
     return ("<h2>Elements not machined</h2><table><tr><th>element</th><th>faces left</th><th>why</th></tr>{}</table>"
             .format(rows))
@@ -165,9 +134,9 @@ def _coverage(run):
            "<th>area left &gt; tolerance (mm&sup2;)</th><th>max left (mm)</th></tr>"]
     for r in rows:
         out.append("<tr><td class='n'>{}</td><td class='n'>{}</td><td class='n'>{}</td>"
-                   "<td class='n'>{}</td></tr>".format(_e(r.get("element")),
-                                                      _num(r.get("area"), 0), _num(r.get("leftArea"), 0),
-                                                      _num(r.get("maxLeft"), 2)))
+                   "<td class='n'>{}</td></tr>".format(esc(r.get("element")),
+                                                      num(r.get("area"), 0), num(r.get("leftArea"), 0),
+                                                      num(r.get("maxLeft"), 2)))
     out.append("</table>")
     return "".join(out)
 
@@ -175,7 +144,7 @@ def _coverage(run):
 def _pictures(run):
     out = []
     for caption, name in run.get("pictures", []):
-        out.append("<h3>{}</h3><img src='{}' alt='{}'>".format(_e(caption), _e(os.path.basename(name)), _e(caption)))
+        out.append("<h3>{}</h3><img src='{}' alt='{}'>".format(esc(caption), esc(os.path.basename(name)), esc(caption)))
     return "".join(out)
 
 
@@ -183,7 +152,7 @@ def _stages(run):
     stages = run.get("stages", [])
     if not stages:
         return ""
-    rows = "".join("<tr><td>{}</td><td class='n'>{:.2f} s</td></tr>".format(_e(n), t) for n, t in stages)
+    rows = "".join("<tr><td>{}</td><td class='n'>{:.2f} s</td></tr>".format(esc(n), t) for n, t in stages)
     total = sum(t for _, t in stages)
     return ("<h2>Run</h2><table><tr><th>stage</th><th>time</th></tr>{}<tr><td><b>total</b></td>"
             "<td class='n'><b>{:.2f} s</b></td></tr></table>".format(rows, total))
@@ -193,8 +162,8 @@ def render(run):
     """The report's HTML text for one run of the machining chain (see write)."""
     title = "AeroNC machining chain: {}".format(run.get("part", ""))
     parts = ["<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{}</title><style>{}</style>"
-             "</head><body>".format(_e(title), _STYLE),
-             "<h1>{}</h1>".format(_e(title)), _summary(run), _checks(run), _coverage(run), _pictures(run),
+             "</head><body>".format(esc(title), STYLE),
+             "<h1>{}</h1>".format(esc(title)), _summary(run), _checks(run), _coverage(run), _pictures(run),
              _setup_tables(run), _unmachined(run), _stages(run), "</body></html>"]
     return "\n".join(parts)
 

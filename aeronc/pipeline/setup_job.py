@@ -12,7 +12,7 @@ made from the unit's cutting data (the knowledge base's n and feeds).
 import FreeCAD
 
 from aeronc import pathcompat
-from aeronc.tool_planning import TC_TAG
+from aeronc.pipeline.tool_planning import TC_TAG
 
 SETUP_TAG = "AeroNCSetup"  # property on the Jobs of a chain: the setup id
 
@@ -77,7 +77,7 @@ def blank_box(group):
 def cutting_operation(unit):
     """The knowledge base's cutting operation whose data a unit uses: drilling for the drill
     step, roughing for rough, corner, hole-milling and cut-off steps, finishing otherwise."""
-    from aeronc.chain_edits import setting_operation
+    from aeronc.pipeline.chain_edits import setting_operation
     return setting_operation(unit.get("step", ""))
 
 
@@ -100,8 +100,27 @@ def make_job(doc, part, setup):
     return job
 
 
-def place(job, part, setup, blank):
-    """Model and stock of the Job in the setup's frame."""
+def part_zero(blank, frame):
+    """Where the program zero (the part's origin, in the setup's frame) sits from the table's
+    reference point when the blank stands centred on the table: minus the middle of the blank's
+    underside in the frame. Parts modelled far from their origin then stay within the travel."""
+    box = box_in_frame(blank, frame)
+    return [0.0 - (box[0] + box[3]) / 2, 0.0 - (box[1] + box[4]) / 2, 0.0 - box[2]]  # no -0.0
+
+
+def post_arguments(machine, blank, frame):
+    """The arguments of AeroNC's posts for a setup: the machine, and the part zero with the blank
+    centred on the table."""
+    zero = part_zero(blank, frame)
+    return "--machine {} --part-zero={}".format(machine, ",".join("{:.6f}".format(v) for v in zero))
+
+
+def place(job, part, setup, blank, machine=None):
+    """Model and stock of the Job in the setup's frame; with a machine, the Job posts with
+    AeroNC's post for it (FreeCAD's Post command then writes what the main job writes)."""
+    if machine:
+        from aeronc.post import machines
+        pathcompat.set_job_post(job, machines.post_of(machine), post_arguments(machine, blank, setup["frame"]))
     job.Label = setup_label(setup, part)
     pathcompat.set_model_placement(job, frame_placement(setup["frame"]))
     stock = job.Stock
@@ -166,7 +185,7 @@ def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb)
 
 def _copy_optimum(source, tc):
     """The optimiser's record travels with the speeds and feeds it chose."""
-    from aeronc.cutting_optimisation import RESULT_PROPERTY
+    from aeronc.pipeline.cutting_optimisation import RESULT_PROPERTY
     if RESULT_PROPERTY in source.PropertiesList:
         tc.addProperty(source.getTypeIdOfProperty(RESULT_PROPERTY), RESULT_PROPERTY, "AeroNC",
                        source.getDocumentationOfProperty(RESULT_PROPERTY), 0, True)

@@ -1,5 +1,5 @@
 """App-side wrapper of the C++ impeller core: recognition by rules and dimension analysis
-(impeller paper, docs/impeller.md), and the generated test impeller.
+(impeller paper, docs/impeller.md).
 
 The shape crosses to `aeronc._core` as BREP text, unchanged, so the face numbers in the result
 are the source's FaceN. Every failure becomes `RecognitionError` with the core's message (not an
@@ -8,7 +8,7 @@ impeller, unequal blade groups, missing hub, ...).
 import json
 
 from aeronc.errors import RecognitionError, from_core
-from aeronc.recognition import _core, check_solid, shape_of
+from aeronc.pipeline.recognition import _core, check_solid, shape_of
 
 
 def recognise(source):
@@ -34,7 +34,7 @@ def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
     met; skipped: rules that do not apply) added. kb_path: the knowledge base (default: the
     user's, made from the shipped SQL when missing)."""
     import Part
-    from aeronc import knowledge_base
+    from aeronc.pipeline import knowledge_base
     shape, label = shape_of(source)
     check_solid(shape, label)
     if not allowance >= 0:
@@ -50,18 +50,6 @@ def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
     blank = Part.Shape()
     blank.importBrepFromString(blank_brep)
     return json.loads(text), blank
-
-
-def make_test_impeller(spec=None):
-    """A generated impeller: (Part shape, truth dict). spec: ImpellerSpec fields as a dict
-    (bladeCount, splitters, filletRadius, ...); unknown keys are refused."""
-    import Part
-    core = _core()
-    with from_core(RecognitionError, "generated impeller"):
-        brep, truth = core.make_impeller(json.dumps(spec or {}))
-    shape = Part.Shape()
-    shape.importBrepFromString(brep)
-    return shape, json.loads(truth)
 
 
 def face_roles(result):

@@ -1,0 +1,1 @@
+"""Test-part makers: generated parts with their known truth (aeronc.tests.parts)."""
