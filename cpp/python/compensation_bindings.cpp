@@ -132,6 +132,8 @@ py::dict resultDict(const CompensationResult& r) {
         x["miss"] = std::isfinite(v.miss) ? py::object(py::float_(v.miss)) : py::object(py::none());
         x["predictor"] = v.predictor ? py::object(py::str(methodName(*v.predictor))) : py::object(py::none());
         x["predicted"] = triple(v.predicted);
+        x["typical"] = std::isfinite(v.typical) ? py::object(py::float_(v.typical)) : py::object(py::none());
+        x["limit"] = std::isfinite(v.limit) ? py::object(py::float_(v.limit)) : py::object(py::none());
         x["out_of_line"] = v.outOfLine;
         x["reason"] = v.reason;
         datums.append(x);
@@ -142,6 +144,8 @@ py::dict resultDict(const CompensationResult& r) {
     check["note"] = r.check.note;
     check["typical_miss"] = r.check.typicalMiss;
     check["threshold"] = r.check.threshold;
+    check["factor"] = r.check.options.factor;
+    check["minimum"] = r.check.options.minimum;
     check["left_out"] = r.check.leftOut;
     out["check"] = check;
     py::list holes;

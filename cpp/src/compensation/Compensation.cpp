@@ -84,13 +84,13 @@ CompensationResult compensate(CompensationInput input, std::optional<Method> met
 
     for (const auto& d : r.datums) {
         const auto& v = d.verdict;
-        const double limit = r.check.threshold;
-        if (v.use == DatumUse::LeftOut) r.flags.push_back({FlagKind::DatumLeftOut, d.id, v.miss, limit, v.reason});
+        const double off = v.miss, limit = std::isfinite(v.limit) ? v.limit : r.check.threshold;
+        if (v.use == DatumUse::LeftOut) r.flags.push_back({FlagKind::DatumLeftOut, d.id, off, limit, v.reason});
         if (v.use == DatumUse::LeftOutByHand)
-            r.flags.push_back({FlagKind::DatumLeftOutByHand, d.id, v.miss, limit, v.reason});
-        if (v.use == DatumUse::PutBack) r.flags.push_back({FlagKind::DatumPutBack, d.id, v.miss, limit, v.reason});
+            r.flags.push_back({FlagKind::DatumLeftOutByHand, d.id, off, limit, v.reason});
+        if (v.use == DatumUse::PutBack) r.flags.push_back({FlagKind::DatumPutBack, d.id, off, limit, v.reason});
         if (v.use == DatumUse::Used && v.outOfLine)
-            r.flags.push_back({FlagKind::DatumOutOfLineUsed, d.id, v.miss, limit, v.reason});
+            r.flags.push_back({FlagKind::DatumOutOfLineUsed, d.id, off, limit, v.reason});
     }
     for (const auto& h : r.holes) {
         if (h.againstNeighbours)

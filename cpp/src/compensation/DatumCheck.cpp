@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <tuple>
 #include <sstream>
 
 namespace aeronc::compensation {
@@ -34,36 +36,72 @@ double median(std::vector<double> v) {
     return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(h)));
 }
 
+const char* const kAxis[3] = {"X", "Y", "Z"};
+
 struct Miss {
-    double miss = NAN;
+    double miss = NAN;  // the smallest miss over the methods
     std::optional<Method> predictor;
     Vec3 predicted = Vec3::Zero();
 };
 
-// Per datum hole in use: its smallest leave-one-out miss over the methods.
-std::vector<Miss> leaveOneOutMisses(size_t count, const std::vector<LeaveOneOut>& figures) {
-    std::vector<Miss> out(count);
-    for (const auto& f : figures) {
+void take(Miss& m, Method method, const Vec3& predicted, const Vec3& measured) {
+    const double e = (predicted - measured).norm();
+    if (!(e >= m.miss)) m.miss = e, m.predictor = method, m.predicted = predicted;
+}
+
+// The datum holes in use, their leave-one-out and each one's smallest miss over the methods.
+struct Survey {
+    std::vector<size_t> inUse;  // indices into the datums given
+    std::vector<Datum> used;
+    std::vector<LeaveOneOut> figures;
+    std::vector<Miss> misses;
+    double typical = 0.0;
+};
+
+Survey survey(const std::vector<Datum>& datums, std::vector<size_t> inUse) {
+    Survey s;
+    s.inUse = std::move(inUse);
+    for (size_t i : s.inUse) s.used.push_back(datums[i]);
+    s.figures = leaveOneOut(s.used);
+    s.misses.resize(s.used.size());
+    for (const auto& f : s.figures) {
         if (!f.available) continue;
-        for (size_t j = 0; j < count; ++j)
-            if (!(f.errors[j] >= out[j].miss)) out[j] = {f.errors[j], f.method, f.predicted[j]};
+        for (size_t j = 0; j < s.used.size(); ++j) take(s.misses[j], f.method, f.predicted[j], s.used[j].deviation());
     }
+    std::vector<double> finite;
+    for (const auto& m : s.misses)
+        if (std::isfinite(m.miss)) finite.push_back(m.miss);
+    s.typical = median(finite);
+    return s;
+}
+
+std::vector<size_t> without(const std::vector<size_t>& v, size_t i) {
+    std::vector<size_t> out;
+    for (size_t x : v)
+        if (x != i) out.push_back(x);
     return out;
 }
 
-// A datum hole not in `used`: how well the datum holes in use predict it.
+// A datum hole not in use: how well the datum holes in use predict it.
 Miss missFrom(const std::vector<Datum>& used, const Datum& d) {
     Miss best;
     for (Method m : allMethods()) {
         try {
-            const Vec3 p = Compensator(m, used).correction(asHole(d));
-            const double e = (p - d.deviation()).norm();
-            if (!(e >= best.miss)) best.miss = e, best.predictor = m, best.predicted = p;
+            take(best, m, Compensator(m, used).correction(asHole(d)), d.deviation());
         } catch (const Error&) {
             // the datum holes in use do not support this method
         }
     }
     return best;
+}
+
+// The axis the miss mostly lies along, for the message.
+int mainAxis(const Miss& m, const Datum& d) {
+    const Vec3 e = (m.predicted - d.deviation()).cwiseAbs();
+    int axis = 0;
+    for (int c = 1; c < 3; ++c)
+        if (e[c] > e[axis]) axis = c;
+    return axis;
 }
 
 }  // namespace
@@ -77,6 +115,7 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
         throw compensationError("datum check: the factor must be positive, the minimum zero or more and the share "
                                 "of datum holes left out below 1");
     DatumCheck out;
+    out.options = options;
     out.datums.resize(datums.size());
     std::vector<size_t> inUse;  // indices into datums
     for (size_t i = 0; i < datums.size(); ++i) {
@@ -86,81 +125,120 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
         else
             inUse.push_back(i);
     }
-    auto usedDatums = [&] {
-        std::vector<Datum> u;
-        u.reserve(inUse.size());
-        for (size_t i : inUse) u.push_back(datums[i]);
-        return u;
+    const Survey full = survey(datums, inUse);
+    Survey s = full;
+    // The typical miss of the others, surveyed without datum hole i (once per step).
+    std::map<size_t, Survey> others;
+    auto withoutIt = [&](size_t i) -> const Survey& {
+        auto it = others.find(i);
+        if (it == others.end()) it = others.emplace(i, survey(datums, without(s.inUse, i))).first;
+        return it->second;
+    };
+    auto limitOf = [&](double typical) { return std::max(options.factor * typical, options.minimum); };
+    // Out of line among all the datum holes in use at first. Required at every step: once a
+    // reading is left out, the distortion that only it and a neighbour showed can make the
+    // neighbour look out of line in its turn (three datum holes a row, a bend between them).
+    std::map<size_t, bool> outAtFirst;
+    auto outOfLineAtFirst = [&](size_t i) {
+        auto it = outAtFirst.find(i);
+        if (it != outAtFirst.end()) return it->second;
+        const size_t j = static_cast<size_t>(std::find(full.inUse.begin(), full.inUse.end(), i) - full.inUse.begin());
+        const double typical = out.leftOut.empty() ? withoutIt(i).typical : survey(datums, without(full.inUse, i)).typical;
+        return outAtFirst[i] = full.misses[j].miss > limitOf(typical);
+    };
+    // Datum holes in use (positions in s) missed beyond the minimum, most missed first.
+    auto suspects = [&](bool keptToo) {
+        std::vector<size_t> v;
+        for (size_t j = 0; j < s.used.size(); ++j)
+            if (s.misses[j].miss > options.minimum && (keptToo || !keep.count(s.used[j].id))) v.push_back(j);
+        std::stable_sort(v.begin(), v.end(), [&](size_t a, size_t b) { return s.misses[a].miss > s.misses[b].miss; });
+        return v;
     };
 
-    out.used = usedDatums();
-    out.leaveOneOut = leaveOneOut(out.used);
-    std::vector<Miss> misses = leaveOneOutMisses(out.used.size(), out.leaveOneOut);
-    auto measure = [&] {
-        std::vector<double> finite;
-        for (const auto& m : misses)
-            if (std::isfinite(m.miss)) finite.push_back(m.miss);
-        out.typicalMiss = median(finite);
-        out.threshold = std::max(options.factor * out.typicalMiss, options.minimum);
-    };
-    measure();
-
+    std::map<size_t, std::pair<Miss, double>> decided;  // left out: its miss and the others' typical miss
     const size_t maxLeftOut = static_cast<size_t>(std::floor(options.maxShare * static_cast<double>(datums.size())));
     if (!options.enabled) {
         out.note = "datum check off";
-    } else if (inUse.size() < options.minDatums) {
+    } else if (s.used.size() < options.minDatums) {
         std::ostringstream os;
-        os << inUse.size() << " datum holes in use: too few to tell a misread reading (the check needs "
+        os << s.used.size() << " datum holes in use: too few to tell a misread reading (the check needs "
            << options.minDatums << ")";
         out.note = os.str();
     } else {
         out.checked = true;
-        while (out.leftOut.size() < maxLeftOut && inUse.size() > options.minDatums) {
-            // The reading most out of line that the user has not put back.
-            size_t worst = misses.size();
-            for (size_t j = 0; j < misses.size(); ++j) {
-                if (keep.count(datums[inUse[j]].id) || !(misses[j].miss > out.threshold)) continue;
-                if (worst == misses.size() || misses[j].miss > misses[worst].miss) worst = j;
+        bool found = true;
+        while (found && out.leftOut.size() < maxLeftOut && s.used.size() > options.minDatums) {
+            found = false;
+            std::vector<size_t> tried = suspects(false);
+            if (tried.size() > options.candidates) tried.resize(options.candidates);
+            for (size_t j : tried) {
+                const size_t i = s.inUse[j];
+                if (!outOfLineAtFirst(i)) continue;
+                const Survey& rest = withoutIt(i);
+                if (!(s.misses[j].miss > limitOf(rest.typical))) continue;
+                out.datums[i].use = DatumUse::LeftOut;
+                out.leftOut.push_back(datums[i].id);
+                decided[i] = {s.misses[j], rest.typical};  // as it was found, for its reason
+                Survey next = rest;
+                s = std::move(next);
+                others.clear();
+                found = true;
+                break;
             }
-            if (worst == misses.size()) break;
-            const size_t i = inUse[worst];
-            out.datums[i].use = DatumUse::LeftOut;
-            out.leftOut.push_back(datums[i].id);
-            inUse.erase(inUse.begin() + static_cast<std::ptrdiff_t>(worst));
-            out.used = usedDatums();
-            out.leaveOneOut = leaveOneOut(out.used);
-            misses = leaveOneOutMisses(out.used.size(), out.leaveOneOut);
-            measure();
         }
     }
+    out.used = s.used;
+    out.leaveOneOut = s.figures;
+    out.typicalMiss = s.typical;
+    out.threshold = limitOf(s.typical);
 
     // Every datum hole's verdict against the datum holes finally in use.
-    for (size_t j = 0; j < inUse.size(); ++j) {
-        auto& v = out.datums[inUse[j]];
-        v.miss = misses[j].miss;
-        v.predictor = misses[j].predictor;
-        v.predicted = misses[j].predicted;
+    std::vector<Miss> final(datums.size());
+    for (size_t j = 0; j < s.inUse.size(); ++j) final[s.inUse[j]] = s.misses[j];
+    for (size_t i = 0; i < datums.size(); ++i) {
+        if (decided.count(i)) {
+            std::tie(final[i], out.datums[i].typical) = decided[i];
+        } else if (out.datums[i].use == DatumUse::LeftOutByHand) {
+            final[i] = missFrom(s.used, datums[i]);
+            out.datums[i].typical = s.typical;
+        }
+    }
+    if (out.checked) {
+        // Those in use that might be out of line: the ones put back, and the most missed
+        // others (those the check could not leave out any more).
+        std::vector<size_t> look = suspects(true);
+        if (look.size() > options.candidates) {
+            std::vector<size_t> kept;
+            for (size_t k = 0; k < look.size(); ++k)
+                if (k < options.candidates || keep.count(s.used[look[k]].id)) kept.push_back(look[k]);
+            look = kept;
+        }
+        // Out of line now and at first, as the check requires of a reading it leaves out.
+        for (size_t j : look)
+            if (outOfLineAtFirst(s.inUse[j])) out.datums[s.inUse[j]].typical = withoutIt(s.inUse[j]).typical;
     }
     for (size_t i = 0; i < datums.size(); ++i) {
         auto& v = out.datums[i];
-        if (v.use == DatumUse::LeftOut || v.use == DatumUse::LeftOutByHand) {
-            const Miss m = missFrom(out.used, datums[i]);
-            v.miss = m.miss, v.predictor = m.predictor, v.predicted = m.predicted;
-        }
-        v.outOfLine = out.checked && std::isfinite(v.miss) && v.miss > out.threshold;
+        const Miss& m = final[i];
+        v.miss = m.miss, v.predictor = m.predictor, v.predicted = m.predicted;
+        if (std::isfinite(v.typical)) v.limit = limitOf(v.typical);
+        v.outOfLine = out.checked && std::isfinite(v.limit) && m.miss > v.limit;
         if (v.use == DatumUse::Used && v.outOfLine && keep.count(v.id)) v.use = DatumUse::PutBack;
-        const std::string off = std::isfinite(v.miss)
-                                    ? mm(v.miss) + " from where the other datum holes put it (" +
-                                          methodName(*v.predictor) + ")"
-                                    : "no method predicts it from the others";
-        const std::string limit = "; beyond " + mm(out.threshold) + " (" + mm(out.typicalMiss) + " typical)";
+        if (!std::isfinite(m.miss)) {
+            v.reason = "no method predicts it from the others";
+        } else {
+            v.reason = mm(m.miss) + " (mostly along " + kAxis[mainAxis(m, datums[i])] +
+                       ") from where the other datum holes put it (" + methodName(*m.predictor) + ")";
+            if (out.checked && std::isfinite(v.limit))
+                v.reason += "; they are missed by " + mm(v.typical) + " typically, out of line beyond " + mm(v.limit);
+        }
         switch (v.use) {
-            case DatumUse::LeftOut: v.reason = "left out: " + off + limit; break;
-            case DatumUse::LeftOutByHand: v.reason = "left out by hand: " + off; break;
-            case DatumUse::PutBack: v.reason = "put back by hand, used: " + off + limit; break;
+            case DatumUse::LeftOut: v.reason = "left out: " + v.reason; break;
+            case DatumUse::LeftOutByHand: v.reason = "left out by hand: " + v.reason; break;
+            case DatumUse::PutBack: v.reason = "put back by hand, used: " + v.reason; break;
             case DatumUse::Used:
                 // Out of line but still used: the check left out as many as it may.
-                if (v.outOfLine) v.reason = "out of line but used (no more may be left out): " + off + limit;
+                v.reason = v.outOfLine ? "out of line but used (no more may be left out): " + v.reason : "";
                 break;
         }
     }

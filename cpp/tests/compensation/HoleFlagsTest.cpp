@@ -64,7 +64,7 @@ TEST(HoleFlags, FlagsSayWhatToLookAtAndWhy) {
     EXPECT_EQ(r.flags.front().kind, FlagKind::DatumLeftOut);
     EXPECT_EQ(r.flags.front().id, datumId(bad));
     EXPECT_EQ(flagKindName(r.flags.front().kind), "datum left out");
-    EXPECT_NE(r.flags.front().reason.find("mm from where the other datum holes put it"), std::string::npos);
+    EXPECT_NE(r.flags.front().reason.find(") from where the other datum holes put it"), std::string::npos);
     int beyond = 0, against = 0;
     for (const auto& f : r.flags) {
         beyond += f.kind == FlagKind::BeyondTolerance;

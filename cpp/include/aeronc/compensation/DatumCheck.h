@@ -7,13 +7,20 @@
 // the other datum holes predict for it, by the method that predicts it best (the leave-one-out
 // of every method, Compensator.h). A misread reading is missed by every method. A real
 // distortion is followed by at least one method: a bend by the spline, an offset by the fits.
-// The typical miss is the median over the datum holes in use; the camera noise makes it (with
-// noise sigma per coordinate, the miss of a clean reading is about 1.6 sigma). A reading is
-// left out when its miss is larger than `factor` times the typical miss and larger than
-// `minimum`. The worst reading goes first. Then the others are checked again without it,
-// because a misread reading pulls the predictions of its neighbours. This stops when no
-// reading is out of line, or when `maxShare` of the datum holes are out. Every step is
-// deterministic: ties go to the datum hole given first.
+// The typical miss of a set of datum holes is the median of their misses; the camera noise
+// makes it (with a noise of sigma per coordinate, about 1.6 sigma).
+//
+// A reading is out of line when its miss is larger than `minimum` and larger than `factor`
+// times the typical miss of the others, the others taken without it. Without it: a misread
+// reading pulls the predictions of its neighbours (of every hole, for a best fit), and with
+// few datum holes it would raise the typical miss above its own. The readings most missed
+// (at most `candidates` of them, beyond `minimum`) are tried in turn; the first out of line
+// is left out, and the others are checked again without it. A reading left out at a later
+// step must also have been out of line among all the datum holes at the start: with three
+// datum holes a row, a bend shown by a middle one and its neighbour would otherwise make the
+// neighbour look out of line once the first is gone. This stops when none is out of line, or
+// when `maxShare` of the datum holes are out. Every step is deterministic: ties go to the
+// datum hole given first.
 //
 // The user has the last word. A datum hole put back (`keep`) is never left out, but it is still
 // flagged when it disagrees. A datum hole left out by hand (`drop`) is never used.
@@ -28,10 +35,11 @@ namespace aeronc::compensation {
 
 struct DatumCheckOptions {
     bool enabled = true;
-    double factor = 5.0;    // a reading is out of line beyond this many typical misses...
-    double minimum = 0.05;  // ...and beyond this many mm: what a camera and a fixture never explain
+    double factor = 5.0;    // a reading is out of line beyond this many typical misses of the others...
+    double minimum = 0.05;  // ...and beyond this many mm
     double maxShare = 0.25;  // never leave out more than this share of the datum holes
     size_t minDatums = 6;    // fewer datum holes in use: too few to tell a misread reading
+    size_t candidates = 4;   // readings tried per step (each costs a leave-one-out of the others)
 };
 
 enum class DatumUse {
@@ -50,7 +58,9 @@ struct DatumVerdict {
     double miss = 0.0;
     std::optional<Method> predictor;
     Vec3 predicted = Vec3::Zero();  // that prediction of its deviation
-    bool outOfLine = false;         // miss beyond the threshold
+    double typical = NAN;  // the typical miss of the datum holes in use without it, mm (NaN: not needed)
+    double limit = NAN;    // max(factor x typical, minimum), mm
+    bool outOfLine = false;  // miss beyond the limit
     std::string reason;             // why it is left out or flagged; empty for an agreeing one
 };
 
@@ -59,6 +69,7 @@ struct DatumCheck {
     std::string note;
     double typicalMiss = 0.0;  // median miss over the datum holes in use, mm
     double threshold = 0.0;    // max(factor x typicalMiss, minimum), mm
+    DatumCheckOptions options;  // those it was checked with, for the report
     std::vector<DatumVerdict> datums;      // in the order given
     std::vector<Datum> used;               // the datum holes the compensation uses, in the order given
     std::vector<LeaveOneOut> leaveOneOut;  // every method's leave-one-out over `used`
