@@ -84,7 +84,7 @@ class MeasuredHoleSet(BaseProxy):
                          "Leave out datum readings out of line with the others", True)
         declare_property(obj, "App::PropertyFloat", "OutOfLineFactor", g,
                          "A reading is out of line when the other datum holes predict it worse than this many "
-                         "times the typical (median) miss...", 5.0)
+                         "times the typical (median) miss of the others...", 5.0)
         declare_property(obj, "App::PropertyLength", "OutOfLineMinimum", g, "...and worse than this", 0.05)
         declare_property(obj, "App::PropertyStringList", "PutBack", g,
                          "Datum holes put back: used although out of line")
@@ -118,7 +118,11 @@ class MeasuredHoleSet(BaseProxy):
             obj.LeftOut = left_out
             obj.DatumFlags = flags
             for line in flags:  # said once, when they change
-                FreeCAD.Console.PrintWarning("AeroNC: {}: datum hole {}\n".format(obj.Label, line))
+                console_warning("AeroNC: {}: datum hole {}\n".format(obj.Label, line))
+
+
+def console_warning(text):
+    FreeCAD.Console.PrintWarning(text)
 
 
 def datum_flag_lines(result):

@@ -1,8 +1,8 @@
 """View provider of the compensated drilling operation: Path draws its moves; this draws each
 drilled hole's correction as an arrow from its nominal position (blue, as long as the measured
 set's ArrowScale makes the datum deviations), rings round the flagged holes (orange: beyond the
-tolerance; red, named: against their neighbours' corrections), gives the operation its icon and
-opens its measurements' panel on a double-click."""
+tolerance; red, filled: against their neighbours' corrections; the Flags list names them), gives
+the operation its icon and opens its measurements' panel on a double-click."""
 import json
 
 import FreeCAD
@@ -64,14 +64,12 @@ class ViewCompensatedDrilling(BaseView):
         self.drawn = len(heads)
         self.corrections.addChild(arrows.coloured(CORRECTION, *heads, line_width=2))
         beyond = [a for a, _, h in drawn if h["exceeds_tolerance"]]
-        against = [(a, h["id"]) for a, _, h in drawn if h["against_neighbours"]]
+        against = [a for a, _, h in drawn if h["against_neighbours"]]
         self.rings = (len(beyond), len(against))
         if beyond:
             self.flagged.addChild(arrows.coloured(BEYOND, arrows.markers(beyond, "CIRCLE_LINE_9_9")))
         if against:
-            self.flagged.addChild(arrows.coloured(
-                AGAINST, arrows.markers([a for a, _ in against], "CIRCLE_LINE_9_9"),
-                *[arrows.label(a, hid) for a, hid in against], point_size=11))
+            self.flagged.addChild(arrows.coloured(AGAINST, arrows.markers(against, "CIRCLE_FILLED_9_9")))
 
     def correction_count(self):
         """Correction arrows drawn (a hole without a correction draws none)."""
