@@ -176,8 +176,12 @@ def html_page(data, png):
               _v(h["compensated"]), data["method"], "; ".join(h["flags"]), h["note"]) for h in data["holes"]]
     flags = [(f["id"], f["kind"], f["reason"]) for f in data["flags"]]
     check = data.get("check") or {}
-    check_text = ("Typical miss {:.4f} mm: a datum reading is out of line beyond {:.4f} mm.".format(
-        check["typical_miss"], check["threshold"]) if check.get("checked") else
+    # Each reading is judged against the typical miss of the others, taken without it (its own
+    # limit is in its "why"); the figures here are those of the datum holes finally in use.
+    check_text = ("The datum holes in use miss their predictions by {:.4f} mm typically; a reading is out of "
+                  "line when it misses by more than {:g} times the others' typical miss (about {:.4f} mm) and "
+                  "by more than {:g} mm.".format(check["typical_miss"], check["factor"], check["threshold"],
+                                                 check["minimum"]) if check.get("checked") else
         "Datum readings not checked: {}.".format(check.get("note", "no measurements")))
     fit = data.get("fit") or {}
     fit_text = ""
