@@ -12,6 +12,7 @@ saved by ordering, and the elements the chain does not machine (with the reason)
 Nothing is written until OK: OK makes or updates the chain's Jobs and operations in one undo
 step; Cancel leaves the document as it was.
 """
+import html
 import traceback
 
 import FreeCAD
@@ -57,6 +58,7 @@ class MachiningChainPanel:
         self.checked = True    # the shown checks belong to the shown chain
         self.chain = None
         self.notes = []
+        self.refused = {}  # unit JSON -> the toolpath core's reason or None: computed once per unit
         self.form = self._build_form()
         MachiningChainPanel.current = self
         self._restore_dock = lambda: None
@@ -101,6 +103,19 @@ class MachiningChainPanel:
         self.summary = QtGui.QLabel("")
         self.summary.setWordWrap(True)
         lay.addWidget(self.summary)
+        # What is not machined and what the posts refuse sit right under the summary, each tab
+        # titled with its count: below the tree they were out of sight.
+        self.findings = QtGui.QTabWidget()
+        self.unmachined = QtGui.QListWidget()
+        self.not_ready = QtGui.QListWidget()
+        self.checks = QtGui.QListWidget()
+        for lst in (self.unmachined, self.not_ready, self.checks):
+            lst.setWordWrap(True)
+            self.findings.addTab(lst, "")
+        self.findings.setMinimumHeight(130)
+        self.findings.setMaximumHeight(180)
+        self._title_findings()
+        lay.addWidget(self.findings, 1)
 
         self.tree = QtGui.QTreeWidget()
         self.tree.setColumnCount(len(COLUMNS))
@@ -129,14 +144,6 @@ class MachiningChainPanel:
         self.travel = QtGui.QLabel("")
         self.travel.setWordWrap(True)
         lay.addWidget(self.travel)
-        lay.addWidget(QtGui.QLabel("Construction rules"))
-        self.checks = QtGui.QListWidget()
-        self.checks.setMaximumHeight(100)
-        lay.addWidget(self.checks, 1)
-        lay.addWidget(QtGui.QLabel("Not machined"))
-        self.unmachined = QtGui.QListWidget()
-        self.unmachined.setMaximumHeight(70)
-        lay.addWidget(self.unmachined, 1)
         return w
 
     # -- building -----------------------------------------------------------------------------
@@ -199,6 +206,7 @@ class MachiningChainPanel:
         self.tree.clear()
         units = chain_edits.units_by_id(chain)
         times = self._times()
+        not_ready = self.not_ready_units()
         part = self.group.Source.Label if self.group is not None and self.group.Source is not None else "part"
         root = QtGui.QTreeWidgetItem(self.tree, ["Part {}".format(part)])
         machine = QtGui.QTreeWidgetItem(root, ["Machine {}".format(chain.get("machine", ""))])
@@ -218,7 +226,7 @@ class MachiningChainPanel:
                             unit = units.get(int(uid))
                             if unit is None:
                                 continue
-                            item = self._unit_item(t_item, unit, times.get(int(uid), ""))
+                            item = self._unit_item(t_item, unit, times.get(int(uid), ""), not_ready.get(int(uid)))
                             if select is not None and int(uid) == select:
                                 selected_item = item
         self.tree.expandAll()
@@ -230,11 +238,7 @@ class MachiningChainPanel:
             self.tree.setCurrentItem(selected_item)
             self.tree.scrollToItem(selected_item)
         self._selection_changed()
-        total = len(units)
-        disabled = sum(1 for u in units.values() if not u.get("enabled", True))
-        self.summary.setText("{} units in {} setups{}{}.".format(
-            total, len(chain.get("setups", [])), "; {} disabled".format(disabled) if disabled else "",
-            "; " + "; ".join(self.notes) if self.notes else ""))
+        self.summary.setText(self._summary_text(chain, units, not_ready))
         travel = chain.get("travel") or {}
         if travel:
             self.travel.setText("Rapid travel: {:.0f} mm in the rules' order, {:.0f} mm ordered; {:.1f} % saved."
@@ -247,17 +251,100 @@ class MachiningChainPanel:
             self.unmachined.addItem(item)
         if not chain.get("unmachined"):
             self.unmachined.addItem("Every element has a unit.")
+        self.not_ready.clear()
+        for uid, why in sorted(not_ready.items()):
+            item = QtGui.QListWidgetItem("\u2718 Unit {} ({}): {}".format(uid, mc.operation_label(units[uid]), why)
+                                        if uid in units else "\u2718 Unit {}: {}".format(uid, why))
+            item.setForeground(QtGui.QBrush(QtGui.QColor(RED)))
+            item.setToolTip(why)
+            self.not_ready.addItem(item)
+        if not not_ready:
+            self.not_ready.addItem("Every enabled unit has a toolpath.")
         self._fill_checks()
+        # The first tab with something to look at comes to the front.
+        for k, n in enumerate((len(self._unmachined_elements(chain)), len(not_ready))):
+            if n:
+                self.findings.setCurrentIndex(k)
+                break
 
-    def _unit_item(self, parent, unit, est):
+    def _recognised_elements(self):
+        """The ids of the group's elements: one the chain neither machines nor lists still counts."""
+        from aeronc.objects.machining_features import result_of
+        try:
+            return {e.get("id") for e in result_of(self.group).get("elements", [])}
+        except Exception:  # no group or no stored result: count what the chain names
+            return set()
+
+    @staticmethod
+    def _unmachined_elements(chain):
+        return {e.get("element") for e in (chain or {}).get("unmachined", [])}
+
+    def _summary_text(self, chain, units, not_ready):
+        """Rich text: elements machined and not, units and setups, units the posts refuse; the
+        counts that need a look in red."""
+        left = self._unmachined_elements(chain)
+        machined = {u.get("element") for u in units.values()}
+        elements = len(machined | left | self._recognised_elements())
+        whole = left - machined
+        setups = len(chain.get("setups", []))
+        disabled = sum(1 for u in units.values() if not u.get("enabled", True))
+        parts = ["<b>{} of {} elements machined</b> by {} unit{} in {} setup{}".format(
+            len(machined), elements, len(units), "" if len(units) == 1 else "s",
+            setups, "" if setups == 1 else "s")]
+        if whole:
+            parts.append("<span style='color:{}'><b>{} not machined</b></span>".format(RED, len(whole)))
+        partly = left & machined
+        if partly:
+            parts.append("<span style='color:{}'>{} with faces left</span>".format(RED, len(partly)))
+        if not_ready:
+            parts.append("<span style='color:{}'><b>{} unit{} not ready</b> (the posts refuse {})</span>".format(
+                RED, len(not_ready), "" if len(not_ready) == 1 else "s", "it" if len(not_ready) == 1 else "them"))
+        if disabled:
+            parts.append("{} disabled".format(disabled))
+        parts += [html.escape(str(n)) for n in self.notes]
+        return "; ".join(parts) + ".{}".format(" Reasons in the tabs below." if (left or not_ready) else "")
+
+    def not_ready_units(self):
+        """{unit id: why} of the enabled units that would get no toolpath (the toolpath core
+        refuses them), and of the operations already made whose check failed or that have no
+        toolpath (their Check and Note), while the chain is the one they were made from."""
+        import json
+        from aeronc.post import readiness
+        out = {}
+        if self.chain is None:
+            return out
+        units = [u for u in self.chain.get("units", []) if u.get("enabled", True)]
+        fresh = [u for u in units if json.dumps(u, sort_keys=True) not in self.refused]
+        if fresh:
+            found = mc.draft_refusals({"units": fresh})
+            for u in fresh:
+                self.refused[json.dumps(u, sort_keys=True)] = found.get(int(u["id"]))
+        for u in units:
+            why = self.refused.get(json.dumps(u, sort_keys=True))
+            if why:
+                out[int(u["id"])] = "no toolpath: " + why
+        if self.chain_obj is not None and not self.rebuilt:
+            enabled = {int(u["id"]) for u in units}
+            for op in mc.chain_operations(self.chain_obj):
+                if op.UnitId in enabled and op.UnitId not in out and getattr(op, "Check", "") in readiness.NOT_READY:
+                    out[op.UnitId] = op.Note or op.Check
+        return out
+
+    def _unit_item(self, parent, unit, est, not_ready=None):
         item = QtGui.QTreeWidgetItem(parent, [
-            "Unit {}".format(unit["id"]), str(unit.get("element", "")), str(unit.get("operation", "")),
-            str(unit.get("tool", "")), _mm(unit.get("top")), _mm(unit.get("bottom")),
+            "Unit {}{}".format(unit["id"], " \u2718 not ready" if not_ready else ""), str(unit.get("element", "")),
+            str(unit.get("operation", "")), str(unit.get("tool", "")), _mm(unit.get("top")), _mm(unit.get("bottom")),
             _mm(unit.get("radialAllowance")), _mm(unit.get("axialAllowance")), est or ""])
         item.setData(0, UNIT_ROLE, int(unit["id"]))
         item.setFlags(item.flags() | QtCore.Qt.ItemIsUserCheckable)
         item.setCheckState(0, QtCore.Qt.Checked if unit.get("enabled", True) else QtCore.Qt.Unchecked)
-        item.setToolTip(0, "Untick to leave the unit out of the program")
+        if not_ready:
+            for c in range(len(COLUMNS)):
+                item.setForeground(c, QtGui.QBrush(QtGui.QColor(RED)))
+            item.setToolTip(0, "Not ready: {}. The posts refuse it (or leave it out with --skip-failed); change "
+                               "its tool or untick it".format(not_ready))
+        else:
+            item.setToolTip(0, "Untick to leave the unit out of the program")
         return item
 
     def unit_items(self):
@@ -296,6 +383,17 @@ class MachiningChainPanel:
             combo.currentIndexChanged.connect(lambda _i, u=uid, c=combo: self.set_tool(u, c.currentText()))
             self.tree.setItemWidget(item, TOOL_COLUMN, combo)
 
+    def _title_findings(self):
+        """Each tab's title with its count, so the numbers show even on the tab behind."""
+        left = len(self._unmachined_elements(self.chain)) if getattr(self, "chain", None) else 0
+        refused = sum(1 for i in range(self.not_ready.count()) if self.not_ready.item(i).text().startswith("\u2718"))
+        broken = sum(1 for c in (getattr(self, "chain", None) or {}).get("checks", []) if not c.get("ok", True))
+        self.findings.setTabText(0, "Not machined ({})".format(left))
+        self.findings.setTabText(1, "Not ready ({})".format(refused))
+        self.findings.setTabText(2, "Construction rules" + (" ({} broken)".format(broken) if broken else ""))
+        for k, n in enumerate((left, refused, broken)):
+            self.findings.tabBar().setTabTextColor(k, QtGui.QColor(RED if n else "#000000"))
+
     def _fill_checks(self):
         self.checks.clear()
         if not self.checked:
@@ -311,6 +409,7 @@ class MachiningChainPanel:
                 item.setForeground(QtGui.QBrush(QtGui.QColor(RED)))
             item.setToolTip(c.get("message", ""))
             self.checks.addItem(item)
+        self._title_findings()
 
     # -- the user's edits -----------------------------------------------------------------------
     def selected_unit(self):

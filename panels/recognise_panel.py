@@ -41,13 +41,13 @@ show_error = error_reporter("recognition failed")  # tests may replace it
 LEGEND = [("floor", "floor"), ("wall", "wall"), ("island_wall", "island wall"), ("hole_wall", "hole"),
           ("floor_fillet", "floor fillet"), ("corner_fillet", "corner fillet"), ("counterbore_floor", "counterbore floor"),
           ("countersink", "countersink"), ("chamfer", "chamfer"), ("open_bevel", "open bevel"),
-          ("closed_bevel", "closed bevel"), ("rib_top", "rib top"), ("top", "top"), ("stock", "stock (blank surface)"),
+          ("closed_bevel", "closed bevel"), ("rib_top", "rib top"), ("top", "top"), ("stock", "stock surface"),
           ("unclaimed", "no element")]
 
 
 def colour_legend():
-    """The legend of the role colours of the 3-D view, two columns of swatches; a face painted
-    in FreeCAD's selection colour belongs to the element selected in the tree."""
+    """The legend of the role colours of the 3-D view, one swatch per row (two columns do not
+    fit the default combo view); a face painted green belongs to the element selected in the tree."""
     from aeronc.feature_colours import ROLE_COLOURS
     box = QtGui.QGroupBox("Face colours")
     grid = QtGui.QGridLayout(box)
@@ -59,10 +59,9 @@ def colour_legend():
         swatch.setFixedSize(14, 14)
         swatch.setStyleSheet("background-color: rgb({},{},{}); border: 1px solid #555;".format(r, g, b))
         label = QtGui.QLabel(text)
-        grid.addWidget(swatch, k // 2, 2 * (k % 2))
-        grid.addWidget(label, k // 2, 2 * (k % 2) + 1)
+        grid.addWidget(swatch, k, 0)
+        grid.addWidget(label, k, 1)
     grid.setColumnStretch(1, 1)
-    grid.setColumnStretch(3, 1)
     return box
 
 
@@ -229,7 +228,9 @@ class RecognisePanel:
             dialog.deleteLater()
         text = recognition.summary_text(objects.result_of(group))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {}\n".format(self.part.Label, text))
-        FreeCADGui.getMainWindow().statusBar().showMessage("AeroNC: " + text, 15000)
+        # After the console's warnings, which reach the status bar through queued events.
+        bar = FreeCADGui.getMainWindow().statusBar()
+        QtCore.QTimer.singleShot(100, lambda: bar.showMessage("AeroNC: " + text, 15000))
         self.status.setText(text)
         self.result_group = group
         return group

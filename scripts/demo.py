@@ -9,7 +9,8 @@ one Path Job per setup -> Sinumerik 840D and LinuxCNC programs -> the LinuxCNC p
 by LinuxCNC's interpreter and simulated against the blank -> pictures and report.html, all in
 AERONC_OUT (see aeronc/runs/main_job.py for the list). AERONC_PART=<file.step> runs the same on
 another part; AERONC_MATERIAL, AERONC_MACHINE, AERONC_FAMILY and AERONC_CELL (the verification's
-cell size, mm) change the defaults (7050-T7451, AC-5AX, integral_panel, 0.5). Exit code 0 on success, 1 with the failed stage named.
+cell size, mm) change the defaults (7050-T7451, AC-5AX, integral_panel, 0.5); AERONC_PICTURES=0 skips the
+pictures (the corpus test). Exit code 0 on success, 1 with the failed stage named.
 """
 import os
 
@@ -35,7 +36,7 @@ def main():
                      material=os.environ.get("AERONC_MATERIAL", "7050-T7451"),
                      machine=os.environ.get("AERONC_MACHINE", "AC-5AX"),
                      family=os.environ.get("AERONC_FAMILY", "integral_panel"),
-                     cell_size=cell)
+                     cell_size=cell, pictures=os.environ.get("AERONC_PICTURES", "1") != "0")
     except AeroNCError as e:  # a stage failed for a reason the user can act on: one line, no traceback
         print("main job failed: {}".format(e), file=sys.stderr)
         sys.stderr.flush()

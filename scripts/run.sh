@@ -4,6 +4,9 @@
 # into build/stage/AeroNC.
 #
 #   scripts/run.sh demo      the main job on the embedded sample part -> out/demo/
+#   scripts/run.sh corpus    the main job on every STEP part of ../shared/data -> out/corpus/summary.md
+#                            and .json (AERONC_CELL: the verification's cell, default 1.0 mm; extra
+#                            arguments go to scripts/corpus.py, e.g. --parts milled_004 --mfcad)
 #   scripts/run.sh post      the 5-axis posts on the sample panel -> out/post/
 #   scripts/run.sh drill     datum holes and compensated drilling of a generated wing skin -> out/drill/
 #   scripts/run.sh impeller  a generated 2 x 9 impeller programmed in FreeCAD -> out/impeller/:
@@ -43,6 +46,11 @@ case "${1:-}" in
     HOME=$(fc_home demo) AERONC_OUT=$out freecadcmd "$ROOT/scripts/demo.py" 2>&1 |
       awk '!/^(FreeCAD [0-9]|\(c\) Juergen|FreeCAD is free|FreeCAD wouldn.t be possible)/ && !/^[# ]+$/'
     ;;
+  corpus)
+    shift
+    HOME=$(fc_home corpus) python3 "$ROOT/scripts/corpus.py" --out "$ROOT/out/corpus" \
+      --cell "${AERONC_CELL:-1.0}" "$@"
+    ;;
   post)
     out=$ROOT/out/post
     mkdir -p "$out"
@@ -76,7 +84,7 @@ case "${1:-}" in
     echo "AeroNC installed into $dest/AeroNC; start FreeCAD and switch to the Path workbench"
     ;;
   *)
-    echo "usage: scripts/run.sh demo|drill|post|impeller|test|bench|install" >&2
+    echo "usage: scripts/run.sh demo|corpus|drill|post|impeller|test|bench|install" >&2
     exit 2
     ;;
 esac

@@ -5,9 +5,10 @@
   set_step_allowance / set_allowance     and the program posted again
   update(program, edits, allowance)      the same for any set of edits
 
-compute() does all the work (recognition, dimensions, blank, route from the knowledge base,
-cutting data from the cutting-parameter optimiser, 5-axis toolpaths with their gouge and holder
-checks, docs/impeller.md) without touching the document; the document is then changed in one
+compute() does all the work (recognition, dimensions, blank, route from the knowledge base; then
+the core's one impeller program, _core.impeller_program as `aeronc impeller-program` makes it:
+5-axis toolpaths with their gouge and holder checks, and cutting data from the cutting-parameter
+optimiser, docs/impeller.md) without touching the document; the document is then changed in one
 transaction, the program posted inside it, so a failure anywhere (not an impeller, unequal
 blade groups, missing hub, no tool fits, the post refuses a move) leaves the document as it
 was. The posted 840D program is kept in the program object and written next to the saved
@@ -54,9 +55,6 @@ NOT_POSTED_NOTE = {
             "limits): checked, not posted with the first setup's program",
 }
 NO_PATH_NOTE = "no toolpath: {}"
-# Optimiser settings as the Optimise cutting command's (aeronc.pipeline.cutting_optimisation).
-ROUGHING_RA_MAX_UM = 12.5
-CHIP_LOAD_FACTOR = 1.5
 
 
 def _core():
@@ -113,63 +111,6 @@ def _steps_with_tools(route, edits, kb_path):
     return steps
 
 
-# --- Cutting data from the optimiser ------------------------------------------------------------
-
-def cutting_data(kb, material, machine, step, a_p, a_e, length):
-    """Spindle speed and feeds of a step's tool from the cutting-parameter optimiser (the same
-    model and limits as Optimise cutting): {rpm, feed, plungeFeed, fz, ap, ae, length, summary}."""
-    tool = step["tool"]
-    operation = "roughing" if step["operation"] == "rough_channels" else "finishing"
-    d = float(tool["diameter"])
-    teeth = int(tool.get("flutes") or 0)
-    if teeth < 1:
-        raise ImpellerError("tool {}: no number of flutes in the knowledge base".format(tool["id"]))
-    with from_core(ImpellerError, "cutting data of {}".format(tool["id"])):
-        condition = kb.cutting_condition(material, tool.get("material") or "carbide", operation, d)
-        params = {
-            "name": "{} {}".format(step["operation"], tool["id"]),
-            "kb": {"workpiece_material": material, "tool_material": tool.get("material") or "carbide",
-                   "operation": operation, "machine": machine},
-            "cutter": {"diameter_mm": d, "teeth": teeth, "corner_radius_mm": d / 2,
-                       "max_chip_load_mm": CHIP_LOAD_FACTOR * condition["fz"],
-                       "source": "knowledge base tool {} (ball radius; chip load {:g} x the knowledge base's f_z)"
-                       .format(tool["id"], CHIP_LOAD_FACTOR)},
-            "cut": {"length_mm": max(length, 1.0), "a_p_mm": a_p, "a_e_mm": min(a_e, d),
-                    "source": "impeller toolpaths of step {}".format(step["position"])},
-            "economics": {"t_0_min": 1.0, "c_0_per_min": 1.0, "c_t_per_tool_life": 40.0, "w_time": 0.5,
-                          "w_cost": 0.5},
-        }
-        if operation == "roughing":
-            params["quality"] = {"ra_max_um": ROUGHING_RA_MAX_UM}
-        _, result = _core().optimise_cutting_in(kb, json.dumps(params), "nlopt", 1, 0)
-        best = json.loads(result)["deterministic"]["optimum"]
-        ratio = kb.threshold("plunge_feed_ratio")
-    return {"tool": tool["id"], "operation": operation, "rpm": best["n_rpm"], "feed": best["v_f_mm_min"],
-            "plungeFeed": best["v_f_mm_min"] * ratio, "fz": best["f_z_mm"], "ap": a_p, "ae": min(a_e, d),
-            "length": length, "active": best.get("active", []),
-            "kbFz": condition["fz"], "kbVc": condition.get("vc")}
-
-
-def kb_cutting_data(kb, material, machine, step, length):
-    """Speeds of a facing, drilling or boring tool from the knowledge base's cutting conditions
-    (v_c, f_z), capped at the machine's spindle and feed limits: these steps are single plain
-    passes, left to the knowledge base as the command line does."""
-    from aeronc.post import machines
-    tool = step["tool"]
-    d = float(tool["diameter"])
-    operation = {"face": "roughing", "drill": "drilling"}.get(step["operation"], "finishing")
-    limits = json.loads(machines.load(machine)[0])
-    with from_core(ImpellerError, "cutting data of {}".format(tool["id"])):
-        condition = kb.cutting_condition(material, tool.get("material") or "carbide", operation, d)
-        ratio = kb.threshold("plunge_feed_ratio")
-    rpm = min(1000.0 * condition["vc"] / (math.pi * d), float(limits.get("maxSpindleSpeed") or 1e9))
-    teeth = max(int(tool.get("flutes") or 1), 1)
-    feed = min(condition["fz"] * teeth * rpm, float(limits.get("maxFeed") or 1e9))
-    return {"tool": tool["id"], "operation": operation, "rpm": rpm, "feed": feed, "plungeFeed": feed * ratio,
-            "fz": feed / (teeth * rpm), "ap": 0.0, "ae": d, "length": length, "active": ["knowledge base"],
-            "kbFz": condition["fz"], "kbVc": condition.get("vc")}
-
-
 # --- The computation, without the document -------------------------------------------------------
 
 class Computed:
@@ -180,7 +121,7 @@ class Computed:
         self.blank = None       # Part shape
         self.route = None       # as planned by the knowledge base
         self.steps = None       # with the edits
-        self.paths = None       # the core's toolpaths JSON: operations, check
+        self.paths = None       # the core's program JSON: operations, check, rapids, axial, toolNumbers
         self.cutting = {}       # tool id -> cutting data of its ToolController
         self.settings = {}
         self.seconds = {}       # stage -> seconds: recognise (with blank and route), toolpaths, cutting
@@ -199,75 +140,15 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
     c.seconds["recognise"] = time.perf_counter() - t0
     c.route = route or c.result["route"]
     c.steps = _steps_with_tools(c.route, edits, kb_path)
-    by_op = {s["operation"]: s for s in c.steps}
-    rough, blades = by_op.get("rough_channels"), by_op.get("finish_blades")
-    if rough is None or blades is None or not rough.get("tool") or not blades.get("tool"):
-        raise ImpellerError("the impeller route has no channel roughing or no blade finishing step with a tool")
-    numbers = _tool_numbers(c.steps)
-    request = {
-        # Speeds are not part of the geometry: the optimiser sets them once the cut is known.
-        "rougher": {"tool": rough["tool"]["id"], "number": numbers[rough["position"]], "rpm": 1.0, "feed": 1.0},
-        "finisher": {"tool": blades["tool"]["id"], "number": numbers[blades["position"]], "rpm": 1.0, "feed": 1.0},
-        "options": {"roughAllowance": float(rough["allowance"]), "stations": int(stations), "channels": int(channels)},
-    }
-    fillets = by_op.get("finish_fillets")
-    if fillets is not None and fillets.get("tool"):
-        request["filletBall"] = {"tool": fillets["tool"]["id"], "number": numbers[fillets["position"]],
-                                 "rpm": 1.0, "feed": 1.0}
-    axial = {}
-    for op, key in (("face", "faceMill"), ("drill", "drill"), ("bore", "boringMill")):
-        s = by_op.get(op)
-        if s is not None and s.get("tool"):
-            axial[key] = {"tool": s["tool"]["id"], "number": numbers[s["position"]], "rpm": 1.0, "feed": 1.0}
-    if "drill" in by_op:
-        axial["drillAllowance"] = float(by_op["drill"].get("allowance") or 0.0)
-    request["axial"] = axial
+    request = {"steps": c.steps, "material": material, "machine": machine,
+               "options": {"stations": int(stations), "channels": int(channels)}}
     shape, label = part_obj.Shape, part_obj.Label
-    t0 = time.perf_counter()
     with from_core(ImpellerError, label):
-        c.paths = json.loads(_core().impeller_toolpaths(shape.exportBrepToString(),
-                                                        kb_path or knowledge_base.user_kb_path(),
-                                                        knowledge_base.sql_folder(), json.dumps(request)))
-    c.seconds["toolpaths"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    kb = knowledge_base.open_kb(kb_path)
-    if material not in kb.workpiece_materials():
-        raise ImpellerError("unknown workpiece material {!r}; the knowledge base has {}".format(
-            material, ", ".join(kb.workpiece_materials())))
-    dims = c.result["dimensions"]
-    ops = {o["name"]: o for o in c.paths["operations"] + (c.paths.get("axial") or {}).get("operations", [])}
-    # One ToolController per tool: one set of speeds serves every step it cuts, so the deepest
-    # and the widest engagement of its steps meet the limits (as Optimise cutting does).
-    cuts = {}
-    for s in c.steps:
-        if s["operation"] in ("face", "drill", "bore") and s["operation"] in ops and s.get("tool"):
-            data = kb_cutting_data(kb, material, machine, s, _cut_length(ops[s["operation"]]["moves"]))
-            data["steps"] = [s["position"]]
-            c.cutting.setdefault(s["tool"]["id"], data)
-            continue
-        if s["operation"] not in FIVE_AXIS_STEPS or s["operation"] not in ops:
-            continue
-        tool = path_tool(s, c.steps)
-        d = float(tool["diameter"])
-        if s["operation"] == "rough_channels":
-            a_p, a_e = 2.0, 0.6 * d  # the core's layer depth and lane step (PathOptions)
-        elif s["operation"] == "finish_blades":
-            a_p, a_e = float(dims["bladeHeight"]), float(rough["allowance"])  # flank: the wall's height
-        elif s["operation"] == "finish_fillets":
-            a_p, a_e = float(dims["filletRadius"]), float(rough["allowance"])  # the fillet's arc, its stock
-        else:
-            a_p, a_e = float(rough["allowance"]), 1.0  # hub: the roughing's stock, 1 mm between lanes
-        cut = cuts.setdefault(tool["id"], {"step": dict(s, tool=tool), "ap": 0.0, "ae": 0.0, "length": 0.0,
-                                           "steps": []})
-        cut["ap"], cut["ae"] = max(cut["ap"], a_p), max(cut["ae"], a_e)
-        cut["length"] += _cut_length(ops[s["operation"]]["moves"])
-        cut["steps"].append(s["position"])
-    for tool_id, cut in cuts.items():
-        data = cutting_data(kb, material, machine, cut["step"], max(cut["ap"], 0.05), max(cut["ae"], 0.05),
-                            cut["length"])
-        data["steps"] = cut["steps"]
-        c.cutting[tool_id] = data
-    c.seconds["cutting"] = time.perf_counter() - t0
+        c.paths = json.loads(_core().impeller_program(shape.exportBrepToString(),
+                                                      kb_path or knowledge_base.user_kb_path(),
+                                                      knowledge_base.sql_folder(), json.dumps(request)))
+    c.cutting = {d["tool"]: d for d in c.paths.pop("cutting")}
+    c.seconds.update(c.paths.pop("seconds"))
     return c
 
 
@@ -277,18 +158,6 @@ def path_tool(step, steps):
     if step["operation"] == "finish_hub":
         return next(s for s in steps if s["operation"] == "finish_blades")["tool"]
     return step["tool"]
-
-
-def _tool_numbers(steps):
-    """Tool numbers in route order, one per distinct tool."""
-    numbers, by_tool = {}, {}
-    for s in steps:
-        tool = s.get("tool")
-        if not tool:
-            continue
-        by_tool.setdefault(tool["id"], len(by_tool) + 1)
-        numbers[s["position"]] = by_tool[tool["id"]]
-    return numbers
 
 
 def _cut_length(moves):
@@ -453,7 +322,7 @@ def _route_paths(steps, paths, axis):
 
 
 def _operations(doc, job, steps, paths, cutting, axis=(0.0, 0.0, 1.0)):
-    numbers = _tool_numbers(steps)
+    numbers = {int(p): n for p, n in paths["toolNumbers"].items()}  # the core's: one per tool, in route order
     number_of_tool = {s["tool"]["id"]: numbers[s["position"]] for s in steps if s.get("tool")}
     tcs = {}
     made = []

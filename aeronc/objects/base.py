@@ -56,11 +56,15 @@ class BaseProxy:
         self.__setstate__(state)
 
 
-def declare_property(obj, type_, name, group, doc, default=None, read_only=False, hidden=False):
-    """Add a property obj lacks and give it its default; an existing one is left as it is."""
+PROP_OUTPUT = 8  # App::Prop_Output: setting the property does not touch (recompute) its object
+
+
+def declare_property(obj, type_, name, group, doc, default=None, read_only=False, hidden=False, output=False):
+    """Add a property obj lacks and give it its default; an existing one is left as it is.
+    output: a result written about the object (a check's verdict) that must not make it recompute."""
     if name in obj.PropertiesList:
         return
-    obj.addProperty(type_, name, group, doc, 0, read_only, hidden)
+    obj.addProperty(type_, name, group, doc, PROP_OUTPUT if output else 0, read_only, hidden)
     if default is not None:
         setattr(obj, name, default)
 

@@ -11,11 +11,13 @@ the chain keeps it (machining_chain.update reports what it kept). The proxy keep
 everything is in properties and survives save and reopen.
 """
 import json
+import re
 
 
 from aeronc import pathcompat
 from aeronc.objects.base import BaseProxy, declare_property
 from aeronc.operations import moves
+from aeronc.post import readiness
 
 COOLANT_MODES = ["None", "Flood", "Mist"]
 
@@ -122,6 +124,7 @@ class MachiningOperation(BaseProxy):
         g = "Result"
         declare_property(obj, "App::PropertyLength", "CutLength", g, "Length of the feed moves", read_only=True)
         declare_property(obj, "App::PropertyLength", "RapidLength", g, "Length of the rapid moves", read_only=True)
+        declare_check_properties(obj)
 
     # --- user edits --------------------------------------------------------------------------
 
@@ -209,18 +212,49 @@ class MachiningOperation(BaseProxy):
         if not obj.Unit:
             return
         tc = obj.ToolController
-        if tc is None:
+        try:
+            if tc is None:
+                raise RuntimeError("{}: no tool controller; choose one for the operation".format(obj.Label))
+            from aeronc import _core
+            # The core writes the Path's G-code and the time estimate: no Python work per move.
+            program = _core.toolpath_program([json.dumps(i) for i in self.toolpath_inputs(obj)], obj.Label,
+                                             tc.HorizFeed.Value, tc.VertFeed.Value,  # mm/s
+                                             tc.HorizRapid.Value, tc.VertRapid.Value)
+        except Exception as e:
+            # No path rather than the last one computed for other parameters; the mark keeps the
+            # posts from writing the operation as a tool change with no moves.
             obj.Path = pathcompat.path_of([])
-            raise RuntimeError("{}: no tool controller; choose one for the operation".format(obj.Label))
-        from aeronc import _core
-        # The core writes the Path's G-code and the time estimate: no Python work per move.
-        program = _core.toolpath_program([json.dumps(i) for i in self.toolpath_inputs(obj)], obj.Label,
-                                         tc.HorizFeed.Value, tc.VertFeed.Value,  # mm/s
-                                         tc.HorizRapid.Value, tc.VertRapid.Value)
+            obj.CutLength = obj.RapidLength = 0.0
+            obj.CycleTime = ""
+            mark(obj, readiness.NO_TOOLPATH, re.sub(r"^unit \d+: ", "", str(e)))  # the batch's index: not the user's
+            raise
         obj.Path = pathcompat.path_from_gcode(program["gcode"])
         obj.CutLength = float(program["cutLength"])
         obj.RapidLength = float(program["rapidLength"])
         obj.CycleTime = moves.clock_text(program["seconds"])
+        mark(obj, readiness.NOT_CHECKED, "")
+
+
+def declare_check_properties(obj):
+    """Check and Note: whether the operation may reach a program (aeronc.post.readiness). Output
+    properties: marking an operation does not make it compute its path again."""
+    g = "Result"
+    declare_property(obj, "App::PropertyEnumeration", "Check", g,
+                     "Not checked, Passed (the posted program's simulation found nothing), No toolpath, "
+                     "Failed (gouges the part or rapids through material): the posts refuse the last two",
+                     readiness.CHECK_STATES, read_only=True, output=True)
+    declare_property(obj, "App::PropertyString", "Note", g, "Why the operation has no toolpath or failed its check",
+                     read_only=True, output=True)
+
+
+def mark(obj, state, note):
+    """Set an operation's check state and note (only what changes)."""
+    if "Check" not in obj.PropertiesList:
+        declare_check_properties(obj)
+    if obj.Check != state:
+        obj.Check = state
+    if obj.Note != note:
+        obj.Note = note
 
 
 def _set(obj, prop, value):

@@ -58,8 +58,11 @@ def compute(group, family, material, machine="", kb_path=None):
     if not machine:
         names = kb.machine_names()
         machine = names[0] if names else ""
+    # The tools Select tools planned for this material and machine are taken as they are.
+    plan = getattr(group, "ToolPlan", "") if (group.Material, group.Machine) == (material, machine) else ""
     with from_core(MachiningChainError, group.Label):
-        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family)
+        text = _core().build_chain(group.Result, kb.path, material, knowledge_base.sql_folder(), machine, family,
+                                   plan)
     return json.loads(text)
 
 
@@ -280,7 +283,45 @@ def _compute_paths(jobs, progress):
         op.purgeTouched()  # computed: the document's recompute below need not do it again
     if jobs:
         jobs[0].Document.recompute()
-    return ["{}: no toolpath: {}".format(op.Label, op.getStatusString()) for op in ops if "Invalid" in op.State]
+    return ["{}: no toolpath: {}".format(op.Label, getattr(op, "Note", "") or op.getStatusString())
+            for op in ops if "Invalid" in op.State]
+
+
+class _DraftOperation:
+    """A unit as its operation would hold it, before the Jobs exist: the chain's parameter
+    values, the unit's cutter, heights a clearance above its top (heights do not decide whether
+    the toolpath core can machine a unit)."""
+
+    def __init__(self, unit, label, parameters):
+        from aeronc.operations.base import reference_top
+        u = dict(unit)
+        u.setdefault("clearance", 3.0)
+        u.setdefault("safeHeight", reference_top(u) + 2 * float(u["clearance"]))
+        u.setdefault("rampAngle", 3.0)
+        u.setdefault("peck", 0.0)
+        u.setdefault("dwell", 0.0)
+        self.Label, self.Unit, self.ToolController = label, json.dumps(u), None
+        for p in parameters:
+            setattr(self, p.name, p.chain_value(u))
+
+
+def draft_refusals(chain):
+    """{unit id: the toolpath core's reason} for the enabled units of a chain (edited or not)
+    that would get no toolpath: what the chain panel shows before OK makes the operations."""
+    core = _core()
+    out = {}
+    for unit in chain.get("units", []):
+        if not unit.get("enabled", True):
+            continue
+        try:
+            cls = operations.operation_class(unit.get("operation", ""))
+            proxy = cls.__new__(cls)  # its methods only: no document object behind it
+            draft = _DraftOperation(unit, operation_label(unit), cls.PARAMETERS)
+            for data in proxy.toolpath_inputs(draft):
+                core.toolpath(json.dumps(data))
+        except Exception as e:  # the core's ToolpathError, or an input it cannot take
+            out[int(unit["id"])] = str(e)
+    return out
 
 
 def chain_operations(obj):

@@ -182,12 +182,119 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
         setups.append({"name": p["setup"], "id": int(getattr(p["job"], setup_job.SETUP_TAG)),
                        "to_part": to_part, "ops": in_job})
     finished, elements = finished_faces(chain, result)
+    # Coverage is measured on every face of the part inside the blank, not only on those the
+    # plan finishes: what stands where the part has none is material_left's to name.
+    against_part = faces_against_part(result)
     if all(axis_is_vertical(op["axis"]) for op in sim_ops):
-        return simulate(part_shape, sim_ops, blank, finished, elements, cell_size), len(sim_ops)
+        measured = sorted(set(finished) | set(against_part))
+        return simulate(part_shape, sim_ops, blank, measured, elements, cell_size), len(sim_ops)
     setup_of_element = {"E{}".format(e["id"]): e.get("setup") for e in result.get("elements", [])}
     for s in setups:
         s["elements"] = {k: v for k, v in elements.items() if setup_of_element.get(k) == s["id"]}
+        # Each setup measures every face of the part: what another setup removed is still stock in
+        # this one's model, so a face is judged by the setup that left least on it (_merged).
+        s["faces"] = sorted(set(against_part) | set().union(*[set(v) for v in s["elements"].values()]))
     return simulate_by_setup(part_shape, setups, blank, cell_size), len(sim_ops)
+
+
+def faces_against_part(result):
+    """Every face of the part inside the blank (1-based): those an element claims and those
+    recognition left unclaimed; the faces on the blank's own surface are not among them."""
+    faces = {i + 1 for i, e in enumerate(result.get("faceElement", [])) if e is not None and int(e) >= 0}
+    faces.update(int(f) for f in result.get("unclaimedFaces", []))
+    return sorted(faces)
+
+
+def material_left(report, chain, result):
+    """What the simulated programs leave standing where the part has none, beyond the coverage
+    tolerance: [{"element": id or None (unclaimed faces), "faces", "area" (mm^2), "maxLeft"
+    (mm), "reason"}], the largest area first. Elements the chain does not machine and unclaimed
+    faces are listed also when the simulation could not measure their faces (area None): they
+    are not known to be finished."""
+    face_element = result.get("faceElement", [])
+    unclaimed = set(int(f) for f in result.get("unclaimedFaces", []))
+    measured = {int(f["face"]): f for f in report.get("coverage", {}).get("faces", [])}
+    why, gap_faces = {}, {}  # element -> reasons; element -> the faces it leaves (None: all of them)
+    for gap in chain.get("unmachined", []):
+        step = " (step {})".format(gap["step"]) if gap.get("step") else ""
+        text = "not machined{}: {}".format(step, gap.get("reason", ""))
+        element = gap.get("element")
+        if text not in why.setdefault(element, []):
+            why[element].append(text)
+        if not gap.get("faces"):
+            gap_faces[element] = None
+        elif gap_faces.get(element, set()) is not None:
+            gap_faces[element] = gap_faces.get(element, set()) | set(int(f) for f in gap["faces"])
+    finished, _ = finished_faces(chain, result)
+    finished = set(finished)
+    groups = {}
+    for face in faces_against_part(result):
+        owner = int(face_element[face - 1]) if face - 1 < len(face_element) and face_element[face - 1] >= 0 else None
+        f = measured.get(face)
+        left = f is not None and float(f.get("uncoveredArea", 0)) > 0
+        listed = owner is None or (owner in gap_faces and (gap_faces[owner] is None or face in gap_faces[owner]))
+        unknown = (f is None or not f.get("measured", True)) and listed
+        if left or unknown:
+            groups.setdefault(owner, []).append((face, f if left else None))
+    out = []
+    for owner, faces in groups.items():
+        known = [f for _, f in faces if f is not None]
+        if owner is None:
+            reason = "unclaimed: no element machines these faces (recognition did not find the feature they bound)"
+        elif owner in why:
+            reason = "; ".join(why[owner])
+        elif any(face in finished for face, _ in faces):
+            reason = "finished by the plan, but the programs leave material on it"
+        else:
+            reason = "no finishing step of the plan reaches these faces"
+        out.append({"element": owner, "faces": sorted(face for face, _ in faces),
+                    "area": sum(float(f["uncoveredArea"]) for f in known) if known else None,
+                    "maxLeft": max(float(f["maxLeftover"]) for f in known) if known else None,
+                    "reason": reason})
+    out.sort(key=lambda e: -(e["area"] or 0))
+    return out
+
+
+def incomplete_text(left):
+    """"incomplete: 2 elements not machined, 9 unclaimed faces; 11,000 mm² left, up to 28 mm"
+    for material_left's entries, or None when there is none."""
+    if not left:
+        return None
+    parts = []
+    elements = [e for e in left if e["element"] is not None]
+    unclaimed = sum(len(e["faces"]) for e in left if e["element"] is None)
+    if elements:
+        parts.append("{} element{} with material left ({})".format(
+            len(elements), "" if len(elements) == 1 else "s",
+            ", ".join("E{}".format(e["element"]) for e in elements[:8]) + (" ..." if len(elements) > 8 else "")))
+    if unclaimed:
+        parts.append("{} unclaimed face{}".format(unclaimed, "" if unclaimed == 1 else "s"))
+    areas = [e["area"] for e in left if e["area"] is not None]
+    thick = [e["maxLeft"] for e in left if e["maxLeft"] is not None]
+    text = "incomplete: " + ", ".join(parts)
+    if areas:
+        text += "; {:,.0f} mm\u00b2 left, up to {:.2f} mm".format(sum(areas), max(thick))
+    unmeasured = sum(1 for e in left if e["area"] is None)
+    if unmeasured:
+        text += "; {} not measured".format(unmeasured)
+    return text
+
+
+def failing_operations(report):
+    """{operation label: why} for every operation of the simulated programs that gouges the
+    part beyond its allowance or rapids through material."""
+    out = {}
+    for op in report.get("ops", []):
+        why = []
+        if int(op.get("gouges", 0)):
+            why.append("gouges the part: {} move{}, worst {:.2f} mm beyond its allowance".format(
+                op["gouges"], "" if int(op["gouges"]) == 1 else "s", float(op.get("worstGouge", 0))))
+        if int(op.get("collisions", 0)):
+            why.append("rapids through material: {} move{}, {:.2f} mm deep".format(
+                op["collisions"], "" if int(op["collisions"]) == 1 else "s", float(op.get("worstCollision", 0))))
+        if why:
+            out[op["label"]] = "; ".join(why)
+    return out
 
 
 def _length(obj, prop):
@@ -278,7 +385,9 @@ def simulate_by_setup(part_shape, setups, blank, cell_size=0.5, options=None):
         box = (min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners),
                max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners))
         own = s["elements"]
-        faces = sorted(set().union(*[set(v) for v in own.values()])) if own else []
+        faces = s.get("faces")
+        if faces is None:
+            faces = sorted(set().union(*[set(v) for v in own.values()])) if own else []
         m = s["to_part"].toMatrix()
         runs.append({"name": s["name"],
                      "rotation": [m.A11, m.A12, m.A13, m.A21, m.A22, m.A23, m.A31, m.A32, m.A33],
@@ -316,7 +425,14 @@ def _merged(reports):
                     "cells": sum(int(sec.get("cells", 0)) for _, sec in sections),
                     "tolerance": sections[0][1].get("tolerance"), "worst": worst, "list": listed}
     coverage = dict(first.get("coverage", {}))
-    coverage["faces"] = [f for _, r in reports for f in r.get("coverage", {}).get("faces", [])]
+    # A face more than one setup measures (an unclaimed one) is as the setup that left least on it.
+    faces = {}
+    for _, r in reports:
+        for f in r.get("coverage", {}).get("faces", []):
+            seen = faces.get(f["face"])
+            if seen is None or _left_on(f) < _left_on(seen):
+                faces[f["face"]] = f
+    coverage["faces"] = [faces[k] for k in sorted(faces)]
     coverage["elements"] = [e for _, r in reports for e in r.get("coverage", {}).get("elements", [])]
     out["coverage"] = coverage
     out["stock"] = {"blankVolume": max(float(r["stock"]["blankVolume"]) for _, r in reports),
@@ -329,9 +445,16 @@ def _merged(reports):
         out["leftoverSetup"] = s["name"]
     # The other setups' maps where a face they finish is not reached: where to look.
     out["leftovers"] = [(x["name"], r["leftover"]) for x, r in reports
-                        if x is not s and r.get("leftover") and _uncovered(r)]
+                        if x is not s and r.get("leftover") and _uncovered(r, x)]
     return out
 
 
-def _uncovered(report):
-    return any(float(f.get("uncoveredArea", 0)) > 0 for f in report.get("coverage", {}).get("faces", []))
+def _left_on(face):
+    return (float(face.get("uncoveredArea", 0)), float(face.get("maxLeftover", 0)), not face.get("measured", True))
+
+
+def _uncovered(report, setup):
+    """Whether the setup leaves material on a face it finishes."""
+    own = set().union(*[set(v) for v in setup.get("elements", {}).values()])
+    return any(float(f.get("uncoveredArea", 0)) > 0 for f in report.get("coverage", {}).get("faces", [])
+               if f["face"] in own)

@@ -23,8 +23,8 @@ Post the file to NC later with aeronc.post.apt.post_apt_file."""
 def export(objectslist, filename, argstring):
     from aeronc import _core
     from aeronc.post import job, nc_post
-    opts, _ = nc_post.options(argstring, "840d", filename, nc_post._job_label(objectslist))
-    sections = job.sections_for(objectslist)
+    opts, a = nc_post.options(argstring, "840d", filename, nc_post._job_label(objectslist))
+    sections = job.sections_for(objectslist, skip_failed=a.skip_failed)
     with from_core(PostError):
         text = _core.write_apt(sections, opts["program_name"])
     if filename and filename != "-":

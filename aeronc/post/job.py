@@ -54,9 +54,18 @@ def _operations(obj):
         yield obj
 
 
-def sections_for(objects):
-    """The sections of a post's object list, in order."""
-    sections = []
+def sections_for(objects, skip_failed=False):
+    """The sections of a post's object list, in order. An operation that is not ready
+    (aeronc.post.readiness: no toolpath, a failed check, no move) raises PostError, or with
+    skip_failed is left out: a comment at the program's start names it and why, and its tool
+    change goes too unless another operation uses it."""
+    return prepared(objects, skip_failed)[0]
+
+
+def prepared(objects, skip_failed=False):
+    """(sections, [(label, why)] of the operations left out); see sections_for."""
+    from aeronc.post import readiness
+    sections, left_out = [], []
     for obj in _expand(objects):
         if pathcompat.is_tool_controller(obj):
             sections.append(_tool_section(obj))
@@ -70,12 +79,43 @@ def sections_for(objects):
         for op in _operations(obj):
             if not pathcompat.op_active(op):
                 continue
+            gcode = op.Path.toGCode()
+            why = readiness.not_ready_reason(op, gcode)
+            if why is not None:
+                if not skip_failed:
+                    raise PostError("operation '{}' is not ready to post: {}. Change it until it has a toolpath "
+                                    "that passes its check, switch it off (Active), or post with --skip-failed "
+                                    "to leave it out with a comment in the program".format(op.Label, why))
+                left_out.append((op.Label, why))
+                continue
             needs = pathcompat.needs_tool_controller(op)
             sections.append({
                 "kind": "operation",
                 "label": op.Label,
-                "gcode": op.Path.toGCode(),
+                "gcode": gcode,
                 "coolant": str(pathcompat.op_property(op, "CoolantMode") or "None").lower(),
                 "has_tool_controller": (not needs) or pathcompat.tool_controller_of(op) is not None,
             })
-    return sections
+    if left_out:
+        sections = [left_out_section(left_out)] + _without_idle_tools(sections)
+    return sections, left_out
+
+
+def left_out_section(left_out):
+    """The comment block at the program's start naming the operations left out and why."""
+    lines = ["(INCOMPLETE PROGRAM: {} operation{} left out)".format(len(left_out), "" if len(left_out) == 1 else "s")]
+    lines += ["(left out: {}: {})".format(label, why) for label, why in left_out]
+    return {"kind": "offset", "label": "operations left out", "gcode": "\n".join(lines) + "\n"}
+
+
+def _without_idle_tools(sections):
+    """Sections without a tool change that no operation follows before the next tool change
+    (the tool of an operation left out)."""
+    out = []
+    for k, s in enumerate(sections):
+        if s["kind"] == "tool":
+            following = next((t["kind"] for t in sections[k + 1:] if t["kind"] in ("tool", "operation")), None)
+            if following != "operation":
+                continue
+        out.append(s)
+    return out

@@ -55,6 +55,9 @@ def parser(dialect):
     p.add_argument("--retract", type=float, default=None,
                    help="retract distance along the tool axis at a branch change, mm (machine file default)")
     p.add_argument("--chord", type=float, default=0.001, help="chord tolerance for arcs under TRAORI, mm")
+    p.add_argument("--skip-failed", action="store_true",
+                   help="leave out operations that are not ready (no toolpath, a failed check) with a comment "
+                        "naming each, instead of refusing the program")
     p.add_argument("--no-show-editor", action="store_true", help="accepted for FreeCAD habit; no editor is shown")
     return p
 
@@ -123,7 +126,8 @@ def export(objectslist, filename, argstring, dialect="840d"):
     """FreeCAD's post contract: returns the program, written to filename unless it is "-"."""
     from aeronc.post import job
     try:
-        sections = job.sections_for(objectslist)
+        _, a = options(argstring, dialect, filename)
+        sections = job.sections_for(objectslist, skip_failed=a.skip_failed)
         text, _ = post_sections(sections, argstring, dialect, filename, _job_label(objectslist))
         if filename and filename != "-":
             write_atomically(filename, text)

@@ -44,9 +44,14 @@ def _summary(run):
         zero = p.get("partZero")
         where = (" &middot; program zero at ({}) from the table's reference point: the blank centred on the "
                  "table".format(", ".join(num(v, 3) for v in zero)) if zero else "")
-        rows.append(("Program " + esc(p.get("setup", "")), '<a href="{0}">{0}</a> <span class="muted small">'
+        left = (' <span class="fail">{} operation(s) left out</span>'.format(len(p["leftOut"]))
+                if p.get("leftOut") else "")
+        rows.append(("Program " + esc(p.get("setup", "")), '<a href="{0}">{0}</a>{4} <span class="muted small">'
                      '{1} &middot; {2} lines{3}</span>'.format(esc(os.path.basename(p["path"])), esc(p.get("dialect", "")),
-                                                             esc(p.get("lines", "")), where)))
+                                                             esc(p.get("lines", "")), where, left)))
+    for p in run.get("noProgram", []):
+        rows.append(("Program " + esc(p.get("setup", "")),
+                     '<span class="fail">none: every operation of the setup is left out</span>'))
     body = "".join("<tr><td>{}</td><td>{}</td></tr>".format(k, v) for k, v in rows)
     return '<table class="summary">{}</table>'.format(body)
 
@@ -125,6 +130,49 @@ def _unmachined(run):
             .format(rows))
 
 
+def _banner(run):
+    """The report's first line: whether the programs are ready, in words nobody misses."""
+    v = run.get("verdict")
+    if not v:
+        return ""
+    return "<p class='banner {}'>{}</p>".format("ready" if v.get("ready") else "notready", esc(v.get("text", "")))
+
+
+def _left_out(run):
+    items = run.get("leftOut") or []
+    if not items:
+        return ""
+    rows = "".join("<tr><td>{}</td><td>{}</td><td>{}</td></tr>".format(
+        esc(i.get("label")), esc(i.get("setup", "")), esc(i.get("reason"))) for i in items)
+    return ("<h2>Operations left out of the programs</h2><p class='small'>Each is marked Failed or No toolpath "
+            "on the operation (Check, Note); the programs name them in a comment at their start.</p>"
+            "<table><tr><th>operation</th><th>Job</th><th>why</th></tr>{}</table>".format(rows))
+
+
+def _material_left(run):
+    items = run.get("materialLeft")
+    if items is None:
+        return ""
+    if not items:
+        return ("<h3>Material left against the part</h3><p class='ok'>Every face of the part inside the blank "
+                "is within tolerance after the delivered programs.</p>")
+    rows = "".join("<tr><td>{}</td><td>{}</td><td class='n'>{}</td><td class='n'>{}</td><td>{}</td></tr>".format(
+        "E{}".format(i["element"]) if i.get("element") is not None else "unclaimed",
+        esc(", ".join(str(f) for f in i.get("faces", [])[:12]) + (" ..." if len(i.get("faces", [])) > 12 else "")),
+        num(i.get("area"), 0) if i.get("area") is not None else "not measured", num(i.get("maxLeft"), 2),
+        esc(i.get("reason", ""))) for i in items)
+    return ("<h3>Material left against the part (every face inside the blank, after the delivered programs)</h3>"
+            "<table><tr><th>element</th><th>faces</th><th>area left &gt; tolerance (mm&sup2;)</th>"
+            "<th>max left (mm)</th><th>why</th></tr>{}</table>".format(rows))
+
+
+def _failure(run):
+    f = run.get("failed")
+    if not f:
+        return ""
+    return "<h2>Run failed</h2><p class='fail'>{}</p>".format(esc(f.get("error", "")))
+
+
 def _coverage(run):
     rows = run.get("coverage", [])
     if not rows:
@@ -161,9 +209,12 @@ def _stages(run):
 def render(run):
     """The report's HTML text for one run of the machining chain (see write)."""
     title = "AeroNC machining chain: {}".format(run.get("part", ""))
+    if run.get("verdict"):
+        title = "{} — {}".format(run["verdict"].get("status", ""), title)
     parts = ["<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{}</title><style>{}</style>"
              "</head><body>".format(esc(title), STYLE),
-             "<h1>{}</h1>".format(esc(title)), _summary(run), _checks(run), _coverage(run), _pictures(run),
+             _banner(run), "<h1>{}</h1>".format(esc(title)), _failure(run), _summary(run), _checks(run),
+             _left_out(run), _material_left(run), _coverage(run), _pictures(run),
              _setup_tables(run), _unmachined(run), _stages(run), "</body></html>"]
     return "\n".join(parts)
 
@@ -172,7 +223,10 @@ def write(path, run):
     """Write the report of `run` to `path` (temporary name, then renamed); returns path.
 
     run: {"part", "source", "recognition": result, "chain": chain dict, "operations": [{"unit", "setup",
-    "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines", "partZero"}], "verification":
+    "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines", "partZero", "leftOut"}],
+    "noProgram": [{"setup"}], "verdict": {"ready", "status", "text"} (the first line), "failed": {"stage",
+    "error"}, "leftOut": [{"label", "setup", "reason"}], "materialLeft": [{"element", "faces", "area",
+    "maxLeft", "reason"}], "verification":
     [{"check", "node", "ok", "detail"}], "coverage": [{"setup", "element", "area", "leftArea", "maxLeft"}],
     "pictures": [(caption, file)], "stages": [(name, seconds)]}"""
     write_atomically(path, render(run))

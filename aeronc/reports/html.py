@@ -13,6 +13,9 @@ tr.process td { background: #f6f6f6; font-weight: bold; } .ok { color: #11772b; 
 .fail { color: #b3141b; font-weight: bold; } .muted { color: #777; } .small { font-size: 12px; }
 img { max-width: 100%; border: 1px solid #ddd; margin: 6px 0; }
 .summary td:first-child { font-weight: bold; background: #fafafa; }
+.banner { font-size: 17px; font-weight: bold; padding: 10px 14px; margin: 0 0 14px; border: 3px solid; }
+.banner.ready { color: #11772b; border-color: #11772b; background: #eef8f0; }
+.banner.notready { color: #b3141b; border-color: #b3141b; background: #fdeeee; }
 """
 
 

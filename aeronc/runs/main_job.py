@@ -35,6 +35,11 @@ class MainJob:
         self.data = {"part": self.name, "source": os.path.abspath(part_path), "pictures": []}
         self.doc = self.part = self.group = self.result = None
         self.chain_obj, self.chain, self.ops_by_label, self.programs, self.report = None, None, {}, [], None
+        self.left_out = {}     # label -> why, in the order they were left out (pipeline.gate)
+        self.left_kind = {}    # label -> "no toolpath", "gouge", "rapid" or "dependent"
+        self.no_program = []   # the setups every operation of which is left out
+        self.simulated = 0     # operations in the last simulation
+        self.work = None       # a private folder for the programs the verification re-reads
 
 
 def _counts(result):
@@ -111,34 +116,186 @@ def machining_chain(job):
 
 
 def post(job):
+    """Each setup's programs, posted but not yet delivered (verify delivers them). An operation
+    the toolpath core refused has no toolpath: it and what depends on it are left out."""
+    from aeronc.pipeline import gate
+    ops = _active_operations(job)
+    _leave_out(job, gate.not_ready(ops), "no toolpath")
+    _leave_out(job, gate.dependents(ops, job.left_out, job.result), "dependent")
+    _post_programs(job)
+    return ", ".join(os.path.basename(p["path"]) for p in job.programs) + (
+        "; {} operation(s) without a toolpath left out".format(len(job.left_out)) if job.left_out else "")
+
+
+def verify(job):
+    """Simulate the posted programs; leave out every operation that gouges the part or rapids
+    through material (and what depends on it), post again and simulate again until nothing
+    fails; then deliver the programs and judge them against the part."""
+    from aeronc.pipeline import gate, verification
+    first = report = _simulate(job)
+    while report is not None:
+        failing = {k: v for k, v in verification.failing_operations(report).items() if k not in job.left_out}
+        grown = gate.grown(first, report, job.left_out) if report is not first else {}
+        if not failing and not grown:
+            break
+        _leave_out(job, failing, {op["label"]: "gouge" if int(op.get("gouges", 0)) else "rapid"
+                                  for op in report.get("ops", [])})
+        _leave_out(job, grown, "dependent")
+        _leave_out(job, gate.dependents(_active_operations(job), job.left_out, job.result), "dependent")
+        _post_programs(job)
+        report = _simulate(job)
+    job.report = report or {}
+    for op in _active_operations(job):
+        if op.Label not in job.left_out and report is not None:
+            gate.passed(op)
+    job.data["leftOut"] = [{"label": label, "setup": job.ops_by_label[label][0].Label if label in job.ops_by_label
+                            else "", "kind": job.left_kind[label], "reason": why}
+                           for label, why in job.left_out.items()]
+    job.data["materialLeft"] = verification.material_left(job.report, job.chain, job.result) if report else []
+    job.data["verificationReport"] = {k: {"count": int((job.report.get(k) or {}).get("count", 0)),
+                                          "worst": float(((job.report.get(k) or {}).get("worst") or {}).get("depth", 0))}
+                                      for k in ("gouges", "collisions")}
+    job.data["verification"], job.data["coverage"] = _checks_of(job.report, job.simulated, job.data)
+    _deliver(job)
+    job.data["verdict"] = verdict_of(job.data)
+    return job.data["verdict"]["text"]
+
+
+def _active_operations(job):
+    from aeronc import pathcompat
+    return [op for fc_job in job.chain_obj.Jobs for op in _operations_of(fc_job) if pathcompat.op_active(op)]
+
+
+def _leave_out(job, why_by_label, kind):
+    """Leave operations out: {label: why}; kind: "no toolpath", "gouge", "rapid" or "dependent"
+    (or {label: kind})."""
+    from aeronc.pipeline import gate
+    for label, why in why_by_label.items():
+        if label in job.left_out:
+            continue
+        job.left_out[label] = why
+        job.left_kind[label] = kind.get(label, "dependent") if isinstance(kind, dict) else kind
+        if label in job.ops_by_label and job.left_kind[label] != "no toolpath":  # that one keeps its own mark
+            gate.fail(job.ops_by_label[label][1], why)
+
+
+def _post_programs(job):
+    """Post every setup in both dialects, into job.programs (text in memory; the LinuxCNC one
+    also in the work folder for the re-reading). The operations that are not ready are left out
+    with a comment (--skip-failed); a setup left with no operation gets no program."""
     from aeronc import pathcompat
     from aeronc.pipeline import setup_job
     from aeronc.post import nc_post
     blank = setup_job.blank_box(job.group)
+    job.programs, job.no_program = [], []
     for k, fc_job in enumerate(job.chain_obj.Jobs, start=1):
         setup = _setup_of(job.chain, fc_job, setup_job.SETUP_TAG)
-        objects = pathcompat.job_post_objects(fc_job)
+        labels = [op.Label for op in _operations_of(fc_job) if pathcompat.op_active(op)]
+        left = [label for label in labels if label in job.left_out]
         stem = "{}_setup{}".format(job.name, k)
+        if len(left) == len(labels):
+            job.no_program.append({"setup": setup["name"], "stem": stem, "leftOut": left})
+            continue
+        objects = pathcompat.job_post_objects(fc_job)
         zero = part_zero(blank, setup["frame"])
         for ext, dialect, label, args in (("mpf", "840d", "Sinumerik 840D", "--line-numbers"),
                                            ("ngc", "linuxcnc", "LinuxCNC", "")):
-            path = job.run.path(stem + "." + ext)
-            options = "{} {}".format(setup_job.post_arguments(job.machine, blank, setup["frame"]), args).strip()
-            text = nc_post.export(objects, path, options, dialect)
-            job.programs.append({"setup": setup["name"], "dialect": label, "path": path, "partZero": zero,
-                                 "lines": text.count("\n"), "job": fc_job, "frame": setup["frame"]})
-            job.run.wrote(os.path.basename(path))
-    job.data["programs"] = [{k: v for k, v in p.items() if k not in ("job", "frame")} for p in job.programs]
-    return ", ".join(os.path.basename(p["path"]) for p in job.programs)
+            # The program name as the file name gives it: the same program whatever the gate does.
+            options = "{} --program-name {} --skip-failed {}".format(
+                setup_job.post_arguments(job.machine, blank, setup["frame"]), stem, args).strip()
+            text = nc_post.export(objects, "-", options, dialect)
+            job.programs.append({"setup": setup["name"], "dialect": label, "path": job.run.path(stem + "." + ext),
+                                 "text": text, "partZero": zero, "lines": text.count("\n"), "job": fc_job,
+                                 "frame": setup["frame"], "leftOut": left, "operations": len(labels) - len(left)})
+            if ext == "ngc":
+                job.programs[-1]["reread"] = os.path.join(job.work, stem + ".ngc")
+                with open(job.programs[-1]["reread"], "w", encoding="utf-8") as f:
+                    f.write(text)
 
 
-def verify(job):
+def _simulate(job):
+    """The verification's report of the programs as posted now, or None when there is none."""
     from aeronc.pipeline import setup_job, verification
-    job.report, simulated = verification.verify_programs(
-        [p for p in job.programs if p["path"].endswith(".ngc")], job.ops_by_label, job.machine, job.chain,
-        job.result, job.part.Shape, setup_job.blank_box(job.group), job.cell_size)
-    job.data["verification"], job.data["coverage"] = _checks_of(job.report, simulated)
-    return "; ".join("{} {}".format(v["check"], "pass" if v["ok"] else "FAIL") for v in job.data["verification"])
+    programs = [dict(p, path=p["reread"]) for p in job.programs if "reread" in p]
+    if not programs:
+        job.simulated = 0
+        return None
+    report, job.simulated = verification.verify_programs(
+        programs, job.ops_by_label, job.machine, job.chain, job.result, job.part.Shape,
+        setup_job.blank_box(job.group), job.cell_size)
+    return report
+
+
+def _deliver(job):
+    """Write the verified programs under their names (each complete or not at all). Should the
+    last simulation still find a gouge or a colliding rapid, they are written as
+    <stem>.FAILED.<ext> with a first line saying so, never under the name of a program ready to
+    run."""
+    from aeronc.post.output import write_atomically
+    unsafe = _unsafe(job.report)
+    for p in job.programs:
+        text = p["text"]
+        if unsafe:
+            stem, ext = os.path.splitext(p["path"])
+            p["path"] = stem + ".FAILED" + ext
+            line = "FAILED VERIFICATION, DO NOT RUN: {}".format(unsafe)
+            text = ("; {}\n" if ext == ".mpf" else "({})\n").format(line.replace("(", "[").replace(")", "]")) + text
+        write_atomically(p["path"], text)
+        job.run.wrote(os.path.basename(p["path"]))
+    job.data["programs"] = [{k: v for k, v in p.items() if k not in ("job", "frame", "text", "reread")}
+                            for p in job.programs]
+    job.data["noProgram"] = job.no_program
+    job.data["unsafe"] = unsafe
+
+
+def _unsafe(report):
+    gouges = int((report.get("gouges") or {}).get("count", 0))
+    collisions = int((report.get("collisions") or {}).get("count", 0))
+    if not gouges and not collisions:
+        return None
+    return "{} gouging move(s), {} rapid(s) through material".format(gouges, collisions)
+
+
+LEFT_OUT_KINDS = {"gouge": ("gouges the part", "gouge the part"),
+                  "rapid": ("rapids through material", "rapid through material"),
+                  "no toolpath": ("has no toolpath", "have no toolpath"),
+                  "dependent": ("depends on those", "depend on those")}
+
+
+def verdict_of(data):
+    """The one line that says whether the programs are ready: READY, INCOMPLETE (safe, but
+    material stands where the part has none), NOT READY (operations left out, or unsafe) or
+    NO PROGRAM. {"ready", "status", "text"}."""
+    from aeronc.pipeline import verification
+    left_out = data.get("leftOut") or []
+    incomplete = verification.incomplete_text(data.get("materialLeft") or [])
+    delivered = [p for p in data.get("programs") or []]
+    parts = []
+    if data.get("unsafe"):
+        parts.append("the programs still gouge or rapid through material ({}): written as .FAILED".format(
+            data["unsafe"]))
+    if left_out:
+        kinds = {}
+        for e in left_out:
+            kinds[e.get("kind")] = kinds.get(e.get("kind"), 0) + 1
+        parts.append("{} operation{} left out of the programs ({}): {}".format(
+            len(left_out), "" if len(left_out) == 1 else "s",
+            ", ".join("{} {}".format(n, LEFT_OUT_KINDS.get(k, (k, k))[0 if n == 1 else 1]) for k, n in kinds.items()),
+            ", ".join(e["label"] for e in left_out[:6]) + (" ..." if len(left_out) > 6 else "")))
+    if incomplete:
+        parts.append(incomplete)
+    if not delivered:
+        status = "NO PROGRAM"
+        parts.insert(0, "no operation of {} can be posted safely".format(data.get("part", "the part")))
+    elif data.get("unsafe") or left_out:
+        status = "NOT READY"
+    elif incomplete:
+        status = "INCOMPLETE"
+        parts = [incomplete[len("incomplete: "):], "the programs neither gouge nor rapid through material"]
+    else:
+        status = "READY"
+        parts.append("no gouge, no rapid through material, every face of the part within tolerance")
+    return {"ready": status == "READY", "status": status, "text": "{}: {}".format(status, "; ".join(parts))}
 
 
 def pictures(job):
@@ -157,8 +314,11 @@ def pictures(job):
     pics.append(("Toolpaths over the part, per setup",
                  toolpath_picture.draw(panels, os.path.join(out, "toolpaths.png"), "{}: toolpaths by tool".format(name))))
     if report.get("leftover"):
+        from aeronc.pipeline import verification
         seen = "setup {}".format(report["leftoverSetup"]) if report.get("leftoverSetup") else "+Z"
-        pics.append(("Material left after simulating the posted programs (seen from {})".format(seen),
+        incomplete = verification.incomplete_text(job.data.get("materialLeft") or [])
+        pics.append(("Material left after simulating the delivered programs (seen from {}): {}".format(
+                        seen, incomplete or "every face of the part within tolerance"),
                      toolpath_picture.draw_leftover(report["leftover"], os.path.join(out, "leftover.png"))))
     for k, (setup_name, leftover) in enumerate(report.get("leftovers") or [], 1):
         pics.append(("Material left in setup {}, which leaves a finished face unreached".format(setup_name),
@@ -187,27 +347,84 @@ STAGES = (("read part", read_part), ("recognise", recognise), ("select tools", s
 
 
 def run(part_path, out, material="7050-T7451", machine="AC-5AX", family="integral_panel", cell_size=0.5,
-        say=None):
-    """Run the main job on a STEP (or BREP) part; returns the report's data (dict).
-    Raises RunError (MainJobError) naming the stage that failed. say(line) receives the progress
-    lines; by default they go to the terminal while FreeCAD's own output goes to freecad.log."""
-    from aeronc.reports import chain_report
+        say=None, pictures=True):
+    """Run the main job on a STEP (or BREP) part; returns the report's data (dict), whose
+    "verdict" says whether the programs are ready. Raises RunError (MainJobError) naming the
+    stage that failed, or saying that no program could be delivered; report.html and run.json
+    are written in either case, and no program is left that the gate did not pass.
+    say(line) receives the progress lines; by default they go to the terminal while FreeCAD's
+    own output goes to freecad.log. pictures=False skips the pictures (a corpus run's time)."""
+    import shutil
+    import tempfile
     run_ = Run(out, say)
     job = MainJob(run_, part_path, material, machine, family, cell_size)
     if os.path.exists(job.kb_path):  # left by a failed run: this run starts from the shipped knowledge base
         os.unlink(job.kb_path)
     (say or print)("AeroNC main job: {} ({} on {}, {}) -> {}".format(part_path, material, machine, family, run_.out))
-    with run_.console():
-        for name, stage in STAGES:
-            with run_.stage(name):
-                text = stage(job)
-            run_.report(text)
-        job.data["stages"] = list(run_.times)
-        chain_report.write(run_.path("report.html"), job.data)
-        run_.wrote("report.html")
-        run_.finish()
-        run_.say("  {:>6.1f} s  total; report: {}".format(run_.total(), run_.path("report.html")))
+    job.work = tempfile.mkdtemp(prefix="aeronc_main_job_")
+    try:
+        with run_.console():
+            try:
+                for name, stage in STAGES:
+                    if name == "pictures" and not pictures:
+                        continue
+                    with run_.stage(name):
+                        text = stage(job)
+                    run_.report(text)
+            except RunError as e:
+                job.data["failed"] = {"stage": str(e).split(":", 1)[0], "error": str(e)}
+                job.data["verdict"] = {"ready": False, "status": "FAILED",
+                                       "text": "FAILED at {}: no program".format(e)}
+                _write_reports(job)
+                run_.say("  FAILED: {}; report: {}".format(e, run_.path("report.html")))
+                raise
+            _write_reports(job)
+            run_.say("  {:>6.1f} s  total; report: {}".format(run_.total(), run_.path("report.html")))
+            run_.say("  " + job.data["verdict"]["text"])
+    finally:
+        shutil.rmtree(job.work, ignore_errors=True)
+    if not job.data.get("programs"):
+        raise RunError(job.data["verdict"]["text"])
     return job.data
+
+
+def _write_reports(job):
+    """report.html and run.json (the figures of the run, for the corpus table), then the list
+    of what the run wrote."""
+    from aeronc.reports import chain_report
+    job.data["stages"] = list(job.run.times)
+    chain_report.write(job.run.path("report.html"), job.data)
+    job.run.wrote("report.html")
+    job.run.write("run.json", json.dumps(run_summary(job.data), indent=1))
+    job.run.finish()
+
+
+def run_summary(data):
+    """The run's figures in one small dict: what was recognised and machined, what is left
+    against the part, what the gate left out, the simulation of the delivered programs, the
+    stage times, and whether a program was delivered (or the stage that failed)."""
+    recognition = data.get("recognition") or {}
+    chain = data.get("chain") or {}
+    report_ops = data.get("verificationReport") or {}
+    not_machined = {}
+    for gap in chain.get("unmachined", []):
+        not_machined.setdefault(str(gap.get("element")), gap.get("reason", ""))
+    left = data.get("materialLeft") or []
+    areas = [e["area"] for e in left if e.get("area") is not None]
+    thick = [e["maxLeft"] for e in left if e.get("maxLeft") is not None]
+    return {"part": data.get("part"), "source": data.get("source"),
+            "verdict": data.get("verdict"), "failed": data.get("failed"),
+            "elements": len(recognition.get("elements", [])),
+            "notMachined": not_machined,
+            "unclaimedFaces": len(recognition.get("unclaimedFaces", [])),
+            "units": len(chain.get("units", [])),
+            "leftOut": data.get("leftOut") or [],
+            "programs": [os.path.basename(p["path"]) for p in data.get("programs") or []],
+            "noProgram": data.get("noProgram") or [],
+            "gouges": report_ops.get("gouges"), "collisions": report_ops.get("collisions"),
+            "materialLeft": {"entries": len(left), "area": sum(areas) if areas else 0.0,
+                             "maxLeft": max(thick) if thick else 0.0},
+            "stages": data.get("stages") or []}
 
 
 def _operations_of(job):
@@ -250,15 +467,22 @@ def _path_moves(op):
     return moves
 
 
-def _checks_of(report, op_count):
+def _checks_of(report, op_count, data=None):
     """The report's verification rows and per-element coverage rows."""
+    data = data or {}
     gouges = report.get("gouges", {})
     collisions = report.get("collisions", {})
     coverage = report.get("coverage", {})
-    rows = [{"check": "gouge", "node": "all setups", "ok": int(gouges.get("count", 0)) == 0,
-             "detail": _worst_text(gouges, "every cutting move of {} operations within its allowance".format(op_count))},
-            {"check": "collision of rapids", "node": "all setups", "ok": int(collisions.get("count", 0)) == 0,
-             "detail": _worst_text(collisions, "rapids clear of the material")}]
+    rows = []
+    left_out = data.get("leftOut") or []
+    if left_out:
+        rows.append({"check": "operations left out", "node": "all setups", "ok": False,
+                     "detail": "; ".join("{}: {}".format(e["label"], e["reason"]) for e in left_out[:12]) +
+                     (" ..." if len(left_out) > 12 else "")})
+    rows += [{"check": "gouge", "node": "delivered programs", "ok": int(gouges.get("count", 0)) == 0,
+              "detail": _worst_text(gouges, "every cutting move of {} operations within its allowance".format(op_count))},
+             {"check": "collision of rapids", "node": "delivered programs", "ok": int(collisions.get("count", 0)) == 0,
+              "detail": _worst_text(collisions, "rapids clear of the material")}]
     per_element = []
     bad = []
     for e in coverage.get("elements", []):
@@ -270,6 +494,10 @@ def _checks_of(report, op_count):
     rows.append({"check": "coverage of finished floors and walls", "node": "all elements", "ok": not bad,
                  "detail": "every finished face within tolerance" if not bad else
                  "material left on {}".format(", ".join(bad[:12]) + (" ..." if len(bad) > 12 else ""))})
+    from aeronc.pipeline import verification
+    incomplete = verification.incomplete_text(data.get("materialLeft") or [])
+    rows.append({"check": "coverage against the part", "node": "every face inside the blank", "ok": not incomplete,
+                 "detail": incomplete or "every face of the part within tolerance"})
     return rows, per_element
 
 

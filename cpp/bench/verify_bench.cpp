@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+using namespace aeronc;
 using namespace aeronc::verify;
 using namespace aeronc::verify::test;
 

@@ -1,43 +1,30 @@
-// aeronc: command-line entry to the AeroNC core.
-//   aeronc recognise PART.(step|brep) [--json OUT] [--directions auto|+Z,-Z|x:y:z,...]
-//                    [--allowance MM] [--tolerance MM] [--threads N]
-//   aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]
-//   aeronc select-tools PART --kb KB.sqlite --material NAME [--directions ...] [--json OUT]
-//                       [--machine NAME] [--resources DIR]
-//   aeronc select-tools --tree RECOGNITION.json --kb KB.sqlite --material NAME [--json OUT]
-//                       [--machine NAME] [--resources DIR]
-//   aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite]
-//                   [--resources DIR]
-//   aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]
-//                [--family F | --template T] [--directions ...] [--json OUT] [--resources DIR]
-//   aeronc impeller PART [--json OUT]
-//   aeronc impeller-part OUT.(step|brep) [--spec JSON] [--truth TRUTH.json]
-//   aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]
-//                           [--resources DIR]
-#include <aeronc/chain/ChainJson.h>
-#include <aeronc/core/Error.h>
+// aeronc: command-line entry to the AeroNC core. `aeronc --help` lists the commands (kCommands
+// below: one table, each command with its usage and whether it reads a part).
 #include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
+#include <aeronc/chain/ChainJson.h>
+#include <aeronc/core/Error.h>
 #include <aeronc/core/TextFile.h>
+#include <aeronc/impeller/Blank.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/AxialOperations.h>
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
-#include <aeronc/impeller/Blank.h>
+#include <aeronc/kb/ImpellerProgram.h>
 #include <aeronc/kb/ImpellerRoute.h>
-#include <aeronc/kinematics/MachineModel.h>
-#include <aeronc/post/Apt.h>
-#include <aeronc/post/Post.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/OptimiseParameters.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
+#include <aeronc/kinematics/MachineModel.h>
 #include <aeronc/optimise/Report.h>
+#include <aeronc/post/Apt.h>
+#include <aeronc/post/Post.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 #include <aeronc/testparts/PanelGenerator.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -45,19 +32,18 @@
 #include <Standard_Failure.hxx>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
-#include <optional>
 #include <sstream>
-#include <algorithm>
-#include <csignal>
 #include <vector>
 
 #include <sys/wait.h>
@@ -65,31 +51,7 @@
 
 namespace {
 
-const char* kUsage =
-    "usage:\n"
-    "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
-    "                   [--threads N] [--face-names] [--time-limit S]\n"
-    "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"
-    "  aeronc select-tools PART --kb KB.sqlite --material NAME [--directions auto|+Z,-Z|x:y:z,...]\n"
-    "                      [--machine NAME] [--json OUT] [--resources DIR]\n"
-    "  aeronc select-tools --tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
-    "                      [--json OUT] [--resources DIR]\n"
-    "      (PART is recognised first; --tree plans a stored recognition, e.g. recognise's --json;\n"
-    "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"
-    "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
-    "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"
-    "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
-    "               [--family F | --template T] [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR]\n"
-    "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel)\n"
-    "  aeronc impeller PART [--json OUT] [--time-limit S]\n"
-    "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"
-    "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
-    "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"
-    "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--stations N] [--channels N]\n"
-    "                          [--resources DIR]\n"
-    "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, APT and the\n"
-    "       840D program for the AC-5AX machine under TRAORI, in DIR; docs/impeller.md)\n"
-    "  --time-limit S (recognise, select-tools PART, impeller): give up reading and recognising the part after S seconds\n";
+namespace fs = std::filesystem;
 
 std::vector<aeronc::Vec3> parseDirections(const std::string& s) {
     std::vector<aeronc::Vec3> out;
@@ -122,7 +84,13 @@ void writeText(const std::string& path, const std::string& text) {
         f << text;
         if (!f) throw aeronc::inputError(path + ": could not be written");
     }
-    std::filesystem::rename(tmp, path);
+    fs::rename(tmp, path);
+}
+
+// stdout when `path` is empty, else the file.
+void writeOut(const std::string& path, const std::string& text) {
+    if (path.empty()) std::cout << text << "\n";
+    else writeText(path, text);
 }
 
 using Next = std::function<std::string()>;
@@ -141,287 +109,25 @@ void forEachOption(int argc, char** argv, Handle handle, int first = 3) {
     }
 }
 
-int recogniseCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("recognise needs a part file");
-    std::string part = argv[2], jsonOut;
-    bool faceNames = false;
-    std::vector<std::string> names;
-    aeronc::recognition::RecogniseOptions opt;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--json") jsonOut = next();
-        else if (a == "--directions") opt.directions = parseDirections(next());
-        else if (a == "--allowance") opt.blankAllowance = std::stod(next());
-        else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
-        else if (a == "--threads") opt.threads = std::stoi(next());
-        else if (a == "--face-names") faceNames = true;
-        else return false;
-        return true;
-    });
-    aeronc::recognition::DomainTree tree;
+// The one way a command reads a part: `work` runs on the shape inside OCCT's fault guard, so an
+// OCCT failure in reading or in the work is an error naming the file. faceNames, when given,
+// gets each face's STEP name.
+void onPart(const std::string& path, const std::function<void(const TopoDS_Shape&)>& work,
+            std::vector<std::string>* faceNames = nullptr) {
     aeronc::runCatchingOcctFaults(
-        [&] {
-            const TopoDS_Shape solid = faceNames ? aeronc::loadStepWithFaceNames(part, names) : aeronc::loadPart(part);
-            tree = aeronc::recognition::recognise(solid, opt);
-        },
-        part);
-    std::string text = aeronc::recognition::toJson(tree);
-    if (faceNames) {  // the STEP name of each face, for comparing with labelled data
-        auto j = nlohmann::json::parse(text);
-        j["faceNames"] = names;
-        text = j.dump(1);
-    }
-    if (jsonOut.empty()) std::cout << text << "\n";
-    else writeText(jsonOut, text);
-    std::map<std::string, int> counts;
-    for (const auto& e : tree.elements) counts[toString(e.type)]++;
-    std::cerr << part << ": " << tree.faceCount << " faces, " << tree.setups.size() << " setup(s), "
-              << tree.elements.size() << " element(s):";
-    for (auto& kv : counts) std::cerr << " " << kv.second << " " << kv.first;
-    std::cerr << "\n";
-    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
-    return 0;
+        [&] { work(faceNames ? aeronc::loadStepWithFaceNames(path, *faceNames) : aeronc::loadPart(path)); }, path);
 }
 
-int panelCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("panel needs an output STEP path");
-    aeronc::testparts::PanelSpec spec;
-    std::string out = argv[2], truth;
-    for (int i = 3; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--pockets" && i + 1 < argc) {
-            if (std::sscanf(argv[++i], "%dx%d", &spec.pocketsX, &spec.pocketsY) != 2 || spec.pocketsX < 1 ||
-                spec.pocketsY < 1)
-                throw aeronc::inputError("--pockets wants NXxNY, e.g. 40x25");
-        } else if (a == "--floor-fillet" && i + 1 < argc) {
-            spec.floorFillet = std::stod(argv[++i]);
-        } else if (a == "--truth" && i + 1 < argc) {
-            truth = argv[++i];
-        } else if (a == "--plain") {
-            spec.lowerRibs = spec.islands = spec.openings = spec.lighteningHoles = spec.boltHoles = false;
-            spec.joggles = spec.flange = spec.bottomPockets = false;
-        } else {
-            throw aeronc::inputError("unknown option " + a);
-        }
-    }
-    const auto panel = aeronc::testparts::makePanel(spec);
-    aeronc::writeStep(panel.shape, out);
-    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(panel));
-    return 0;
-}
-
-std::filesystem::path kbResources(const std::string& given, const char* argv0);
-
-int impellerCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("impeller needs a part file");
-    const std::string part = argv[2];
-    std::string jsonOut;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--json") jsonOut = next();
-        else return false;
-        return true;
-    });
-    aeronc::impeller::ImpellerFeatures f;
-    aeronc::impeller::ImpellerDimensions d;
-    aeronc::runCatchingOcctFaults(
-        [&] {
-            const TopoDS_Shape solid = aeronc::loadPart(part);
-            f = aeronc::impeller::recogniseImpeller(solid);
-            d = aeronc::impeller::measureImpeller(solid, f);
-        },
-        part);
-    const std::string text = aeronc::impeller::impellerToJson(f, d);
-    if (jsonOut.empty()) std::cout << text << "\n";
-    else writeText(jsonOut, text);
-    std::cerr << part << ": " << f.faceCount << " faces, " << f.bladeCount << " main and " << f.splitterCount
-              << " splitter blades; bore " << d.boreDiameter << " x " << d.boreDepth << " mm, channel "
-              << d.minChannelWidth << " mm, fillet " << d.filletRadius << " mm, blade height " << d.bladeHeight
-              << " mm\n";
-    return 0;
-}
-
-// Spindle speed and feed of a cutter from the knowledge base's cutting data, capped at the machine's.
-void cuttingData(const aeronc::kb::KnowledgeBase& kb, const std::string& material, const std::string& operation,
-                 const aeronc::impeller::CuttingTool& t, aeronc::impellerpath::CutterShape& c) {
-    const auto cc = kb.cuttingCondition(material, t.material, operation, t.diameter);
-    const auto m = kb.machine("AC-5AX");
-    c.rpm = std::min(1000 * cc.vc / (3.14159265358979323846 * t.diameter), m.maxSpindleRpm);
-    c.feed = std::min(cc.fz * std::max(t.flutes, 1) * c.rpm, m.maxFeedMmMin);
-}
-
-int impellerProgramCmd(int argc, char** argv) {
-    using namespace aeronc;
-    if (argc < 3) throw inputError("impeller-program needs a part file");
-    const std::string part = argv[2];
-    std::string kbPath, out, resources, material = "7050-T7451";
-    impellerpath::PathOptions opt;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--kb") kbPath = next();
-        else if (a == "--out") out = next();
-        else if (a == "--resources") resources = next();
-        else if (a == "--material") material = next();
-        else if (a == "--stations") opt.stations = std::stoi(next());
-        else if (a == "--channels") opt.channels = std::stoi(next());
-        else return false;
-        return true;
-    });
-    if (kbPath.empty() || out.empty()) throw inputError("impeller-program needs --kb and --out");
-    if (opt.stations < 2 || opt.stations > 200) throw inputError("--stations wants 2 to 200");
-    const auto kbDir = kbResources(resources, argv[0]);
-    const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return kbDir.string(); });
-    const auto machine = kinematics::loadMachineFile((kbDir / ".." / "machines" / "AC-5AX.json").string());
-    std::filesystem::create_directories(out);
-    using Clock = std::chrono::steady_clock;
-    auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-    TopoDS_Shape solid;
-    impeller::ImpellerFeatures f;
-    impeller::ImpellerDimensions d;
-    impeller::ProcessRoute route;
-    impellerpath::ImpellerProgram prog;
-    impellerpath::CheckResult again;
-    impellerpath::CutterShape rougher, finisher;
-    std::optional<impellerpath::CutterShape> filletBall;
-    impellerpath::CheckResult rapids;
-    double tRecognise = 0, tPaths = 0, tCheck = 0;
-    std::string apt;
-    runCatchingOcctFaults(
-        [&] {
-            solid = loadPart(part);
-            auto t0 = Clock::now();
-            f = impeller::recogniseImpeller(solid);
-            d = impeller::measureImpeller(solid, f);
-            tRecognise = secs(t0);
-            route = kb::planImpellerRoute(kb, f, d);
-            int number = 0;
-            for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "rough_channels" && s.operation != "finish_blades" &&
-                                s.operation != "finish_fillets"))
-                    continue;
-                if (s.operation == "finish_fillets") filletBall.emplace();
-                auto& c = s.operation == "rough_channels" ? rougher : s.operation == "finish_blades" ? finisher : *filletBall;
-                c.id = s.tool->id, c.number = ++number, c.tipRadius = s.tool->diameter / 2;
-                c.taperDeg = s.tool->taperDeg, c.fluteLength = s.tool->fluteLength, c.reach = s.tool->reach;
-                c.shankRadius = s.tool->shankDiameter / 2;
-                cuttingData(kb, material, s.operation == "rough_channels" ? "roughing" : "finishing", *s.tool, c);
-                if (s.operation == "rough_channels") opt.roughAllowance = s.allowance;
-            }
-            if (rougher.id.empty() || finisher.id.empty())
-                throw inputError("the impeller route has no channel roughing or no blade finishing step");
-            t0 = Clock::now();
-            prog = impellerpath::impellerToolpaths(solid, f, d, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
-            tPaths = secs(t0);
-            apt = post::writeApt(impellerpath::toClProgram(prog, "IMPELLER"));
-            t0 = Clock::now();
-            std::vector<impellerpath::CutterShape> cutters{rougher, finisher};
-            if (filletBall) cutters.push_back(*filletBall);
-            const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
-            again = impellerpath::checkProgram(solid, f, reread);
-            rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.blankAllowance), f, reread,
-                                               opt.rapidClearance - 1e-6);
-            tCheck = secs(t0);
-        },
-        part);
-    // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
-    impellerpath::AxialProgram axial;
-    std::string axialApt;
-    runCatchingOcctFaults(
-        [&] {
-            impellerpath::AxialCutters ac;
-            int number = filletBall ? 3 : 2;
-            for (const auto& s : route.steps) {
-                if (!s.tool || (s.operation != "face" && s.operation != "drill" && s.operation != "bore")) continue;
-                auto c = impellerpath::flatCutter(s.tool->id, ++number, s.tool->diameter, s.tool->fluteLength,
-                                                  s.tool->reach, 1, 1);
-                cuttingData(kb, material,
-                            s.operation == "face" ? "roughing" : s.operation == "drill" ? "drilling" : "finishing",
-                            *s.tool, c);
-                (s.operation == "face" ? ac.faceMill : s.operation == "drill" ? ac.drill : ac.boringMill) = c;
-            }
-            impellerpath::AxialOptions ao;
-            for (const auto& s : route.steps)
-                if (s.operation == "drill") ao.drillAllowance = s.allowance;
-            axial = impellerpath::axialToolpaths(solid, f, d, ac, ao);
-            impellerpath::ImpellerProgram p;
-            p.operations = axial.operations;
-            axialApt = post::writeApt(impellerpath::toClProgram(p, "IMPELLER_AXIAL"));
-        },
-        part);
-    post::NcOptions nc;
-    nc.programName = "IMPELLER";
-    const auto posted = post::postApt(apt, machine, nc, {});
-    auto doc = nlohmann::json::parse(impeller::impellerToJson(f, d));
-    doc["route"] = nlohmann::json::parse(impeller::routeToJson(route));
-    size_t moves = 0;
-    for (const auto& op : prog.operations) moves += op.moves.size();
-    doc["toolpaths"] = {{"moves", moves},
-                        {"positionsChecked", again.positions},
-                        {"maxGougeMm", again.maxGouge},
-                        {"holderCollisions", again.holderCollisions},
-                        {"tilted", prog.check.tilted},
-                        {"links", prog.check.links},
-                        {"linkCollisions", prog.check.linkCollisions},
-                        {"rapidsChecked", rapids.links},
-                        {"rapidCollisions", rapids.linkCollisions},
-                        {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
-                        {"rougher", {{"id", rougher.id}, {"rpm", rougher.rpm}, {"feed", rougher.feed}}},
-                        {"finisher", {{"id", finisher.id}, {"rpm", finisher.rpm}, {"feed", finisher.feed}}}};
-    nlohmann::json axialOps = nlohmann::json::object();
-    for (const auto& op : axial.operations) {
-        int cutting = 0;
-        for (const auto& m : op.moves) cutting += !m.rapid;
-        axialOps[op.name] = {{"tool", op.cutter.id}, {"moves", op.moves.size()}, {"cutting", cutting}};
-    }
-    doc["axialOperations"] = {{"operations", axialOps},
-                              {"positionsChecked", axial.check.positions},
-                              {"maxGougeMm", axial.check.maxGouge},
-                              {"holderCollisions", axial.check.holderCollisions},
-                              {"notes", axial.notes}};
-    const std::filesystem::path dir(out);
-    writeText((dir / "impeller.json").string(), doc.dump(1));
-    writeText((dir / "IMPELLER.apt").string(), apt);
-    writeText((dir / "IMPELLER.mpf").string(), posted.text);
-    writeText((dir / "IMPELLER_AXIAL.apt").string(), axialApt);
-    std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
-              << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
-              << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
-              << " holder collisions, " << prog.check.tilted << " tilted; " << rapids.links << " rapids, "
-              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D in "
-              << (dir / "IMPELLER.mpf").string() << "\n";
-    return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
-                   prog.check.linkCollisions == 0 && axial.check.maxGouge <= 0.01 &&
-                   axial.check.holderCollisions == 0
-               ? 0
-               : 1;
-}
-
-int impellerPartCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("impeller-part needs an output path (.step or .brep)");
-    const std::string out = argv[2];
-    std::string spec, truth;
-    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
-        if (a == "--spec") spec = next();
-        else if (a == "--truth") truth = next();
-        else return false;
-        return true;
-    });
-    const auto imp = aeronc::testparts::makeImpeller(aeronc::testparts::impellerSpecFromJson(spec));
-    const std::string ext = std::filesystem::path(out).extension().string();
-    if (ext == ".brep") aeronc::writeBrep(imp.shape, out);
-    else aeronc::writeStep(imp.shape, out);
-    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(imp.truth));
-    return 0;
-}
-
-std::filesystem::path executableDir(const char* argv0) {
+fs::path executableDir(const char* argv0) {
     std::error_code ec;
-    auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec || self.empty()) self = std::filesystem::absolute(argv0, ec);
+    auto self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec || self.empty()) self = fs::absolute(argv0, ec);
     return self.parent_path();
 }
 
 // The folder holding schema.sql and default_data.sql: --resources, else the install layout
 // (<prefix>/AeroNC/bin/aeronc next to <prefix>/AeroNC/aeronc/resources/kb), else the source tree.
-std::filesystem::path kbResources(const std::string& given, const char* argv0) {
-    namespace fs = std::filesystem;
+fs::path kbResources(const std::string& given, const char* argv0) {
     auto has = [](const fs::path& d) {
         std::error_code ec;
         return fs::is_regular_file(d / "schema.sql", ec) && fs::is_regular_file(d / "default_data.sql", ec);
@@ -444,14 +150,96 @@ std::filesystem::path kbResources(const std::string& given, const char* argv0) {
                              "; pass --resources DIR");
 }
 
-// select-tools PART ... recognises the part, then plans; select-tools --tree FILE ... plans the
-// tree a recognition stored (recognise --json, or a Machining Features group's Result).
-int selectToolsCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("select-tools needs a part file or --tree RECOGNITION.json");
+aeronc::kb::KnowledgeBase openKb(const std::string& path, const std::string& resources, const char* argv0) {
+    return aeronc::kb::KnowledgeBase::openWithSqlFolder(path, [&] { return kbResources(resources, argv0).string(); });
+}
+
+// Refuses a material the knowledge base does not know, naming those it does.
+void checkMaterial(const aeronc::kb::KnowledgeBase& kb, const std::string& material, const std::string& kbPath) {
+    const auto known = kb.workpieceMaterials();
+    if (std::find(known.begin(), known.end(), material) != known.end()) return;
+    std::string list;
+    for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
+    throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list + ")");
+}
+
+// --- The commands --------------------------------------------------------------------------
+
+int recogniseCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("recognise needs a part file");
+    std::string part = argv[2], jsonOut;
+    bool faceNames = false;
+    std::vector<std::string> names;
+    aeronc::recognition::RecogniseOptions opt;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--json") jsonOut = next();
+        else if (a == "--directions") opt.directions = parseDirections(next());
+        else if (a == "--allowance") opt.blankAllowance = std::stod(next());
+        else if (a == "--tolerance") opt.linearTolerance = std::stod(next());
+        else if (a == "--threads") opt.threads = std::stoi(next());
+        else if (a == "--face-names") faceNames = true;
+        else return false;
+        return true;
+    });
+    aeronc::recognition::DomainTree tree;
+    onPart(part, [&](const TopoDS_Shape& solid) { tree = aeronc::recognition::recognise(solid, opt); },
+           faceNames ? &names : nullptr);
+    std::string text = aeronc::recognition::toJson(tree);
+    if (faceNames) {  // the STEP name of each face, for comparing with labelled data
+        auto j = nlohmann::json::parse(text);
+        j["faceNames"] = names;
+        text = j.dump(1);
+    }
+    writeOut(jsonOut, text);
+    std::map<std::string, int> counts;
+    for (const auto& e : tree.elements) counts[toString(e.type)]++;
+    std::cerr << part << ": " << tree.faceCount << " faces, " << tree.setups.size() << " setup(s), "
+              << tree.elements.size() << " element(s):";
+    for (auto& kv : counts) std::cerr << " " << kv.second << " " << kv.first;
+    std::cerr << "\n";
+    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
+    return 0;
+}
+
+int panelCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("panel needs an output STEP path");
+    aeronc::testparts::PanelSpec spec;
+    std::string out = argv[2], truth;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--pockets") {
+            const std::string v = next();
+            if (std::sscanf(v.c_str(), "%dx%d", &spec.pocketsX, &spec.pocketsY) != 2 || spec.pocketsX < 1 ||
+                spec.pocketsY < 1)
+                throw aeronc::inputError("--pockets wants NXxNY, e.g. 40x25");
+        } else if (a == "--floor-fillet") {
+            spec.floorFillet = std::stod(next());
+        } else if (a == "--truth") {
+            truth = next();
+        } else if (a == "--plain") {
+            spec.lowerRibs = spec.islands = spec.openings = spec.lighteningHoles = spec.boltHoles = false;
+            spec.joggles = spec.flange = spec.bottomPockets = false;
+        } else {
+            return false;
+        }
+        return true;
+    });
+    const auto panel = aeronc::testparts::makePanel(spec);
+    aeronc::writeStep(panel.shape, out);
+    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(panel));
+    return 0;
+}
+
+// select-tools and chain: a part recognised first (PART), or a stored recognition (--tree FILE);
+// the knowledge base, the material and the machine checked before the (slow) recognition.
+// select-tools prints the tool plan; chain the machining chain, from the plan of --tool-plan FILE
+// (select-tools' JSON) or planning the tools itself.
+int planCmd(int argc, char** argv, bool chain) {
+    const std::string cmd = chain ? "chain" : "select-tools";
+    if (argc < 3) throw aeronc::inputError(cmd + " needs a part file or --tree RECOGNITION.json");
     const bool fromTree = std::string(argv[2]) == "--tree";
     if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
     const std::string input = argv[fromTree ? 3 : 2];
-    std::string jsonOut, kbPath, material, resources, machine;
+    std::string jsonOut, kbPath, material, resources, machine, family = "integral_panel", toolPlan;
     bool directions = false;
     aeronc::recognition::RecogniseOptions opt;
     forEachOption(
@@ -465,16 +253,18 @@ int selectToolsCmd(int argc, char** argv) {
                 opt.directions = parseDirections(next());
                 directions = true;
             } else if (a == "--resources") resources = next();
+            else if (chain && (a == "--family" || a == "--template")) family = next();
+            else if (chain && a == "--tool-plan") toolPlan = next();
             else return false;
             return true;
         },
         fromTree ? 4 : 3);
     if (fromTree && directions)
         throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
-    if (kbPath.empty()) throw aeronc::inputError("select-tools needs --kb KB.sqlite (created when missing)");
-    if (material.empty()) throw aeronc::inputError("select-tools needs --material NAME, e.g. 7050-T7451");
+    if (kbPath.empty()) throw aeronc::inputError(cmd + " needs --kb KB.sqlite (created when missing)");
+    if (material.empty()) throw aeronc::inputError(cmd + " needs --material NAME, e.g. 7050-T7451");
 
-    // A stored tree is read first: bad input stops before a knowledge base is made.
+    // Stored input is read first: bad input stops before a knowledge base is made.
     aeronc::recognition::DomainTree tree;
     if (fromTree) {
         const std::string text = aeronc::readTextFile(input, "recognition file");
@@ -484,114 +274,54 @@ int selectToolsCmd(int argc, char** argv) {
             throw aeronc::inputError(input + ": " + e.what());
         }
     }
-    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
-        kbPath, [&] { return kbResources(resources, argv[0]).string(); });
-    // Check the material before the (slow) recognition.
-    const auto known = kb.workpieceMaterials();
-    if (std::find(known.begin(), known.end(), material) == known.end()) {
-        std::string list;
-        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
-        throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list +
-                                 ")");
-    }
-
-    if (!fromTree)
-        aeronc::runCatchingOcctFaults([&] { tree = aeronc::recognition::recognise(aeronc::loadPart(input), opt); }, input);
-    const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
-    const std::string text = aeronc::toolselect::toJson(plan, material);
-    if (jsonOut.empty()) std::cout << text << "\n";
-    else writeText(jsonOut, text);
-
-    int failed = 0;
-    for (const auto& c : plan.elements) failed += !c.error.empty();
-    for (const auto& h : plan.holes) failed += !h.error.empty();
-    std::cerr << input << ": " << plan.elements.size() << " milled element(s), " << plan.holes.size()
-              << " hole(s), " << failed << " without a tool; tool changes " << plan.merge.toolChangesBefore << " -> "
-              << plan.merge.toolChangesAfter << ", roughing time " << plan.merge.timeBefore << " -> "
-              << plan.merge.timeAfter << " min\n";
-    for (const auto& c : plan.elements)
-        if (!c.error.empty()) std::cerr << "warning: " << c.error << "\n";
-    for (const auto& h : plan.holes)
-        if (!h.error.empty()) std::cerr << "warning: " << h.error << "\n";
-    for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
-    return 0;
-}
-
-// chain PART ... recognises the part, then plans tools and the chain; chain --tree FILE ...
-// plans a stored recognition.
-int chainCmd(int argc, char** argv) {
-    if (argc < 3) throw aeronc::inputError("chain needs a part file or --tree RECOGNITION.json");
-    const bool fromTree = std::string(argv[2]) == "--tree";
-    if (fromTree && argc < 4) throw aeronc::inputError("--tree needs a value");
-    const std::string part = argv[fromTree ? 3 : 2];
-    std::string jsonOut, kbPath, material, resources, machine, family = "integral_panel";
-    bool directions = false;
-    aeronc::recognition::RecogniseOptions opt;
-    forEachOption(
-        argc, argv,
-        [&](const std::string& a, const Next& next) {
-            if (a == "--json") jsonOut = next();
-            else if (a == "--kb") kbPath = next();
-            else if (a == "--material") material = next();
-            else if (a == "--machine") machine = next();
-            else if (a == "--family" || a == "--template") family = next();
-            else if (a == "--directions") {
-                opt.directions = parseDirections(next());
-                directions = true;
-            } else if (a == "--resources") resources = next();
-            else return false;
-            return true;
-        },
-        fromTree ? 4 : 3);
-    if (fromTree && directions)
-        throw aeronc::inputError("--directions is for recognising a part; a --tree has its setups already");
-    if (kbPath.empty()) throw aeronc::inputError("chain needs --kb KB.sqlite (created when missing)");
-    if (material.empty()) throw aeronc::inputError("chain needs --material NAME, e.g. 7050-T7451");
-
-    aeronc::recognition::DomainTree tree;
-    if (fromTree) {
-        const std::string text = aeronc::readTextFile(part, "recognition file");
-        try {
-            tree = aeronc::recognition::fromJson(text);
-        } catch (const aeronc::Error& e) {
-            throw aeronc::inputError(part + ": " + e.what());
-        }
-    }
-    const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
-        kbPath, [&] { return kbResources(resources, argv[0]).string(); });
+    const std::string planText = toolPlan.empty() ? "" : aeronc::readTextFile(toolPlan, "tool plan");
+    const auto kb = openKb(kbPath, resources, argv[0]);
     // The slow part last: material, machine and template are checked before recognition.
-    const auto known = kb.workpieceMaterials();
-    if (std::find(known.begin(), known.end(), material) == known.end()) {
-        std::string list;
-        for (const auto& m : known) list += (list.empty() ? "" : ", ") + ("'" + m + "'");
-        throw aeronc::inputError("unknown workpiece material '" + material + "' in " + kbPath + " (known: " + list +
-                                 ")");
+    checkMaterial(kb, material, kbPath);
+    if (!machine.empty()) kb.machine(machine);  // an unknown one names the known
+    if (chain) aeronc::kb::loadProcessTemplate(kb, family);
+    if (!fromTree)
+        onPart(input, [&](const TopoDS_Shape& solid) { tree = aeronc::recognition::recognise(solid, opt); });
+
+    if (!chain) {
+        const auto plan = aeronc::kb::planTools(tree, kb, material, machine);
+        writeOut(jsonOut, aeronc::toolselect::toJson(plan, material));
+        int failed = 0;
+        for (const auto& c : plan.elements) failed += !c.error.empty();
+        for (const auto& h : plan.holes) failed += !h.error.empty();
+        std::cerr << input << ": " << plan.elements.size() << " milled element(s), " << plan.holes.size()
+                  << " hole(s), " << failed << " without a tool; tool changes " << plan.merge.toolChangesBefore
+                  << " -> " << plan.merge.toolChangesAfter << ", roughing time " << plan.merge.timeBefore << " -> "
+                  << plan.merge.timeAfter << " min\n";
+        for (const auto& c : plan.elements)
+            if (!c.error.empty()) std::cerr << "warning: " << c.error << "\n";
+        for (const auto& h : plan.holes)
+            if (!h.error.empty()) std::cerr << "warning: " << h.error << "\n";
+    } else {
+        const auto c = planText.empty() ? aeronc::kb::planChain(tree, kb, material, machine, family)
+                                        : aeronc::kb::planChain(tree, kb, aeronc::kb::storedToolPlan(kb, planText, material),
+                                                                material, machine, family);
+        writeOut(jsonOut, aeronc::chain::toJson(c));
+        int failed = 0, processes = 0;
+        for (const auto& k : c.checks) failed += !k.ok;
+        for (const auto& s : c.setups) processes += static_cast<int>(s.processes.size());
+        std::cerr << input << ": template " << c.processTemplate.name << ", " << tree.elements.size()
+                  << " element(s), " << c.units.size() << " unit(s) in " << processes << " process(es), "
+                  << c.unmachined.size() << " unmachined note(s); rapid travel " << c.travel.rulesOnly << " -> "
+                  << c.travel.optimised << " mm (" << c.travel.savedPercent << " % saved); " << failed
+                  << " rule failure(s)\n";
+        for (const auto& m : c.unmachined)
+            std::cerr << "unmachined: element " << m.element
+                      << (m.step ? std::string(" step ") + toString(*m.step) : "") << ": " << m.reason << "\n";
+        for (const auto& k : c.checks)
+            if (!k.ok) std::cerr << "rule " << k.rule << ": " << k.node << ": " << k.message << "\n";
     }
-    aeronc::kb::chainOptions(kb, material, machine);
-    aeronc::kb::loadProcessTemplate(kb, family);
-
-    if (!fromTree) tree = aeronc::recognition::recognise(aeronc::loadPart(part), opt);
-    const auto chain = aeronc::kb::planChain(tree, kb, material, machine, family);
-    const std::string text = aeronc::chain::toJson(chain);
-    if (jsonOut.empty()) std::cout << text << "\n";
-    else writeText(jsonOut, text);
-
-    int failed = 0, processes = 0;
-    for (const auto& c : chain.checks) failed += !c.ok;
-    for (const auto& s : chain.setups) processes += static_cast<int>(s.processes.size());
-    std::cerr << part << ": template " << chain.processTemplate.name << ", " << tree.elements.size()
-              << " element(s), " << chain.units.size() << " unit(s) in " << processes << " process(es), "
-              << chain.unmachined.size() << " unmachined note(s); rapid travel " << chain.travel.rulesOnly << " -> "
-              << chain.travel.optimised << " mm (" << chain.travel.savedPercent << " % saved); " << failed
-              << " rule failure(s)\n";
-    for (const auto& m : chain.unmachined)
-        std::cerr << "unmachined: element " << m.element << (m.step ? std::string(" step ") + toString(*m.step) : "")
-                  << ": " << m.reason << "\n";
-    for (const auto& c : chain.checks)
-        if (!c.ok) std::cerr << "rule " << c.rule << ": " << c.node << ": " << c.message << "\n";
     for (const auto& w : tree.warnings) std::cerr << "warning: " << w << "\n";
     return 0;
 }
+
+int selectToolsCmd(int argc, char** argv) { return planCmd(argc, argv, false); }
+int chainCmd(int argc, char** argv) { return planCmd(argc, argv, true); }
 
 int optimiseCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("optimise needs a parameter file (JSON), e.g. resources/optimise/*.json");
@@ -619,9 +349,7 @@ int optimiseCmd(int argc, char** argv) {
         throw aeronc::inputError(file + ": " + e.what());
     }
     if (!kbPath.empty()) {
-        const auto kb = aeronc::kb::KnowledgeBase::openWithSqlFolder(
-            kbPath, [&] { return kbResources(resources, argv[0]).string(); });
-        params = aeronc::kb::withKnowledgeBase(kb, params);
+        params = aeronc::kb::withKnowledgeBase(openKb(kbPath, resources, argv[0]), params);
     } else if (params.is_object() && params.contains("kb")) {
         throw aeronc::inputError(file + " names knowledge-base rows (\"kb\"): pass --kb KB.sqlite");
     }
@@ -637,25 +365,235 @@ int optimiseCmd(int argc, char** argv) {
     return 0;
 }
 
-// OCCT's STEP reader and writer print statistics on stdout, which is the JSON's channel.
-void quietOcct() {
-    const Handle(Message_Messenger)& m = Message::DefaultMessenger();
-    m->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+int impellerCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller needs a part file");
+    const std::string part = argv[2];
+    std::string jsonOut;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--json") jsonOut = next();
+        else return false;
+        return true;
+    });
+    aeronc::impeller::ImpellerFeatures f;
+    aeronc::impeller::ImpellerDimensions d;
+    onPart(part, [&](const TopoDS_Shape& solid) {
+        f = aeronc::impeller::recogniseImpeller(solid);
+        d = aeronc::impeller::measureImpeller(solid, f);
+    });
+    writeOut(jsonOut, aeronc::impeller::impellerToJson(f, d));
+    std::cerr << part << ": " << f.faceCount << " faces, " << f.bladeCount << " main and " << f.splitterCount
+              << " splitter blades; bore " << d.boreDiameter << " x " << d.boreDepth << " mm, channel "
+              << d.minChannelWidth << " mm, fillet " << d.filletRadius << " mm, blade height " << d.bladeHeight
+              << " mm\n";
+    return 0;
 }
 
-// One command, every failure a one-line message: exit 1 for an error, 2 for a usage mistake.
-int runCommand(const std::string& cmd, int argc, char** argv) {
+int impellerPartCmd(int argc, char** argv) {
+    if (argc < 3) throw aeronc::inputError("impeller-part needs an output path (.step or .brep)");
+    const std::string out = argv[2];
+    std::string spec, truth;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--spec") spec = next();
+        else if (a == "--truth") truth = next();
+        else return false;
+        return true;
+    });
+    const auto imp = aeronc::testparts::makeImpeller(aeronc::testparts::impellerSpecFromJson(spec));
+    const std::string ext = fs::path(out).extension().string();
+    if (ext == ".brep") aeronc::writeBrep(imp.shape, out);
+    else aeronc::writeStep(imp.shape, out);
+    if (!truth.empty()) writeText(truth, aeronc::testparts::truthToJson(imp.truth));
+    return 0;
+}
+
+nlohmann::json cuttingToJson(const std::vector<aeronc::kb::ToolCutting>& cutting) {
+    auto out = nlohmann::json::array();
+    for (const auto& c : cutting)
+        out.push_back({{"tool", c.tool}, {"operation", c.operation}, {"rpm", c.rpm}, {"feed", c.feed},
+                       {"plungeFeed", c.plungeFeed}, {"fz", c.fz}, {"ap", c.ap}, {"ae", c.ae},
+                       {"length", c.length}, {"active", c.active}, {"steps", c.steps}});
+    return out;
+}
+
+int impellerProgramCmd(int argc, char** argv) {
+    using namespace aeronc;
+    if (argc < 3) throw inputError("impeller-program needs a part file");
+    const std::string part = argv[2];
+    std::string kbPath, out, resources;
+    kb::ImpellerProgramOptions opt;
+    forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
+        if (a == "--kb") kbPath = next();
+        else if (a == "--out") out = next();
+        else if (a == "--resources") resources = next();
+        else if (a == "--material") opt.material = next();
+        else if (a == "--machine") opt.machine = next();
+        else if (a == "--stations") opt.paths.stations = std::stoi(next());
+        else if (a == "--channels") opt.paths.channels = std::stoi(next());
+        else return false;
+        return true;
+    });
+    if (kbPath.empty() || out.empty()) throw inputError("impeller-program needs --kb and --out");
+    if (opt.paths.stations < 2 || opt.paths.stations > 200) throw inputError("--stations wants 2 to 200");
+    const auto kbDir = kbResources(resources, argv[0]);
+    const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return kbDir.string(); });
+    checkMaterial(kb, opt.material, kbPath);
+    kb.machine(opt.machine);  // its limits; an unknown one names the known
+    // The machine's kinematics for the post: the machine file of the same name.
+    const fs::path machineFile = kbDir / ".." / "machines" / (opt.machine + ".json");
+    if (!fs::is_regular_file(machineFile))
+        throw inputError("machine " + opt.machine + ": no machine file " + machineFile.lexically_normal().string());
+    const auto machine = kinematics::loadMachineFile(machineFile.string());
+    fs::create_directories(out);
+    using Clock = std::chrono::steady_clock;
+    auto secs = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+    impeller::ImpellerFeatures f;
+    impeller::ImpellerDimensions d;
+    impeller::ProcessRoute route;
+    kb::ImpellerProgramming prog;
+    impellerpath::CheckResult again, rapids;
+    double tRecognise = 0, tPaths = 0, tCheck = 0;
+    std::string apt, axialApt;
+    onPart(part, [&](const TopoDS_Shape& solid) {
+        auto t0 = Clock::now();
+        f = impeller::recogniseImpeller(solid);
+        d = impeller::measureImpeller(solid, f);
+        tRecognise = secs(t0);
+        route = kb::planImpellerRoute(kb, f, d);
+        t0 = Clock::now();
+        prog = kb::programImpeller(solid, f, d, route.steps, kb, opt);
+        tPaths = secs(t0);
+        apt = post::writeApt(impellerpath::toClProgram(prog.fiveAxis, "IMPELLER"));
+        // The program as posted, read back and checked again: the gouge and holder check, the
+        // rapids against the blank.
+        t0 = Clock::now();
+        std::vector<impellerpath::CutterShape> cutters;
+        for (const auto& op : prog.fiveAxis.operations) cutters.push_back(op.cutter);
+        const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
+        again = impellerpath::checkProgram(solid, f, reread);
+        rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.paths.blankAllowance), f, reread,
+                                           opt.paths.rapidClearance - 1e-6);
+        tCheck = secs(t0);
+        // The steps about and along the axis (lathe, facing, drilling, boring): checked, written as APT.
+        impellerpath::ImpellerProgram axial;
+        axial.operations = prog.axial.operations;
+        axialApt = post::writeApt(impellerpath::toClProgram(axial, "IMPELLER_AXIAL"));
+    });
+    post::NcOptions nc;
+    nc.programName = "IMPELLER";
+    const auto posted = post::postApt(apt, machine, nc, {});
+    const auto& ops = prog.fiveAxis.operations;
+    auto doc = nlohmann::json::parse(impeller::impellerToJson(f, d));
+    doc["route"] = nlohmann::json::parse(impeller::routeToJson(route));
+    size_t moves = 0;
+    for (const auto& op : ops) moves += op.moves.size();
+    auto cutterJson = [](const impellerpath::CutterShape& c) {
+        return nlohmann::json{{"id", c.id}, {"number", c.number}, {"rpm", c.rpm}, {"feed", c.feed}};
+    };
+    doc["toolpaths"] = {{"moves", moves},
+                        {"positionsChecked", again.positions},
+                        {"maxGougeMm", again.maxGouge},
+                        {"holderCollisions", again.holderCollisions},
+                        {"tilted", prog.fiveAxis.check.tilted},
+                        {"links", prog.fiveAxis.check.links},
+                        {"linkCollisions", prog.fiveAxis.check.linkCollisions},
+                        {"rapidsChecked", rapids.links},
+                        {"rapidCollisions", rapids.linkCollisions},
+                        {"seconds", {{"recognise", tRecognise}, {"toolpaths", tPaths}, {"recheck", tCheck}}},
+                        {"rougher", cutterJson(ops.at(0).cutter)},
+                        {"finisher", cutterJson(ops.at(1).cutter)}};
+    doc["machine"] = opt.machine;
+    doc["cutting"] = cuttingToJson(prog.cutting);
+    nlohmann::json axialOps = nlohmann::json::object();
+    for (const auto& op : prog.axial.operations) {
+        int cutting = 0;
+        for (const auto& m : op.moves) cutting += !m.rapid;
+        axialOps[op.name] = {{"tool", op.cutter.id}, {"moves", op.moves.size()}, {"cutting", cutting}};
+    }
+    doc["axialOperations"] = {{"operations", axialOps},
+                              {"positionsChecked", prog.axial.check.positions},
+                              {"maxGougeMm", prog.axial.check.maxGouge},
+                              {"holderCollisions", prog.axial.check.holderCollisions},
+                              {"notes", prog.axial.notes}};
+    const fs::path dir(out);
+    writeText((dir / "impeller.json").string(), doc.dump(1));
+    writeText((dir / "IMPELLER.apt").string(), apt);
+    writeText((dir / "IMPELLER.mpf").string(), posted.text);
+    writeText((dir / "IMPELLER_AXIAL.apt").string(), axialApt);
+    std::cerr << part << ": " << f.bladeCount << " + " << f.splitterCount << " blades, recognised in " << tRecognise
+              << " s; " << moves << " moves in " << tPaths << " s; re-read program: " << again.positions
+              << " positions, deepest gouge " << again.maxGouge << " mm, " << again.holderCollisions
+              << " holder collisions, " << prog.fiveAxis.check.tilted << " tilted; " << rapids.links << " rapids, "
+              << rapids.linkCollisions << " into the blank; " << posted.lines << " lines of 840D for the "
+              << opt.machine << " in " << (dir / "IMPELLER.mpf").string() << "\n";
+    return again.maxGouge <= 0.01 && again.holderCollisions == 0 && rapids.linkCollisions == 0 &&
+                   prog.fiveAxis.check.linkCollisions == 0 && prog.axial.check.maxGouge <= 0.01 &&
+                   prog.axial.check.holderCollisions == 0
+               ? 0
+               : 1;
+}
+
+// --- The table ------------------------------------------------------------------------------
+
+struct Command {
+    const char* name;
+    const char* alias;  // another spelling, or null
+    // Reads a part (its first argument, unless --tree names a stored recognition): runs in a
+    // child process that a fault or --time-limit ends without taking this process along.
+    bool readsPart;
+    int (*run)(int argc, char** argv);
+    const char* usage;
+};
+
+const Command kCommands[] = {
+    {"recognise", "recognize", true, recogniseCmd,
+     "  aeronc recognise PART [--json OUT] [--directions auto|+Z,-Z|x:y:z,...] [--allowance MM] [--tolerance MM]\n"
+     "                   [--threads N] [--face-names] [--time-limit S]\n"},
+    {"panel", nullptr, false, panelCmd,
+     "  aeronc panel OUT.step [--pockets NXxNY] [--floor-fillet R] [--truth TRUTH.json] [--plain]\n"},
+    {"select-tools", nullptr, true, selectToolsCmd,
+     "  aeronc select-tools PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+     "                      [--directions auto|+Z,-Z|x:y:z,...] [--json OUT] [--resources DIR] [--time-limit S]\n"
+     "      (PART is recognised first; --tree plans a stored recognition, e.g. recognise's --json;\n"
+     "       a missing KB file is created from DIR/schema.sql and DIR/default_data.sql)\n"},
+    {"optimise", "optimize", false, optimiseCmd,
+     "  aeronc optimise PARAMS.json [--json OUT] [--method nlopt|ga|both] [--seed N] [--kb KB.sqlite] [--resources DIR]\n"
+     "      (cutting-parameter optimisation; with --kb, PARAMS names KB rows in a \"kb\" section)\n"},
+    {"chain", nullptr, true, chainCmd,
+     "  aeronc chain PART|--tree RECOGNITION.json --kb KB.sqlite --material NAME [--machine NAME]\n"
+     "               [--family F | --template T] [--tool-plan TOOLS.json] [--directions auto|+Z,-Z|x:y:z,...]\n"
+     "               [--json OUT] [--resources DIR] [--time-limit S]\n"
+     "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel;\n"
+     "       --tool-plan: the tools select-tools planned (its --json), else the tools are planned here)\n"},
+    {"impeller", nullptr, true, impellerCmd,
+     "  aeronc impeller PART [--json OUT] [--time-limit S]\n"
+     "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"},
+    {"impeller-part", nullptr, false, impellerPartCmd,
+     "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
+     "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"},
+    {"impeller-program", nullptr, true, impellerProgramCmd,
+     "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--machine NAME] [--stations N]\n"
+     "                          [--channels N] [--resources DIR] [--time-limit S]\n"
+     "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, cutting data,\n"
+     "       APT and the 840D program under TRAORI for the machine (default AC-5AX), in DIR; docs/impeller.md)\n"},
+};
+
+std::string usage() {
+    std::string text = "usage:\n";
+    for (const Command& c : kCommands) text += c.usage;
+    text += "  --time-limit S: give up reading and recognising the part after S seconds\n";
+    return text;
+}
+
+const Command* findCommand(const std::string& name) {
+    for (const Command& c : kCommands)
+        if (name == c.name || (c.alias && name == c.alias)) return &c;
+    return nullptr;
+}
+
+// One command, every failure a one-line message: exit 1 for an error.
+int runCommand(const Command& cmd, int argc, char** argv) {
     try {
-        if (cmd == "recognise" || cmd == "recognize") return recogniseCmd(argc, argv);
-        if (cmd == "panel") return panelCmd(argc, argv);
-        if (cmd == "select-tools") return selectToolsCmd(argc, argv);
-        if (cmd == "optimise" || cmd == "optimize") return optimiseCmd(argc, argv);
-        if (cmd == "chain") return chainCmd(argc, argv);
-        if (cmd == "impeller") return impellerCmd(argc, argv);
-        if (cmd == "impeller-part") return impellerPartCmd(argc, argv);
-        if (cmd == "impeller-program") return impellerProgramCmd(argc, argv);
-        std::cerr << "aeronc: unknown command '" << cmd << "'\n" << kUsage;
-        return 2;
+        return cmd.run(argc, argv);
     } catch (const aeronc::Error& e) {
         std::cerr << "aeronc: error: " << e.what() << "\n";
         return 1;
@@ -666,6 +604,12 @@ int runCommand(const std::string& cmd, int argc, char** argv) {
         std::cerr << "aeronc: error: " << e.what() << "\n";
         return 1;
     }
+}
+
+// OCCT's STEP reader and writer print statistics on stdout, which is the JSON's channel.
+void quietOcct() {
+    const Handle(Message_Messenger)& m = Message::DefaultMessenger();
+    m->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
 }
 
 // The last line of defence for the commands that read a part: a fault the OCCT handlers cannot
@@ -710,13 +654,16 @@ int inChildProcess(const std::function<int()>& command, const std::string& input
 int main(int argc, char** argv) {
     quietOcct();
     if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
-        std::cerr << kUsage;
+        std::cerr << usage();
         return argc < 2 ? 2 : 0;
     }
-    const std::string cmd = argv[1];
-    const bool readsPart = (cmd == "recognise" || cmd == "recognize" || cmd == "select-tools" || cmd == "impeller") && argc > 2 &&
-                           std::string(argv[2]) != "--tree";
-    if (!readsPart) return runCommand(cmd, argc, argv);
+    const Command* cmd = findCommand(argv[1]);
+    if (!cmd) {
+        std::cerr << "aeronc: unknown command '" << argv[1] << "'\n" << usage();
+        return 2;
+    }
+    const bool readsPart = cmd->readsPart && argc > 2 && std::string(argv[2]) != "--tree";
+    if (!readsPart) return runCommand(*cmd, argc, argv);
     // --time-limit SECONDS belongs to the child process, not to the command.
     std::vector<char*> args;
     unsigned timeLimit = 0;
@@ -734,5 +681,5 @@ int main(int argc, char** argv) {
     }
     args.push_back(nullptr);
     const int n = static_cast<int>(args.size()) - 1;
-    return inChildProcess([&] { return runCommand(cmd, n, args.data()); }, argv[2], timeLimit);
+    return inChildProcess([&] { return runCommand(*cmd, n, args.data()); }, argv[2], timeLimit);
 }

@@ -10,6 +10,7 @@
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impeller/ProcessRoute.h>
+#include <aeronc/kb/ImpellerProgram.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/core/Error.h>
@@ -22,9 +23,10 @@
 #include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
 
-#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace py = pybind11;
 using namespace aeronc;
@@ -42,46 +44,35 @@ double number(const nlohmann::json& j, const char* key, const std::string& where
     return j[key].get<double>();
 }
 
-// The knowledge base's tool named by a request's cutter ({"tool": id, "number", "rpm", "feed"}).
-const impeller::CuttingTool& requestedTool(const nlohmann::json& r, const std::string& where,
-                                           const std::vector<impeller::CuttingTool>& tools) {
-    if (!r.is_object()) throw inputError(where + " must be an object {tool, number, rpm, feed}");
-    if (!r.contains("tool") || !r["tool"].is_string()) throw inputError(where + ": \"tool\" must be a tool id");
-    const std::string id = r["tool"].get<std::string>();
-    for (const auto& c : tools)
-        if (c.id == id) return c;
-    throw inputError(where + ": no tool " + id + " in the knowledge base");
-}
-
-// A ball or tapered ball cutter of the request with its shape from the knowledge base's tool.
-impellerpath::CutterShape ballCutter(const nlohmann::json& r, const std::string& where,
-                                     const std::vector<impeller::CuttingTool>& tools) {
-    const auto& t = requestedTool(r, where, tools);
-    if (t.type != "ball" && t.type != "tapered_ball")
-        throw inputError(where + ": tool " + t.id + " is a " + t.type + " tool; the channels need a ball or tapered ball");
-    impellerpath::CutterShape c;
-    c.id = t.id;
-    c.number = static_cast<int>(number(r, "number", where));
-    c.tipRadius = t.diameter / 2, c.taperDeg = t.taperDeg, c.fluteLength = t.fluteLength, c.reach = t.reach;
-    c.shankRadius = t.shankDiameter / 2;
-    c.rpm = number(r, "rpm", where), c.feed = number(r, "feed", where);
-    return c;
-}
-
-impellerpath::CutterShape cutterOf(const nlohmann::json& request, const char* role,
-                                   const std::vector<impeller::CuttingTool>& tools) {
-    if (!request.contains(role) || !request[role].is_object()) throw inputError(std::string("impeller toolpaths: no ") + role);
-    return ballCutter(request[role], std::string("impeller toolpaths: ") + role, tools);
-}
-
-// A flat-bottomed cutter of the request (face mill, drill, flat end mill) for the axial steps.
-impellerpath::CutterShape flatCutterOf(const nlohmann::json& r, const std::string& where,
-                                       const std::vector<impeller::CuttingTool>& tools) {
-    const auto& t = requestedTool(r, where, tools);
-    if (t.type == "ball" || t.type == "tapered_ball")
-        throw inputError(where + ": tool " + t.id + " is a " + t.type + " tool; this step needs a flat-bottomed tool");
-    return impellerpath::flatCutter(t.id, static_cast<int>(number(r, "number", where)), t.diameter, t.fluteLength,
-                                    t.reach, number(r, "rpm", where), number(r, "feed", where));
+// The route's steps of a request: [{position, operation, allowance, tool: {id} | id | null}], each
+// tool the knowledge base's of that id (as edited by the user: any tool of the base).
+std::vector<impeller::RouteStep> stepsOf(const nlohmann::json& request,
+                                         const std::vector<impeller::CuttingTool>& tools) {
+    const std::string where = "impeller program: steps";
+    if (!request.contains("steps") || !request["steps"].is_array())
+        throw inputError(where + " must be a list of the route's steps");
+    std::vector<impeller::RouteStep> out;
+    for (std::size_t i = 0; i < request["steps"].size(); ++i) {
+        const auto& j = request["steps"][i];
+        const std::string at = where + "[" + std::to_string(i) + "]";
+        if (!j.is_object()) throw inputError(at + " must be an object {position, operation, allowance, tool}");
+        impeller::RouteStep s;
+        s.position = static_cast<int>(number(j, "position", at));
+        if (!j.contains("operation") || !j["operation"].is_string()) throw inputError(at + ": \"operation\" must be text");
+        s.operation = j["operation"].get<std::string>();
+        if (j.contains("allowance") && !j["allowance"].is_null()) s.allowance = number(j, "allowance", at);
+        if (j.contains("tool") && !j["tool"].is_null()) {
+            const auto& t = j["tool"];
+            const nlohmann::json& id = t.is_object() && t.contains("id") ? t["id"] : t;
+            if (!id.is_string()) throw inputError(at + ": \"tool\" must be a tool id or {\"id\": id}");
+            for (const auto& c : tools)
+                if (c.id == id.get<std::string>()) s.tool = c;
+            if (!s.tool)
+                throw inputError(at + " (" + s.operation + "): no tool " + id.get<std::string>() + " in the knowledge base");
+        }
+        out.push_back(s);
+    }
+    return out;
 }
 
 nlohmann::json cutterToJson(const impellerpath::CutterShape& c) {
@@ -198,7 +189,7 @@ void bindImpeller(py::module_& m) {
         "as JSON text: [{id, type, material, diameter, taperDeg, reach, fluteLength, shankDiameter, flutes}].");
 
     m.def(
-        "impeller_toolpaths",
+        "impeller_program",
         [](const std::string& brep, const std::string& kbPath, const std::string& sqlFolder,
            const std::string& requestJson) {
             return python::guarded([&] {
@@ -206,51 +197,40 @@ void bindImpeller(py::module_& m) {
                 try {
                     request = nlohmann::json::parse(requestJson);
                 } catch (const nlohmann::json::exception& e) {
-                    throw inputError(std::string("impeller toolpaths: the request is not JSON: ") + e.what());
+                    throw inputError(std::string("impeller program: the request is not JSON: ") + e.what());
                 }
+                if (!request.is_object()) throw inputError("impeller program: the request must be an object {steps, ...}");
                 const auto kb = kb::KnowledgeBase::openWithSqlFolder(kbPath, [&] { return sqlFolder; });
-                const auto tools = kb::impellerTools(kb);
-                const auto rougher = cutterOf(request, "rougher", tools);
-                const auto finisher = cutterOf(request, "finisher", tools);
-                std::optional<impellerpath::CutterShape> filletBall;
-                if (request.contains("filletBall") && !request["filletBall"].is_null())
-                    filletBall = ballCutter(request["filletBall"], "impeller toolpaths: filletBall", tools);
-                // The axial steps (turning, facing, drilling, boring), when the request has "axial".
-                std::optional<impellerpath::AxialCutters> axialCutters;
-                impellerpath::AxialOptions axialOpt;
-                if (request.contains("axial") && !request["axial"].is_null()) {
-                    const auto& a = request["axial"];
-                    const std::string aw = "impeller toolpaths: axial";
-                    if (!a.is_object()) throw inputError(aw + " must be an object {faceMill, drill, boringMill}");
-                    axialCutters.emplace();
-                    for (auto [key, slot] : {std::pair{"faceMill", &axialCutters->faceMill},
-                                             {"drill", &axialCutters->drill}, {"boringMill", &axialCutters->boringMill}})
-                        if (a.contains(key) && !a[key].is_null()) *slot = flatCutterOf(a[key], aw + ": " + key, tools);
-                    if (a.contains("drillAllowance")) axialOpt.drillAllowance = number(a, "drillAllowance", aw);
-                    if (!(axialOpt.drillAllowance >= 0)) throw inputError(aw + ": drillAllowance must be >= 0");
-                }
-                impellerpath::PathOptions opt;
+                const auto steps = stepsOf(request, kb::impellerTools(kb));
+                kb::ImpellerProgramOptions opt;
+                for (auto [key, field] : {std::pair{"material", &opt.material}, {"machine", &opt.machine}})
+                    if (request.contains(key)) {
+                        if (!request[key].is_string()) throw inputError(std::string("impeller program: \"") + key + "\" must be text");
+                        *field = request[key].get<std::string>();
+                    }
+                impellerpath::PathOptions& paths = opt.paths;
                 const auto o = request.value("options", nlohmann::json::object());
-                const std::string where = "impeller toolpaths: options";
+                const std::string where = "impeller program: options";
+                if (!o.is_object()) throw inputError(where + " must be an object");
                 auto opt_num = [&](const char* key, double& field) {
                     if (o.contains(key)) field = number(o, key, where);
                 };
-                opt_num("roughAllowance", opt.roughAllowance);
-                opt_num("stepDown", opt.stepDown);
-                opt_num("stepOver", opt.stepOver);
-                opt_num("finishStep", opt.finishStep);
-                opt_num("safeDistance", opt.safeDistance);
-                opt_num("maxTiltDeg", opt.maxTiltDeg);
-                double stations = opt.stations, channels = opt.channels;
+                opt_num("stepDown", paths.stepDown);
+                opt_num("stepOver", paths.stepOver);
+                opt_num("finishStep", paths.finishStep);
+                opt_num("safeDistance", paths.safeDistance);
+                opt_num("maxTiltDeg", paths.maxTiltDeg);
+                double stations = paths.stations, channels = paths.channels;
                 opt_num("stations", stations);
                 opt_num("channels", channels);
                 if (!(stations >= 2 && stations <= 200)) throw inputError(where + ": stations wants 2 to 200");
                 if (!(channels >= 0 && channels <= 1000)) throw inputError(where + ": channels wants 0 (all) or more");
-                if (!(opt.roughAllowance >= 0) || !(opt.stepDown > 0) || !(opt.stepOver > 0 && opt.stepOver <= 1) ||
-                    !(opt.finishStep > 0) || !(opt.safeDistance > 0) || !(opt.maxTiltDeg >= 0 && opt.maxTiltDeg < 90))
-                    throw inputError(where + ": allowance >= 0, step-down > 0, step-over in (0, 1], finishing step > 0, "
+                if (!(paths.stepDown > 0) || !(paths.stepOver > 0 && paths.stepOver <= 1) || !(paths.finishStep > 0) ||
+                    !(paths.safeDistance > 0) || !(paths.maxTiltDeg >= 0 && paths.maxTiltDeg < 90))
+                    throw inputError(where + ": step-down > 0, step-over in (0, 1], finishing step > 0, "
                                              "safe distance > 0 and tilt 0-90 degrees");
-                opt.stations = static_cast<int>(stations), opt.channels = static_cast<int>(channels);
+                paths.stations = static_cast<int>(stations), paths.channels = static_cast<int>(channels);
+                kb::checkImpellerProgram(steps, kb, opt);  // bad requests stop before the part is read
                 nlohmann::json out;
                 {
                     py::gil_scoped_release nogil;
@@ -259,8 +239,7 @@ void bindImpeller(py::module_& m) {
                             const TopoDS_Shape part = partFromBrepText(brep);
                             const auto features = impeller::recogniseImpeller(part);
                             const auto dims = impeller::measureImpeller(part, features);
-                            const auto prog = impellerpath::impellerToolpaths(
-                                part, features, dims, impellerpath::RouteCutters{rougher, finisher, filletBall}, opt);
+                            const auto prog = kb::programImpeller(part, features, dims, steps, kb, opt);
                             // Moves as the posts take them: the tool tip and the unit axis.
                             auto opsToJson = [](const std::vector<impellerpath::Operation>& operations) {
                                 auto ops = nlohmann::json::array();
@@ -275,36 +254,40 @@ void bindImpeller(py::module_& m) {
                                 }
                                 return ops;
                             };
-                            // The rapids against the blank, as a program read back is checked.
-                            std::vector<std::pair<impellerpath::CutterShape, std::vector<impellerpath::Move>>> byOp;
-                            for (const auto& op : prog.operations) byOp.push_back({op.cutter, op.moves});
-                            const auto rapids = impellerpath::checkRapids(
-                                impeller::outerProfile(part, features, opt.blankAllowance), features, byOp,
-                                opt.rapidClearance - 1e-6);
-                            out = {{"operations", opsToJson(prog.operations)},
-                                   {"check", checkToJson(prog.check)},
-                                   {"rapids", {{"checked", rapids.links}, {"collisions", rapids.linkCollisions}}}};
-                            if (axialCutters) {
-                                const auto axial = impellerpath::axialToolpaths(part, features, dims, *axialCutters, axialOpt);
-                                out["axial"] = {{"operations", opsToJson(axial.operations)},
-                                                {"check", checkToJson(axial.check)},
-                                                {"notes", axial.notes}};
-                            }
+                            auto numbers = nlohmann::json::object();
+                            for (const auto& [position, n] : prog.toolNumbers) numbers[std::to_string(position)] = n;
+                            auto cutting = nlohmann::json::array();
+                            for (const auto& c : prog.cutting)
+                                cutting.push_back({{"tool", c.tool}, {"operation", c.operation}, {"rpm", c.rpm},
+                                                   {"feed", c.feed}, {"plungeFeed", c.plungeFeed}, {"fz", c.fz},
+                                                   {"ap", c.ap}, {"ae", c.ae}, {"length", c.length},
+                                                   {"active", c.active}, {"kbFz", c.kbFz}, {"kbVc", c.kbVc},
+                                                   {"steps", c.steps}});
+                            out = {{"operations", opsToJson(prog.fiveAxis.operations)},
+                                   {"check", checkToJson(prog.fiveAxis.check)},
+                                   {"rapids", {{"checked", prog.rapids.links}, {"collisions", prog.rapids.linkCollisions}}},
+                                   {"axial", {{"operations", opsToJson(prog.axial.operations)},
+                                              {"check", checkToJson(prog.axial.check)},
+                                              {"notes", prog.axial.notes}}},
+                                   {"toolNumbers", numbers},
+                                   {"cutting", cutting},
+                                   {"seconds", {{"toolpaths", prog.toolpathSeconds}, {"cutting", prog.cuttingSeconds}}}};
                         },
-                        "computing the impeller toolpaths");
+                        "programming the impeller");
                 }
                 return out.dump();
             });
         },
         py::arg("brep_text"), py::arg("kb_path"), py::arg("sql_folder"), py::arg("request_json"),
-        "5-axis toolpaths of the impeller in brep_text (docs/impeller.md §5). request_json: {rougher: {tool, "
-        "number, rpm, feed}, finisher: {...}, filletBall: {...} (optional: finish_fillets), axial: {faceMill, drill, "
-        "boringMill: {...}, drillAllowance} (optional: turn, face, drill, bore, drill_back, bore_back), options: "
-        "{roughAllowance, stepDown, stepOver, finishStep, stations, safeDistance, maxTiltDeg, channels}}; the "
-        "cutters' shapes come from the knowledge base's tools. Returns JSON text: {operations: [{name, cutter, "
-        "moves: [[x, y, z, i, j, k, rapid]]}], check: {maxGougeMm, holderCollisions, tilted, positions, worstAt, "
-        "links, linkCollisions}, rapids: {checked, collisions}, axial: {operations, check, notes}}, moves as tool "
-        "tip and unit tool axis.");
+        "The impeller program of the part in brep_text (kb::programImpeller, as `aeronc impeller-program` makes "
+        "it; docs/impeller.md §5-§6). request_json: {steps: [the route's steps, as edited: {position, operation, "
+        "allowance, tool: {id}}], material, machine, options: {stations, channels, stepDown, stepOver, "
+        "finishStep, safeDistance, maxTiltDeg}}; tools from the knowledge base at kb_path (built from "
+        "sql_folder when missing). Returns JSON text: {operations: [{name, cutter, moves: [[x, y, z, i, j, k, "
+        "rapid]]}], check: {maxGougeMm, holderCollisions, tilted, positions, worstAt, links, linkCollisions}, "
+        "rapids: {checked, collisions}, axial: {operations, check, notes}, toolNumbers: {position: number}, "
+        "cutting: [{tool, operation, rpm, feed, plungeFeed, fz, ap, ae, length, active, kbFz, kbVc, steps}], "
+        "seconds: {toolpaths, cutting}}, moves as tool tip and unit tool axis.");
 
     m.def(
         "impeller_check_apt",

@@ -8,7 +8,7 @@
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/testparts/PanelGenerator.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <BRepTools.hxx>
 #include <Standard_Failure.hxx>

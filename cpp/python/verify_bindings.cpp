@@ -51,7 +51,7 @@ void bindVerify(py::module_& m) {
                 const auto program = verify::programFromJson(parse(opsJson, "the operations"));
                 const auto options = parse(optionsJson, "the options");
                 const auto sim = verify::simulationOptionsFromJson(options);
-                const auto mesh = verify::meshShape(partFromBrepText(brep), meshOption(options, "deflection", 0.002),
+                const auto mesh = meshShape(partFromBrepText(brep), meshOption(options, "deflection", 0.002),
                                                     meshOption(options, "angularDeflection", 0.5));
                 return verify::toJson(verify::simulate(mesh, program, sim)).dump();
             });
@@ -84,7 +84,7 @@ void bindVerify(py::module_& m) {
                 }
                 const auto options = parse(optionsJson, "the options");
                 const auto sim = verify::simulationOptionsFromJson(options);
-                const auto mesh = verify::meshShape(partFromBrepText(brep), meshOption(options, "deflection", 0.002),
+                const auto mesh = meshShape(partFromBrepText(brep), meshOption(options, "deflection", 0.002),
                                                     meshOption(options, "angularDeflection", 0.5));
                 nlohmann::json out = nlohmann::json::array();
                 for (const auto& report : verify::simulateSetups(mesh, setups, sim)) out.push_back(verify::toJson(report));

@@ -6,7 +6,7 @@
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <gtest/gtest.h>
 

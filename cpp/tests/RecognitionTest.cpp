@@ -4,6 +4,9 @@
 #include <aeronc/recognition/Recogniser.h>
 
 #include <BRepAlgoAPI_Common.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -157,6 +160,101 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
     double xmin = HUGE_VAL;
     for (const auto& p : floor->contour) xmin = std::min(xmin, p[0]);
     EXPECT_NEAR(xmin, 60, 0.02);
+}
+
+// A slot whose floor rounds (R5, as deep as the slot is wide less its 3 mm floor) rise to 1 mm
+// under the top (milled_005's six slots): sliced at 12, where another pocket's floor lies, the
+// top millimetre is a region without a floor whose walls end at 12, and a ray down its middle
+// runs 5 mm to the slot's floor. The rounds continue its walls below: no opening leaves the part
+// there (the chain broke openings through by 2 mm into the rounds), but a pocket down to 12 over
+// the slot.
+TEST(Recognition, RegionOverTheRoundsOfAPocketBelowIsNoOpening) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 60, 13).Shape(), roundedBox(30, 20, 7, 40.5, 13, 10, 5));
+    part = filletEdgesAt(part, 7, 30, 20, 70.5, 33, 5);
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(10, 40, 12), 15, 10, 5).Shape());  // a floor at 12
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* over = nullptr;
+    for (const DomainElement& e : t.elements) {
+        EXPECT_NE(e.type, ElementType::Opening) << "E" << e.id << " at " << e.level;
+        double x0 = HUGE_VAL;
+        for (const auto& p : e.contour) x0 = std::min(x0, p[0]);
+        if (std::fabs(e.level - 12) < 1e-6 && std::fabs(x0 - 30) < 0.01) over = &e;
+    }
+    ASSERT_NE(over, nullptr);
+    EXPECT_EQ(over->type, ElementType::ClosedPocket);
+    EXPECT_TRUE(over->floorFaces.empty());
+    // The slot below is its child, down to the slot's floor.
+    ASSERT_EQ(over->children.size(), 1u);
+    EXPECT_NEAR(t.elements[static_cast<std::size_t>(over->children[0])].level, 7, 1e-6);
+}
+
+// A bore (24 mm, 9 deep) whose wall a cross hole pierces on its way out to a step: at the slice
+// over the bore's floor the bore joins the region outside the part through the cross hole.
+// Trimming what lies under material (the cross hole's vault) cuts the bore off again; the
+// region left (the air over the step) holds none of the bore's floor and is no pocket at 31
+// (on milled_005 it was one, and its profiles ran round the part's end face).
+TEST(Recognition, RegionCutOffFromItsFloorByTheUndercutTrimIsNoPocket) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 60, 40).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(70, 0, 20), 30, 60, 20).Shape());
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(35, 30, 31), gp_Dir(0, 0, 1)), 12, 10).Shape());
+    part = cut(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(35, 30, 32), gp_Dir(1, 0, 0)), 3, 40).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    for (const DomainElement& e : t.elements) {
+        if (std::fabs(e.level - 31) > 1e-6) continue;
+        // Only the bore itself ends there.
+        double x0 = HUGE_VAL, x1 = -HUGE_VAL;
+        for (const auto& p : e.contour) x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+        if (e.hole) continue;
+        EXPECT_GT(x0, 35 - 12 - 0.1) << "E" << e.id << " reaches x " << x0;
+        EXPECT_LT(x1, 35 + 12 + 0.1) << "E" << e.id << " reaches x " << x1;
+    }
+}
+
+// A body standing on a ledge with an R10 fillet between them along X, and a 45-degree bevel
+// on the body's end edge (milled_005's ends). Seen along the bevel's normal the fillet is a wall
+// across the axis whose section moves with the height: at the bevel's level its foot stands
+// further into the region outside the part than at the slice. The region keeps off it: no point
+// of the contour at the level lies inside the part (it did by up to 0.4 mm here; on milled_005
+// the finishing profiles cut the fillet by 0.05 mm).
+TEST(Recognition, RegionKeepsOffAFilletAcrossATiltedAxis) {
+    TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(100, 60, 15).Shape(),
+                                         BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 15), 100, 20, 25).Shape())
+                            .Shape();
+    {
+        BRepFilletAPI_MakeFillet f(part);
+        for (TopExp_Explorer e(part, TopAbs_EDGE); e.More(); e.Next()) {
+            TopoDS_Vertex v1, v2;
+            TopExp::Vertices(TopoDS::Edge(e.Current()), v1, v2);
+            const gp_Pnt a = BRep_Tool::Pnt(v1), b = BRep_Tool::Pnt(v2);
+            if (std::fabs(a.Y() - 20) + std::fabs(b.Y() - 20) + std::fabs(a.Z() - 15) + std::fabs(b.Z() - 15) < 1e-9)
+                f.Add(10, TopoDS::Edge(e.Current()));
+        }
+        part = f.Shape();
+    }
+    BRepBuilderAPI_MakePolygon corner;
+    for (const gp_Pnt& p : {gp_Pnt(-1, 16, 25), gp_Pnt(-1, 21, 25), gp_Pnt(4, 21, 25)}) corner.Add(p);
+    corner.Close();
+    part = cut(part, BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(corner.Wire()).Face(), gp_Vec(0, 0, 16)).Shape());
+    const Vec3 d{-std::sqrt(0.5), std::sqrt(0.5), 0};
+    const TopoDS_Shape solid = validatedSolid(part, "test");
+    const DomainTree t = recognise(solid, along({d}));
+    const DomainElement* bevel = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (!e.floorFaces.empty() && std::fabs(e.level - 17 * std::sqrt(0.5)) < 1e-6) bevel = &e;
+    ASSERT_NE(bevel, nullptr);
+    double deepest = 0;
+    for (std::size_t i = 0; i < bevel->contour.size(); ++i) {
+        const auto& a = bevel->contour[i];
+        const auto& b = bevel->contour[(i + 1) % bevel->contour.size()];
+        for (int k = 0; k < 4; ++k) {
+            const gp_Pnt p(a[0] + (b[0] - a[0]) * k / 4, a[1] + (b[1] - a[1]) * k / 4, a[2] + (b[2] - a[2]) * k / 4);
+            BRepClass3d_SolidClassifier in(solid, p, 1e-6);
+            if (in.State() != TopAbs_IN) continue;
+            BRepExtrema_DistShapeShape dist(BRepBuilderAPI_MakeVertex(p).Vertex(),
+                                            TopExp_Explorer(solid, TopAbs_SHELL).Current());
+            deepest = std::max(deepest, dist.Value());
+        }
+    }
+    EXPECT_LT(deepest, 0.01);
 }
 
 // A hole whose mouth a bridge partly covers from above: a ray down its axis is clear, but a

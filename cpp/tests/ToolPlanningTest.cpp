@@ -7,7 +7,7 @@
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
-#include <aeronc/toolselect/ElementPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <gtest/gtest.h>
 

@@ -178,7 +178,7 @@ INSERT INTO threshold (name, value, description) VALUES
   ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area');
 
 -- Process planning (docs/machining-chain.md) --------------------------------------------
--- The same rows are seeded by the migration from schema version 2 (KnowledgeBase.cpp).
+-- The same rows are seeded by the migration from schema version 2 (migrations/v2_to_v3.sql).
 INSERT INTO part_family (name, required_steps, description) VALUES
   ('integral_panel', 'r w fs',    'aircraft integral panel: pockets on one or both faces, ribs, flanges, holes'),
   ('frame_beam',     'r w ss fs', 'frame or beam: deep pockets, thin webs and flanges'),
@@ -230,7 +230,7 @@ INSERT INTO sequencing_rule (template, priority, rule, parameters, description)
   UNION ALL SELECT name, 5, 'centre_out', '', 'rule 5: otherwise for low distortion, symmetric, from the centre out' FROM process_template;
 
 -- Impeller programming (docs/impeller.md). The same rows are seeded by the migration from
--- schema version 3 (KnowledgeBase.cpp).
+-- schema version 3 (migrations/v3_to_v4.sql).
 INSERT OR IGNORE INTO tapered_ball_tool (id, tool_material, tip_diameter, taper_deg, flutes, flute_length, shank_diameter, reach, cost) VALUES
   ('TB-2-1',  'carbide', 2, 1.0, 3, 16, 6, 40, 48),
   ('TB-2-3',  'carbide', 2, 3.0, 3, 16, 6, 40, 52),

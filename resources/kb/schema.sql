@@ -2,8 +2,8 @@
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
--- version is upgraded by the migration steps in cpp/src/kb/KnowledgeBase.cpp; when this
--- file changes, bump the version below and add a step there.
+-- version is upgraded by the migration steps resources/kb/migrations/v<N>_to_v<N+1>.sql (the
+-- build embeds them); when this file changes, bump the version below and add a step there.
 --
 -- Units: lengths in mm, angles in degrees, speeds in r/min, feeds in mm/min,
 -- power in kW, force in N, time in s (tool change) or min (tool life), cost in currency units.

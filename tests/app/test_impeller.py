@@ -84,8 +84,8 @@ class ImpellerRecognitionTest(unittest.TestCase):
             impeller_part.make_test_impeller({"blades": 4})
 
 
-class ImpellerToolpathRequestTest(unittest.TestCase):
-    """_core.impeller_toolpaths and impeller_check_apt refuse a bad request by name, before any
+class ImpellerProgramRequestTest(unittest.TestCase):
+    """_core.impeller_program and impeller_check_apt refuse a bad request by name, before any
     geometry is read (the part here is a box: reaching recognition would say so instead)."""
 
     @classmethod
@@ -105,40 +105,40 @@ class ImpellerToolpathRequestTest(unittest.TestCase):
         import shutil
         shutil.rmtree(cls.dir, ignore_errors=True)
 
-    def request(self, **changes):
+    STEPS = {"rough_channels": (5, "EM-BALL8", 0.5), "finish_blades": (6, "TB-4-3", 0.0)}
+
+    def request(self, steps=None, **changes):
         import json
-        r = {"rougher": {"tool": "EM-BALL8", "number": 1, "rpm": 10000, "feed": 1000},
-             "finisher": {"tool": "TB-4-3", "number": 2, "rpm": 10000, "feed": 1000}, "options": {}}
+        steps = dict(self.STEPS, **(steps or {}))
+        r = {"steps": [{"position": p, "operation": op, "allowance": a, "tool": {"id": t} if t else None}
+                       for op, (p, t, a) in steps.items()], "options": {}}
         r.update(changes)
         return json.dumps(r)
 
     def refused(self, text, message):
         with self.assertRaisesRegex(RuntimeError, message):
-            self.core.impeller_toolpaths(self.brep, self.kb, self.sql, text)
+            self.core.impeller_program(self.brep, self.kb, self.sql, text)
 
     def test_bad_requests(self):
         self.refused("{not json", "the request is not JSON")
-        self.refused('{"finisher": {}}', "no rougher")
-        self.refused(self.request(rougher={"tool": "NOPE", "number": 1, "rpm": 1, "feed": 1}), "no tool NOPE")
-        self.refused(self.request(rougher={"tool": "FM-125", "number": 1, "rpm": 1, "feed": 1}),
-                     "FM-125 is a face tool")
-        self.refused(self.request(finisher={"tool": "TB-4-3", "rpm": 1, "feed": 1}), "\"number\" must be a number")
+        self.refused('{"options": {}}', "steps must be a list")
+        self.refused(self.request(steps={"rough_channels": (5, None, 0.5)}), "no channel roughing or no blade finishing")
+        self.refused(self.request(steps={"rough_channels": (5, "NOPE", 0.5)}), "no tool NOPE")
+        self.refused(self.request(steps={"rough_channels": (5, "FM-125", 0.5)}), "FM-125 is a face tool")
+        self.refused(self.request(steps={"rough_channels": (5, "EM-BALL8", -1)}), "allowance must be >= 0")
         self.refused(self.request(options={"stations": 1}), "stations wants 2 to 200")
         self.refused(self.request(options={"stepOver": 1.5}), "step-over in \\(0, 1\\]")
+        self.refused(self.request(material="unobtainium"), "unknown workpiece material 'unobtainium'")
+        self.refused(self.request(machine="NO-MACHINE"), "unknown machine")
         # The fillet ball and the axial steps' tools, by role.
-        self.refused(self.request(filletBall={"tool": "EM-F16", "number": 3, "rpm": 1, "feed": 1}),
-                     "filletBall: tool EM-F16 is a flat tool")
-        self.refused(self.request(filletBall="EM-BALL4"), "filletBall must be an object")
-        self.refused(self.request(axial={"drill": {"tool": "EM-BALL4", "number": 4, "rpm": 1, "feed": 1}}),
+        self.refused(self.request(steps={"finish_fillets": (8, "EM-F16", 0.0)}), "filletBall: tool EM-F16 is a flat tool")
+        self.refused(self.request(steps={"drill": (3, "EM-BALL4", 0.5)}),
                      "axial: drill: tool EM-BALL4 is a ball tool; this step needs a flat-bottomed tool")
-        self.refused(self.request(axial={"boringMill": {"tool": "NOPE", "number": 4, "rpm": 1, "feed": 1}}),
-                     "axial: boringMill: no tool NOPE")
-        self.refused(self.request(axial={"drillAllowance": -1}), "drillAllowance must be >= 0")
-        self.refused(self.request(axial=[]), "axial must be an object")
+        self.refused(self.request(steps={"bore": (4, "NOPE", 0.0)}), "no tool NOPE")
+        self.refused(self.request(steps={"drill": (3, "DR-18", -1)}), "drillAllowance must be >= 0")
         # A good request reaches the part, which is no impeller.
         self.refused(self.request(), "not an impeller")
-        self.refused(self.request(filletBall={"tool": "EM-BALL4", "number": 3, "rpm": 1, "feed": 1},
-                                  axial={"drill": {"tool": "DR-18", "number": 4, "rpm": 1, "feed": 1}}),
+        self.refused(self.request(steps={"finish_fillets": (8, "EM-BALL4", 0.0), "drill": (3, "DR-18", 0.5)}),
                      "not an impeller")
 
     def test_tool_list(self):

@@ -278,6 +278,45 @@ class DoubleSidedPanelTest(unittest.TestCase, ChainFixture):
                 elif tc.AeroNCTool not in {p.AeroNCTool for p in planned}:
                     self.assertAlmostEqual(tc.SpindleSpeed, unit["setting"]["spindleRpm"], places=6)
 
+    def test_the_chain_takes_the_tools_select_tools_stored(self):
+        """The chain reads the tool plan Select tools stored on the group (ToolPlan) instead of
+        planning the tools again: a finishing tool changed in the stored plan finishes the walls."""
+        from aeronc.pipeline import knowledge_base, tool_planning
+        tool_planning.select_tools(self.group, MATERIAL, kb_path=self.kb_path)
+        fresh = chain_building.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        plan = json.loads(self.group.ToolPlan)
+        kb = knowledge_base.open_kb(self.kb_path)
+        depth = {e["id"]: e["depth"] for e in machining_features.result_of(self.group)["elements"]}
+
+        def finishes(t):
+            try:
+                return bool(kb.cutting_condition(MATERIAL, t["material"], "finishing", t["diameter"]))
+            except RuntimeError:
+                return False
+
+        def walls(chain, element):
+            return {u["tool"] for u in chain["units"] if u["element"] == element and u["step"] == "fs"}
+
+        for e in plan["elements"]:
+            if e["type"] != "closed_pocket" or not e["finishingTool"] or not e["roughingTool"]:
+                continue
+            was = e["finishingTool"]
+            smaller = [t for t in kb.tools() if t["type"] == "flat" and 4 <= t["diameter"] < plan["tools"][was]["diameter"]
+                       and min(t["fluteLength"], t["reach"]) > depth[e["id"]] + 1 and finishes(t)]
+            if smaller:
+                break
+        else:
+            self.fail("no pocket whose finishing tool has a smaller one to take its place")
+        now = max(smaller, key=lambda t: t["diameter"])["id"]
+        e["finishingTool"] = now
+        self.group.ToolPlan = json.dumps(plan)
+        stored = chain_building.compute(self.group, FAMILY, MATERIAL, kb_path=self.kb_path)
+        self.assertEqual(walls(fresh, e["id"]), {was})
+        self.assertEqual(walls(stored, e["id"]), {now})
+        # A plan made for another material is not taken: the tools are planned for this one.
+        other = chain_building.compute(self.group, FAMILY, "2024-T351", kb_path=self.kb_path)
+        self.assertEqual(other["material"], "2024-T351")
+
     def test_undo_removes_it_all(self):
         before = names(self.doc)
         self.build()

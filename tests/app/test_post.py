@@ -3,6 +3,7 @@ dropdown does, posting oriented operations whose programs, read back independent
 through the forward kinematics, give the input tip and axis again."""
 import glob
 import json
+import re
 import math
 import os
 import random
@@ -214,6 +215,59 @@ class PostTest(unittest.TestCase):
     def test_missing_tool_controller(self):
         ps.add_operation(self.doc, self.job, "NoTool", [Path.Command("G0", {"X": 0, "Y": 0, "Z": 10})], None)
         self._expect_error("", "operation 'NoTool'", "no tool controller")
+
+    # -- operations that are not ready ---------------------------------------------------
+    def _job_with_failed_operations(self):
+        """Good (T1), Empty (T2, no path: a unit the toolpath core refused), Refused (T1, moves
+        but marked No toolpath), Gouging (T3, marked Failed by a verification)."""
+        from aeronc.operations.base import mark
+        from aeronc.post import readiness
+        t2 = pathcompat.add_tool_controller(self.job, "TC2", 2)
+        t3 = pathcompat.add_tool_controller(self.job, "TC3", 3)
+        cut = [Path.Command("G0", {"X": 0, "Y": 0, "Z": 10}), Path.Command("G1", {"X": 20, "Y": 0, "Z": -1, "F": 5})]
+        ps.add_operation(self.doc, self.job, "Good", cut, self.tc)
+        ps.add_operation(self.doc, self.job, "Empty", [], t2)
+        refused = ps.add_operation(self.doc, self.job, "Refused", cut, self.tc)
+        mark(refused, readiness.NO_TOOLPATH, "the cutter (D 2 mm) does not fit in the pocket")
+        gouging = ps.add_operation(self.doc, self.job, "Gouging", cut, t3)
+        mark(gouging, readiness.FAILED, "gouges the part: 3 moves, worst 0.52 mm beyond its allowance")
+        self.doc.recompute()
+
+    def test_posts_refuse_an_operation_without_a_toolpath_or_failing_its_check(self):
+        self._job_with_failed_operations()
+        for name in ("aeronc_840d", "aeronc_linuxcnc", "aeronc_apt"):
+            target = os.path.join(self.tmp, "refused_" + name)
+            with self.assertRaises(PostError) as ctx:
+                self.post(name, "", filename=target)
+            self.assertIn("operation 'Empty' is not ready to post: no toolpath", str(ctx.exception))
+            self.assertIn("--skip-failed", str(ctx.exception))
+            self.assertFalse(os.path.exists(target))  # no program at all, not half of one
+        self.doc.getObject("Empty").Active = False  # switched off: the next one is named
+        with self.assertRaises(PostError) as ctx:
+            self.post("aeronc_840d", "")
+        self.assertIn("operation 'Refused' is not ready to post: no toolpath: the cutter (D 2 mm) does not fit",
+                      str(ctx.exception))
+
+    def test_skip_failed_leaves_them_out_with_a_comment_and_no_idle_tool_change(self):
+        self._job_with_failed_operations()
+        nc = self.post("aeronc_840d", "--skip-failed")
+        head = nc.split("G54")[0]
+        self.assertIn("; INCOMPLETE PROGRAM: 3 operations left out", head)
+        self.assertIn("; left out: Empty: no toolpath", head)
+        self.assertIn("; left out: Refused: no toolpath: the cutter (D 2 mm) does not fit in the pocket", head)
+        self.assertIn("; left out: Gouging: gouges the part: 3 moves, worst 0.52 mm", head)
+        self.assertEqual(nc.count("; operation: "), 1)
+        self.assertIn("; operation: Good", nc)
+        # Only the good operation's tool is called; T2 and T3 served operations left out.
+        self.assertEqual(re.findall(r"\bT(\d+) D1 M6", nc), ["1"])
+        lc = self.post("aeronc_linuxcnc", "--skip-failed")
+        self.assertIn("(left out: Gouging: gouges the part: 3 moves, worst 0.52 mm beyond its allowance)", lc)
+        self.assertIn("(left out: Refused: no toolpath: the cutter [D 2 mm] does not fit in the pocket)", lc)
+        self.assertEqual(re.findall(r"\bT(\d+) M6", lc), ["1"])
+        self.assertEqual(lc.count("(operation: "), 1)
+        apt_text = self.post("aeronc_apt", "--skip-failed")
+        self.assertIn("Gouging", apt_text)
+        self.assertEqual(re.findall(r"LOADTL/(\d+)", apt_text), ["1"])
 
     def test_unknown_machine(self):
         self._expect_error("--machine NOPE-5AX", "unknown machine 'NOPE-5AX'", "AC-5AX", "AC-HEAD")

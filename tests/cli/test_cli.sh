@@ -78,6 +78,28 @@ if "$cli" chain "$tmp/p.step" --directions +Z --kb "$tmp/kb.sqlite" --material 7
 else
   failed=$((failed + 1)); echo "FAIL chain writes JSON, the same from the part and the tree"
 fi
+# chain reads a part as the other commands do (a child process the OCCT fault guard and
+# --time-limit watch), and takes the tool plan select-tools wrote (--tool-plan) as it is.
+if "$cli" chain "$tmp/p.step" --directions +Z --kb "$tmp/kb.sqlite" --material 7050-T7451 --time-limit 60 \
+     --json "$tmp/chain_limit.json" 2>/dev/null && cmp -s "$tmp/chain.json" "$tmp/chain_limit.json"; then
+  passed=$((passed + 1)); echo "ok   chain PART --time-limit"
+else
+  failed=$((failed + 1)); echo "FAIL chain PART --time-limit"
+fi
+if "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 \
+     --json "$tmp/plan_chain.json" 2>/dev/null && cmp -s "$tmp/tree_chain.json" "$tmp/plan_chain.json"; then
+  passed=$((passed + 1)); echo "ok   chain --tool-plan takes select-tools' plan"
+else
+  failed=$((failed + 1)); echo "FAIL chain --tool-plan takes select-tools' plan"
+fi
+expect_error "chain --tool-plan of another material" "the tool plan was made for '7050-T7451', not '2024-T351'" \
+  "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 2024-T351
+expect_error "chain --tool-plan missing file" "tool plan $tmp/none.json cannot be read" \
+  "$cli" chain --tree "$tmp/tree.json" --tool-plan "$tmp/none.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools has no --tool-plan" "unknown option --tool-plan" \
+  "$cli" select-tools --tree "$tmp/tree.json" --tool-plan "$tmp/tree_tools.json" --kb "$tmp/kb.sqlite" --material 7050-T7451
+expect_error "select-tools unknown machine" "unknown machine 'Lathe'" \
+  "$cli" select-tools --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --machine Lathe
 expect_error "chain unknown family" "no process template or part family 'impeller'" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --family impeller
 expect_error "chain unknown machine" "unknown machine" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite" --material 7050-T7451 --machine Lathe
 expect_error "chain without material" "chain needs --material" "$cli" chain --tree "$tmp/tree.json" --kb "$tmp/kb.sqlite"
@@ -128,6 +150,34 @@ assert t["maxGougeMm"] <= 0.01 and t["holderCollisions"] == 0 and t["positionsCh
 else
   failed=$((failed + 1)); echo "FAIL impeller program checked and posted"
 fi
+# The program cuts at the cutting data it reports: the optimiser's for the 5-axis tools (the same
+# as Program impeller in FreeCAD), numbered in route order; the S and F words are those speeds.
+if python3 -c 'import json, re, sys
+d = json.load(open(sys.argv[1]))
+cut = {c["tool"]: c for c in d["cutting"]}
+rougher = d["toolpaths"]["rougher"]
+c = cut[rougher["id"]]
+assert c["active"] and c["active"] != ["knowledge base"], c
+assert abs(c["rpm"] - rougher["rpm"]) < 1e-9 and abs(c["feed"] - rougher["feed"]) < 1e-9, (c, rougher)
+text = open(sys.argv[2]).read()
+tool = re.search(r"^T(\d+) D1 M6\nS(\d+)", text, re.M)
+assert int(tool.group(1)) == rougher["number"], (tool.group(0), rougher)
+assert int(tool.group(2)) == round(c["rpm"]), (tool.group(0), c["rpm"])
+assert "F{:.3f}".format(c["feed"]) in text
+assert d["machine"] == "AC-5AX"' "$tmp/prog/impeller.json" "$tmp/prog/IMPELLER.mpf"; then
+  passed=$((passed + 1)); echo "ok   impeller program at the optimiser's cutting data"
+else
+  failed=$((failed + 1)); echo "FAIL impeller program at the optimiser's cutting data"
+fi
+# Another machine of the knowledge base, with its machine file; an unknown one is refused.
+if "$cli" impeller-program "$tmp/imp.brep" --kb "$tmp/kb.sqlite" --out "$tmp/progL" --stations 3 --channels 1 \
+     --machine AC-5AX-L 2>/dev/null && grep -q "for machine AC-5AX-L" "$tmp/progL/IMPELLER.mpf"; then
+  passed=$((passed + 1)); echo "ok   impeller-program --machine"
+else
+  failed=$((failed + 1)); echo "FAIL impeller-program --machine"
+fi
+expect_error "impeller-program unknown machine" "unknown machine 'NO-MACHINE'" \
+  "$cli" impeller-program "$tmp/imp.brep" --kb "$tmp/kb.sqlite" --out "$tmp/progX" --machine NO-MACHINE
 expect_error "impeller-program without --kb" "needs --kb and --out" "$cli" impeller-program "$tmp/imp.brep" --out "$tmp/prog"
 expect_error "impeller of a panel" "not an impeller: no rotational pattern" "$cli" impeller "$tmp/p.step"
 expect_error "impeller-part unknown key" "unknown key blades" "$cli" impeller-part "$tmp/x.step" --spec '{"blades": 3}'

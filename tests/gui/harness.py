@@ -106,6 +106,7 @@ def fits_combo_view(panel_form, default_width):
 def window_shot(doc, name):
     """The main window with doc's 3-D view painted in (a grab leaves it blank under Xvfb);
     saved as <ARTIFACTS>/<name>.png, whose path is returned."""
+    os.makedirs(ARTIFACTS, exist_ok=True)
     mw = Gui.getMainWindow()
     pump(0.5)
     shot_all = mw.grab()

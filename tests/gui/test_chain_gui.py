@@ -100,6 +100,18 @@ def run():
     pump()
     check("built without error", not errors and panel.chain is not None, errors)
     check("nothing written by Build", set(o.Name for o in doc.Objects) == names_before)
+    from aeronc.objects.machining_features import result_of
+    recognised = len(result_of(group)["elements"])
+    left = {e["element"] for e in panel.chain.get("unmachined", [])}
+    machined = {u["element"] for u in panel.chain["units"]}  # some perhaps with faces left
+    summary = panel.summary.text()
+    check("the summary counts the elements machined of those recognised",
+          "{} of {} elements machined".format(len(machined), recognised) in summary, summary)
+    check("the Not machined tab counts its elements",
+          panel.findings.tabText(0) == "Not machined ({})".format(len(left)), panel.findings.tabText(0))
+    check("the findings sit above the chain tree",
+          panel.findings.mapTo(panel.form, QtCore.QPoint(0, 0)).y() <
+          panel.tree.mapTo(panel.form, QtCore.QPoint(0, 0)).y())
     items = panel.unit_items()
     units = {u["id"]: u for u in panel.chain["units"]}
     check("a tree row per unit", sorted(items) == sorted(units), (len(items), len(units)))

@@ -5,8 +5,8 @@
 1. Each `scripts/run.sh <command>` in README.md has its case in scripts/run.sh.
 2. The commands that run a job are run here, against the installed addon in the test home
    (HOME from the environment), the way scripts/run.sh runs them, with quick settings: each
-   must exit 0 and write its outputs. `test` (this suite), `bench` (the benchmarks) and
-   `install` (its own test) are not run from here.
+   must exit 0 and write its outputs. `test` (this suite), `bench` (the benchmarks),
+   `install` and `corpus` (their own tests) are not run from here.
 Exit 1 listing each failure.
 """
 import os
@@ -27,7 +27,7 @@ RUNS = {
                   "AERONC_IMPELLER_SPEC": '{"bladeCount": 3, "filletRadius": 2.0, "bladeHeight": 11.0}'},
                  ["report.html", "IMPELLER.mpf", "impeller.FCStd"]),
 }
-NOT_RUN_HERE = {"test", "bench", "install"}
+NOT_RUN_HERE = {"test", "bench", "install", "corpus"}  # corpus: its own ctest (tests/CMakeLists.txt)
 
 
 def documented(root):

@@ -37,6 +37,22 @@ else
   wait "$parent"
 fi
 
+# chain reads its part the same way: the fault ends the child, not the command.
+"$cli" chain "$part" --kb "$tmp/kb.sqlite" --material 7050-T7451 --json "$tmp/chain.json" 2>"$tmp/err" &
+parent=$!
+child=""
+for _ in $(seq 200); do child=$(pgrep -P "$parent" || true); [ -n "$child" ] && break; sleep 0.05; done
+if [ -n "$child" ]; then
+  sleep 0.5
+  kill -ABRT "$child"
+  wait "$parent"
+  check "chain: a fault in the process reading the part" $? "$tmp/err" "signal 6"
+  [ -e "$tmp/chain.json" ] && { failed=$((failed + 1)); echo "FAIL chain: a partial JSON was written"; }
+else
+  failed=$((failed + 1)); echo "FAIL chain: no child process reads the part"
+  wait "$parent"
+fi
+
 # Parameter files: nested 100,000 deep (a stack overflow once), and exponents that overflow.
 python3 -c "print('{\"cutter\": {\"diameter_mm\": ' + '[' * 100000 + ']' * 100000 + '}}')" >"$tmp/deep.json"
 "$cli" optimise "$tmp/deep.json" >/dev/null 2>"$tmp/err"

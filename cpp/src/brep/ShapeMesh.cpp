@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-namespace aeronc::verify {
+namespace aeronc {
 
 TriangleMesh meshShape(const TopoDS_Shape& shape, double deflection, double angularDeflection) {
     if (shape.IsNull()) throw inputError("no shape to mesh");
@@ -52,4 +52,4 @@ TriangleMesh meshShape(const TopoDS_Shape& shape, double deflection, double angu
     return mesh;
 }
 
-}  // namespace aeronc::verify
+}  // namespace aeronc

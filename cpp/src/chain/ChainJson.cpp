@@ -50,9 +50,12 @@ json unitJson(const MachiningUnit& u) {
     json open = json::array();
     for (const auto& e : u.openEdges) open.push_back(json::array({pt(e[0]), pt(e[1])}));
     json holes = json::array();
-    for (const HoleTarget& h : u.holes)
-        holes.push_back({{"u", h.u}, {"v", h.v}, {"diameter", h.diameter}, {"top", h.top}, {"bottom", h.bottom},
-                         {"through", h.through}});
+    for (const HoleTarget& h : u.holes) {
+        json one{{"u", h.u}, {"v", h.v}, {"diameter", h.diameter}, {"top", h.top}, {"bottom", h.bottom},
+                 {"through", h.through}};
+        if (h.floorFilletRadius > 0) one["floorFilletRadius"] = h.floorFilletRadius;
+        holes.push_back(std::move(one));
+    }
     json tops = json::array();
     for (double t : u.islandTops) tops.push_back(num(t));
     json j = {{"id", u.id},
@@ -227,7 +230,8 @@ MachiningUnit readUnit(const In& in) {
     for (std::size_t i = 0; i < holes.size(); ++i) {
         const In h = holes[i];
         u.holes.push_back({h["u"].number(), h["v"].number(), h["diameter"].number(), h["top"].number(),
-                           h["bottom"].number(), h["through"].boolean()});
+                           h["bottom"].number(), h["through"].boolean(),
+                           h.has("floorFilletRadius") ? h["floorFilletRadius"].number() : 0.0});  // older chains: none
     }
     u.radialAllowance = in["radialAllowance"].number();
     u.axialAllowance = in["axialAllowance"].number();

@@ -1,19 +1,20 @@
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <set>
 #include <tuple>
 
 namespace aeronc::kb {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A table read through the editor's interface, cells by column name.
 class Rows {
@@ -162,7 +163,7 @@ chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<too
         toolselect::ToolSetting s;
         s.tool = static_cast<int>(i);
         s.operation = op;
-        s.spindleRpm = 1000.0 * c.vc / (kPi * t.diameter);
+        s.spindleRpm = spindleSpeed(c.vc, t.diameter);
         if (maxRpm > 0) s.spindleRpm = std::min(s.spindleRpm, maxRpm);
         s.feedMmMin = c.fz * t.flutes * s.spindleRpm;
         s.plungeFeedMmMin = op == "drilling" ? s.feedMmMin : s.feedMmMin * plungeRatio;
@@ -183,15 +184,52 @@ chain::ChainOptions chainOptions(const KnowledgeBase& kb, const std::string& mat
     return o;
 }
 
-chain::MachiningChain planChain(const recognition::DomainTree& tree, const KnowledgeBase& kb,
+namespace {
+
+// The chain of `tree` with the plan `planOf` gives for the machine.
+template <class PlanOf>
+chain::MachiningChain chainWith(const recognition::DomainTree& tree, const KnowledgeBase& kb,
                                 const std::string& material, const std::string& machine,
-                                const std::string& templateOrFamily) {
+                                const std::string& templateOrFamily, PlanOf planOf) {
     const chain::ProcessTemplate t = loadProcessTemplate(kb, templateOrFamily);
     const chain::ChainOptions o = chainOptions(kb, material, machine);
     if (tree.elements.empty())
         throw inputError("the part has no domain element: recognition found no pocket, opening or hole to machine");
-    const toolselect::ToolPlan plan = planTools(tree, kb, material, o.machine);
+    const toolselect::ToolPlan& plan = planOf(o.machine);
     return chain::buildChain(tree, plan, t, o, toolSettings(kb, plan.tools, material, o.machine));
+}
+
+}  // namespace
+
+chain::MachiningChain planChain(const recognition::DomainTree& tree, const KnowledgeBase& kb,
+                                const std::string& material, const std::string& machine,
+                                const std::string& templateOrFamily) {
+    toolselect::ToolPlan plan;
+    return chainWith(tree, kb, material, machine, templateOrFamily, [&](const std::string& m) -> const toolselect::ToolPlan& {
+        plan = planTools(tree, kb, material, m);
+        return plan;
+    });
+}
+
+chain::MachiningChain planChain(const recognition::DomainTree& tree, const KnowledgeBase& kb,
+                                const toolselect::ToolPlan& toolPlan, const std::string& material,
+                                const std::string& machine, const std::string& templateOrFamily) {
+    std::set<int> elements;
+    for (const auto& e : tree.elements) elements.insert(e.id);
+    auto check = [&](int id) {
+        if (!elements.count(id))
+            throw inputError("the tool plan names element " + std::to_string(id) +
+                             ", which the recognised tree does not have; select tools again");
+    };
+    for (const auto& c : toolPlan.elements) check(c.element);
+    for (const auto& h : toolPlan.holes) check(h.element);
+    return chainWith(tree, kb, material, machine, templateOrFamily,
+                     [&](const std::string&) -> const toolselect::ToolPlan& { return toolPlan; });
+}
+
+toolselect::ToolPlan storedToolPlan(const KnowledgeBase& kb, const std::string& toolPlanJson,
+                                    const std::string& material) {
+    return toolselect::planFromJson(toolPlanJson, material, kb.tools());
 }
 
 }  // namespace aeronc::kb

@@ -1,6 +1,7 @@
 #include <aeronc/kb/ToolPlanning.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 
 #include <algorithm>
 #include <map>
@@ -20,7 +21,6 @@ using toolselect::ToolSetting;
 
 namespace {
 constexpr double kDefaultDelta = 0.2;
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb, const std::string& material,
@@ -85,7 +85,7 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
         ToolSetting ts;
         ts.tool = index;
         ts.operation = op;
-        ts.spindleRpm = 1000.0 * c->vc / (kPi * t.diameter);
+        ts.spindleRpm = spindleSpeed(c->vc, t.diameter);
         if (maxRpm > 0) ts.spindleRpm = std::min(ts.spindleRpm, maxRpm);
         ts.feedMmMin = c->fz * t.flutes * ts.spindleRpm;
         ts.plungeFeedMmMin = op == "drilling" ? ts.feedMmMin : ts.feedMmMin * plungeRatio;

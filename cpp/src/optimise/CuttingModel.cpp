@@ -1,10 +1,12 @@
 #include <aeronc/optimise/CuttingModel.h>
 
+#include <aeronc/core/SpindleSpeed.h>
+
 #include <cmath>
 
 namespace aeronc::optimise {
 
-double cuttingSpeed(const Problem& p, double n) { return M_PI * p.cutter.diameter * n / 1000.0; }
+double cuttingSpeed(const Problem& p, double n) { return aeronc::cuttingSpeed(n, p.cutter.diameter); }
 
 double cuttingForce(const Problem& p, double n, double fz) {
     const auto& k = p.force;
@@ -35,7 +37,7 @@ double toolLife(const Problem& p, double n, double fz) {
 
 double speedForToolLife(const Problem& p, double T, double fz) {
     const double v = speedAtUnitLife(p, fz) / std::pow(T, p.toolLife.m);
-    return 1000.0 * v / (M_PI * p.cutter.diameter);
+    return spindleSpeed(v, p.cutter.diameter);
 }
 
 Evaluation evaluate(const Problem& p, double n, double fz) {

@@ -1,6 +1,7 @@
 #include <aeronc/optimise/Report.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,7 @@ BaselineResult baselineOf(const Problem& p, const Region& r, const Solution& s, 
     b.spec = spec;
     double n = 0;
     if (spec.n) n = *spec.n;
-    else if (spec.cuttingSpeed) n = 1000.0 * *spec.cuttingSpeed / (M_PI * p.cutter.diameter);
+    else if (spec.cuttingSpeed) n = spindleSpeed(*spec.cuttingSpeed, p.cutter.diameter);
     else n = speedForToolLife(p, *spec.toolLife, spec.fz);
     b.asGiven = pointOf(p, r, s, n, spec.fz);
     if (b.asGiven.feasible) return b;

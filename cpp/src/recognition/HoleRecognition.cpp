@@ -13,11 +13,30 @@ double coneRadiusAt(const FaceInfo& c, const Vec3& w, double height) {
 
 bool onDrillPoint(const SetupView& view, int f, double h) {
     const FaceCatalogue& faces = view.faces;
+    const double tol = 10 * view.tol.linear;
+    // A sphere is a ball end when it caps the hole: it meets only walls of this hole and
+    // other pieces of the cap. A pocket's ball corner (corner radius equal to the floor
+    // fillet's) also meets the floor fillets, and the pocket goes on below it.
+    auto capsTheHole = [&](int sphere) {
+        const FaceInfo& w = faces[f];
+        for (int m : faces[sphere].neighbours) {
+            const FaceInfo& g = faces[m];
+            if (m == f || g.kind == SurfaceKind::Sphere) continue;
+            if (g.kind != SurfaceKind::Cylinder || !g.concave || std::fabs(g.radius - w.radius) > tol ||
+                std::fabs(dot(g.axisDir, w.axisDir)) < view.tol.parallelCos)
+                return false;
+            const Vec3 d{g.axisPoint[0] - w.axisPoint[0], g.axisPoint[1] - w.axisPoint[1],
+                         g.axisPoint[2] - w.axisPoint[2]};
+            const double along = dot(d, w.axisDir) / norm(w.axisDir);
+            if (std::sqrt(std::max(0.0, dot(d, d) - along * along)) > tol) return false;
+        }
+        return true;
+    };
     for (int n : faces[f].neighbours) {
         const FaceInfo& c = faces[n];
         const FaceInSetup& cs = view.fs[static_cast<std::size_t>(n)];
-        if (cs.hi > h + 10 * view.tol.linear) continue;
-        if (c.kind == SurfaceKind::Sphere) return true;
+        if (cs.hi > h + tol) continue;
+        if (c.kind == SurfaceKind::Sphere && capsTheHole(n)) return true;
         if (c.kind == SurfaceKind::Cone && coneRadiusAt(c, view.axis, cs.lo) < faces[f].radius - 10 * view.tol.linear)
             return true;
     }

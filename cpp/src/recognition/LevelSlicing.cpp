@@ -82,13 +82,23 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     const double tol = 10 * view_.tol.linear;
     if (!(z - zl > 0.1 * tol)) return {};
     Paths near;
-    for (int f : c.contourFaces) {
+    // The faces along the region's boundary: its walls, and those its contour loops run on (an
+    // exterior region knows its walls by probes only).
+    std::vector<int> bounding = c.contourFaces;
+    for (const SectionLoop* L : c.contourLoops)
+        for (int f : L->faces) pushUnique(bounding, f);
+    for (int f : bounding) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
-        // A convex face (a round) spanning the band; a hole across the axis is concave.
-        const bool falls = s.att == Attitude::Curved && !faces_[f].concave && s.lo < zl && s.hi > z;
-        if (!facesUp && !falls) continue;
-        leaning.push_back(f);
+        // A curved face spanning the band: a round falling past the floor, or a fillet across
+        // the axis whose section moves with the height (seen from a tilted setup its foot
+        // stands further into the region at the floor than at the slice).
+        const bool spans = s.att == Attitude::Curved && s.lo < zl && s.hi > z;
+        if (!facesUp && !spans) continue;
+        // The region's walls among them: bevels and rounds (a hole across the axis is concave,
+        // and what the region loses beside it is not its wall).
+        const bool wall = std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end();
+        if (wall && (facesUp || !faces_[f].concave)) leaning.push_back(f);
         // Its footprint: its box in the setup's frame (the same however the part is placed).
         P2 lo, hi;
         view_.faceBox(f, lo, hi);
@@ -116,8 +126,8 @@ Paths LevelSlicing::materialAt(double z) const {
     return out;
 }
 
-bool LevelSlicing::trimToReach(VoidRegion& c, double h, double z, double low, double top,
-                                 std::vector<std::string>& warnings) const {
+std::vector<VoidRegion> LevelSlicing::trimToReach(const VoidRegion& c, double h, double z, double low, double top,
+                                                  std::vector<std::string>& warnings) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
     // Walls leaning back hold more material at the floor than at the slice: the region (the
@@ -143,7 +153,7 @@ bool LevelSlicing::trimToReach(VoidRegion& c, double h, double z, double low, do
         if (hi.x < c.region.lo.x || lo.x > c.region.hi.x || hi.y < c.region.lo.y || lo.y > c.region.hi.y) continue;
         heights.push_back(s.hi);
     }
-    if (heights.empty() && leaning.empty()) return true;
+    if (heights.empty() && leaning.empty()) return {c};
     std::sort(heights.begin(), heights.end());
     heights.erase(std::unique(heights.begin(), heights.end(), [&](double a, double b) { return b - a <= tol; }),
                   heights.end());
@@ -175,25 +185,27 @@ bool LevelSlicing::trimToReach(VoidRegion& c, double h, double z, double low, do
     }
     double before = c.region.area(), after = 0;
     for (const Path& p : reach) after += Area(p) / (kClipperScale * kClipperScale);
-    if (after >= before - std::max(0.01, 1e-4 * before)) return true;
-    // The largest piece reachable from above stays.
+    if (after >= before - std::max(0.01, 1e-4 * before)) return {c};
     Clipper pieces;
     pieces.AddPaths(reach, ptSubject, true);
     PolyTree tree;
     pieces.Execute(ctUnion, tree, pftNonZero, pftNonZero);
-    const PolyNode* best = nullptr;
-    double bestArea = 0;
+    std::vector<const PolyNode*> kept;
+    const PolyNode* largest = nullptr;
+    double largestArea = 0;
     for (const PolyNode* n = tree.GetFirst(); n; n = n->GetNext()) {
         if (n->IsHole()) continue;
         const double a = std::fabs(Area(n->Contour));
-        if (a > bestArea) bestArea = a, best = n;
+        if (a / (kClipperScale * kClipperScale) < 1e-3 * before) continue;
+        kept.push_back(n);
+        if (a > largestArea) largestArea = a, largest = n;
     }
     char b[200];
-    if (!best || bestArea / (kClipperScale * kClipperScale) < 1e-3 * before) {
+    if (!largest) {
         std::snprintf(b, sizeof b, "level %.3f: a region of %.1f mm2 lies wholly under material (an undercut): left out",
                       h, before);
         warnings.push_back(b);
-        return false;
+        return {};
     }
     if (after < unleaned - std::max(0.01, 1e-4 * before)) {
         std::snprintf(b, sizeof b,
@@ -202,63 +214,89 @@ bool LevelSlicing::trimToReach(VoidRegion& c, double h, double z, double low, do
                       h, unleaned - after, before);
         warnings.push_back(b);
     }
-    Region r;
-    r.outer = best->Contour;
-    if (!Orientation(r.outer)) ReversePath(r.outer);
-    for (const PolyNode* hole : best->Childs) {
-        Path p = hole->Contour;
-        if (Orientation(p)) ReversePath(p);
-        r.holes.push_back(p);
-    }
-    r.updateBox();
-    c.region = r;
-    if (!c.region.contains(c.sample)) c.sample = c.region.interiorPoint();
-    // The pieces of the open edges still on the boundary: where an outer segment runs along one.
-    std::vector<std::pair<P2, P2>> open;
-    for (const auto& oe : c.openEdges) {
-        const double ex = oe.second.x - oe.first.x, ey = oe.second.y - oe.first.y, len = std::hypot(ex, ey);
-        if (!(len > 0)) continue;
-        auto along = [&](const P2& p) { return ((p.x - oe.first.x) * ex + (p.y - oe.first.y) * ey) / len; };
-        auto off = [&](const P2& p) { return std::fabs((p.x - oe.first.x) * ey - (p.y - oe.first.y) * ex) / len; };
-        for (std::size_t i = 0; i < r.outer.size(); ++i) {
-            const P2 a = toP2(r.outer[i]), q = toP2(r.outer[(i + 1) % r.outer.size()]);
-            if (off(a) > 1e-3 || off(q) > 1e-3) continue;
-            const double s0 = std::max(0.0, std::min(along(a), along(q))), s1 = std::min(len, std::max(along(a), along(q)));
-            if (s1 - s0 <= 1e-3) continue;
-            open.push_back({{oe.first.x + ex * s0 / len, oe.first.y + ey * s0 / len},
-                            {oe.first.x + ex * s1 / len, oe.first.y + ey * s1 / len}});
+    // Each piece reachable from above that holds some of the floors is a pocket of its own
+    // (the trim may part a bore from the region it joined through a cross hole, or two
+    // pockets alike); a region without floors keeps its largest piece.
+    std::vector<VoidRegion> out;
+    for (const PolyNode* n : kept) {
+        if (c.floors.empty() && n != largest) continue;
+        VoidRegion piece = c;
+        Region& r = piece.region;
+        r.outer = n->Contour;
+        if (!Orientation(r.outer)) ReversePath(r.outer);
+        r.holes.clear();
+        for (const PolyNode* hole : n->Childs) {
+            Path p = hole->Contour;
+            if (Orientation(p)) ReversePath(p);
+            r.holes.push_back(p);
         }
-    }
-    c.openEdges = open;
-    // The walls it still has: faces with a piece of section on the new boundary.
-    auto onBoundary = [&](const P2& m) {
-        auto near = [&](const Path& path) {
-            for (std::size_t i = 0; i < path.size(); ++i)
-                if (segmentDistance(m, toP2(path[i]), toP2(path[(i + 1) % path.size()])) <= tol) return true;
+        r.updateBox();
+        if (!c.floors.empty() && !keepReachedFloors(piece)) continue;
+        if (!r.contains(piece.sample)) piece.sample = r.interiorPoint();
+        // The islands standing in this piece.
+        piece.islandFaces.clear(), piece.islandLoops.clear();
+        for (std::size_t k = 0; k < c.islandLoops.size(); ++k) {
+            const SectionLoop* L = c.islandLoops[k];
+            if (L && !L->pts.empty() && PointInPolygon(toInt(L->pts.front()), r.outer) == 0) continue;
+            piece.islandFaces.push_back(c.islandFaces[k]);
+            piece.islandLoops.push_back(L);
+        }
+        // The pieces of the open edges still on the boundary: where an outer segment runs along one.
+        std::vector<std::pair<P2, P2>> open;
+        for (const auto& oe : c.openEdges) {
+            const double ex = oe.second.x - oe.first.x, ey = oe.second.y - oe.first.y, len = std::hypot(ex, ey);
+            if (!(len > 0)) continue;
+            auto along = [&](const P2& p) { return ((p.x - oe.first.x) * ex + (p.y - oe.first.y) * ey) / len; };
+            auto off = [&](const P2& p) { return std::fabs((p.x - oe.first.x) * ey - (p.y - oe.first.y) * ex) / len; };
+            for (std::size_t i = 0; i < r.outer.size(); ++i) {
+                const P2 a = toP2(r.outer[i]), q = toP2(r.outer[(i + 1) % r.outer.size()]);
+                if (off(a) > 1e-3 || off(q) > 1e-3) continue;
+                const double s0 = std::max(0.0, std::min(along(a), along(q))), s1 = std::min(len, std::max(along(a), along(q)));
+                if (s1 - s0 <= 1e-3) continue;
+                open.push_back({{oe.first.x + ex * s0 / len, oe.first.y + ey * s0 / len},
+                                {oe.first.x + ex * s1 / len, oe.first.y + ey * s1 / len}});
+            }
+        }
+        piece.openEdges = open;
+        // The walls it still has: faces with a piece of section on the new boundary.
+        auto onBoundary = [&](const P2& m) {
+            auto near = [&](const Path& path) {
+                for (std::size_t i = 0; i < path.size(); ++i)
+                    if (segmentDistance(m, toP2(path[i]), toP2(path[(i + 1) % path.size()])) <= tol) return true;
+                return false;
+            };
+            if (near(r.outer)) return true;
+            for (const Path& hp : r.holes)
+                if (near(hp)) return true;
             return false;
         };
-        if (near(r.outer)) return true;
-        for (const Path& hp : r.holes)
-            if (near(hp)) return true;
-        return false;
-    };
-    std::vector<int> walls;
-    for (const SectionLoop* L : c.contourLoops)
-        for (std::size_t k = 0; k < L->pts.size(); ++k) {
-            const P2& a = L->pts[k];
-            const P2& q = L->pts[(k + 1) % L->pts.size()];
-            const int f = L->faces[k];
-            if (std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end() &&
-                std::find(walls.begin(), walls.end(), f) == walls.end() && onBoundary({0.5 * (a.x + q.x), 0.5 * (a.y + q.y)}))
+        std::vector<int> walls, others;
+        for (const SectionLoop* L : c.contourLoops)
+            for (std::size_t k = 0; k < L->pts.size(); ++k) {
+                const P2& a = L->pts[k];
+                const P2& q = L->pts[(k + 1) % L->pts.size()];
+                const int f = L->faces[k];
+                if (!onBoundary({0.5 * (a.x + q.x), 0.5 * (a.y + q.y)})) continue;
+                const bool wall = std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end();
+                pushUnique(wall ? walls : others, f);
+            }
+        // A leaning wall bounds the region at its foot, below the slice: those beside this piece.
+        for (int f : leaningFaces) {
+            P2 lo, hi;
+            view_.faceBox(f, lo, hi);
+            if (hi.x >= r.lo.x - tol && lo.x <= r.hi.x + tol && hi.y >= r.lo.y - tol && lo.y <= r.hi.y + tol)
                 walls.push_back(f);
         }
-    // A leaning wall bounds the region at its foot, below the slice.
-    walls.insert(walls.end(), leaningFaces.begin(), leaningFaces.end());
-    std::vector<int> kept;
-    for (int f : c.contourFaces)
-        if (std::find(walls.begin(), walls.end(), f) != walls.end()) kept.push_back(f);
-    if (!kept.empty()) c.contourFaces = kept;
-    return true;
+        std::vector<int> wallsKept;
+        for (int f : c.contourFaces)
+            if (std::find(walls.begin(), walls.end(), f) != walls.end()) wallsKept.push_back(f);
+        // A piece parted from the region's walls (a bore reached through a cross hole) is
+        // bounded by the faces of the section along its own boundary.
+        if (wallsKept.empty()) wallsKept = others;
+        if (!wallsKept.empty()) piece.contourFaces = wallsKept;
+        out.push_back(std::move(piece));
+    }
+    return out;
 }
 
 double LevelSlicing::sliceHeight(std::size_t k, std::vector<int>& ups, double* low) const {
@@ -395,7 +433,9 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
         } else if (drillPoint) {
             type = ElementType::ClosedPocket;
         } else if (bottom || leavesPart(c, h, z)) {
-            type = ElementType::Opening;
+            // Walls ending on material (the rounds of a pocket below continuing them) make a
+            // pocket whose floor is the cavity below: taken down to its level, not through.
+            type = !bottom && materialUnder(c, h) ? ElementType::ClosedPocket : ElementType::Opening;
         } else {
             continue;
         }
@@ -409,46 +449,47 @@ void LevelSlicing::slice(std::size_t k, int setupId, std::vector<ElementDraft>& 
             // in its floor): not machinable here.
             if (capped(c, z)) continue;
         }
-        if (!trimToReach(c, h, z, low, topOf(c), warnings)) continue;
-        ElementDraft in;
-        DomainElement& e = in.el;
-        e.id = static_cast<int>(made.size());
-        e.setup = setupId;
-        e.type = type;
-        e.level = h;
-        e.area = c.region.area();
-        e.minWidth = -1;  // measured once it is known to stay (measureWidths)
-        for (int f : c.contourFaces) e.contourFaces.push_back(f + 1);
-        for (auto& isl : c.islandFaces) {
-            std::vector<int> v;
-            for (int f : isl) v.push_back(f + 1);
-            e.islandFaces.push_back(v);
+        for (const VoidRegion& piece : trimToReach(c, h, z, low, topOf(c), warnings)) {
+            ElementDraft in;
+            DomainElement& e = in.el;
+            e.id = static_cast<int>(made.size());
+            e.setup = setupId;
+            e.type = type;
+            e.level = h;
+            e.area = piece.region.area();
+            e.minWidth = -1;  // measured once it is known to stay (measureWidths)
+            for (int f : piece.contourFaces) e.contourFaces.push_back(f + 1);
+            for (auto& isl : piece.islandFaces) {
+                std::vector<int> v;
+                for (int f : isl) v.push_back(f + 1);
+                e.islandFaces.push_back(v);
+            }
+            for (int f : piece.floors) {
+                e.floorFaces.push_back(f + 1);
+                e.floorArea += faces_.area(f);
+            }
+            const double top = topOf(piece);
+            e.top = top;
+            e.depth = top - e.level;
+            for (const IntPoint& ip : piece.region.outer) e.contour.push_back(frame.world(toP2(ip), h));
+            for (const Path& hp : piece.region.holes) {
+                Polyline pl;
+                for (const IntPoint& ip : hp) pl.push_back(frame.world(toP2(ip), h));
+                e.islands.push_back(pl);
+                e.islandTops.push_back(islandTop(piece, hp, e.top));
+            }
+            for (auto& oe : piece.openEdges) e.openEdges.push_back({frame.world(oe.first, h), frame.world(oe.second, h)});
+            measureCorners(piece, faces_, fs, e);
+            for (int rt : piece.ribTops) {
+                AttachedFeature a;
+                a.kind = "island_top";
+                a.faces = {rt + 1};
+                e.attached.push_back(a);
+            }
+            in.region = piece.region;
+            in.sample = piece.sample;
+            made.push_back(std::move(in));
         }
-        for (int f : c.floors) {
-            e.floorFaces.push_back(f + 1);
-            e.floorArea += faces_.area(f);
-        }
-        const double top = topOf(c);
-        e.top = top;
-        e.depth = top - e.level;
-        for (const IntPoint& ip : c.region.outer) e.contour.push_back(frame.world(toP2(ip), h));
-        for (const Path& hp : c.region.holes) {
-            Polyline pl;
-            for (const IntPoint& ip : hp) pl.push_back(frame.world(toP2(ip), h));
-            e.islands.push_back(pl);
-            e.islandTops.push_back(islandTop(c, hp, e.top));
-        }
-        for (auto& oe : c.openEdges) e.openEdges.push_back({frame.world(oe.first, h), frame.world(oe.second, h)});
-        measureCorners(c, faces_, fs, e);
-        for (int rt : c.ribTops) {
-            AttachedFeature a;
-            a.kind = "island_top";
-            a.faces = {rt + 1};
-            e.attached.push_back(a);
-        }
-        in.region = c.region;
-        in.sample = c.sample;
-        made.push_back(std::move(in));
     }
 }
 
@@ -520,6 +561,39 @@ bool LevelSlicing::leavesPart(VoidRegion& c, double h, double z) const {
     const Vec3 q = view_.frame.world(c.sample, z);
     const double margin = std::max(0.1, 100 * view_.tol.linear);
     return view_.rays().firstHit(q, false) > z - h + margin;
+}
+
+bool LevelSlicing::keepReachedFloors(VoidRegion& c) const {
+    auto reached = [&](int f) { return c.region.contains(view_.frame.project(faces_.interiorPoint(f))); };
+    c.floors.erase(std::remove_if(c.floors.begin(), c.floors.end(), [&](int f) { return !reached(f); }), c.floors.end());
+    c.ribTops.erase(std::remove_if(c.ribTops.begin(), c.ribTops.end(), [&](int f) { return !reached(f); }),
+                    c.ribTops.end());
+    return !c.floors.empty();
+}
+
+bool LevelSlicing::materialUnder(const VoidRegion& c, double h) const {
+    // As deep as an opening is broken through, the cutter's corner radius below that.
+    const double depth = 2.0;
+    const double tol = 10 * view_.tol.linear;
+    double zp = h - depth;
+    for (double x : critical_)
+        if (std::fabs(x - zp) <= tol) zp = x - 3 * tol;  // a plane through an edge cuts badly
+    const Paths under = materialAt(zp);
+    if (under.empty()) return false;
+    // Inside the region by more than the sections' chords: a wall's own section is no material under.
+    const double inset = std::max(0.05, 10 * view_.tol.chord);
+    ClipperOffset off;
+    off.AddPaths(c.region.paths(), jtMiter, etClosedPolygon);
+    Paths inner;
+    off.Execute(inner, -inset * kClipperScale);
+    Clipper clip;
+    clip.AddPaths(inner, ptSubject, true);
+    clip.AddPaths(under, ptClip, true);
+    Paths both;
+    clip.Execute(ctIntersection, both, pftNonZero, pftEvenOdd);
+    double area = 0;
+    for (const Path& p : both) area += std::fabs(Area(p)) / (kClipperScale * kClipperScale);
+    return area > std::max(0.05, 1e-4 * c.region.area());
 }
 
 }  // namespace aeronc::recognition

@@ -37,12 +37,13 @@ private:
     // The height the level is cut at (above its floor fillets), with the floors there; `low`:
     // just above the fillets, where the material a leaning wall stands on is widest.
     double sliceHeight(std::size_t k, std::vector<int>& ups, double* low = nullptr) const;
-    // Leaves out of c's region what lies under material between the slice z and `top` (an
-    // undercut, with a warning) and the material that walls leaning back from the floor (a
-    // bevel facing up, a round falling past the floor) hold between the slice and `low`,
-    // keeping the largest piece reachable from above; false when nothing is reachable.
-    bool trimToReach(VoidRegion& c, double h, double z, double low, double top,
-                       std::vector<std::string>& warnings) const;
+    // The pieces of c's region reachable from above: what lies under material between the slice
+    // z and `top` (an undercut, with a warning) and the material that walls leaning back from
+    // the floor (a bevel facing up, a round falling past the floor) hold between the slice and
+    // `low` are left out. Of a region with floors each piece holding some of them (with those
+    // floors), else the largest piece; none when nothing is reachable.
+    std::vector<VoidRegion> trimToReach(const VoidRegion& c, double h, double z, double low, double top,
+                                        std::vector<std::string>& warnings) const;
     // The material at height zl within the boxes of c's contour faces that lean back between
     // zl and z, as paths; empty when none leans.
     // `leaning` receives those faces.
@@ -55,6 +56,12 @@ private:
     std::vector<int> cutFaces(double z) const;
     bool useful(std::size_t k, const std::vector<bool>& claimed) const;
     bool leavesPart(VoidRegion& c, double h, double z) const;
+    // Drops the floors and rib tops of c that its (trimmed) region no longer holds; false when
+    // no floor is left.
+    bool keepReachedFloors(VoidRegion& c) const;
+    // Whether the part holds material a little under the level inside c's region (away from
+    // its walls): walls ending there end on it, so no opening leaves the part there.
+    bool materialUnder(const VoidRegion& c, double h) const;
     // Whether material lies above the region anywhere, seen from the slice at z.
     bool capped(const VoidRegion& c, double z) const;
 

@@ -32,6 +32,14 @@
 namespace aeronc::recognition {
 namespace {
 
+// The same finding made twice (a level sliced again after trimming) is said once, in its first place.
+void dropRepeatedWarnings(std::vector<std::string>& warnings) {
+    std::vector<std::string> kept;
+    for (std::string& w : warnings)
+        if (std::find(kept.begin(), kept.end(), w) == kept.end()) kept.push_back(std::move(w));
+    warnings = std::move(kept);
+}
+
 class Recogniser {
 public:
     Recogniser(const TopoDS_Shape& solid, const RecogniseOptions& o)
@@ -79,6 +87,7 @@ public:
                 accounted[i] = true;
             }
         reportUnclaimedFaces(tree_, accounted);
+        dropRepeatedWarnings(tree_.warnings);
         trace("face roles", tr);
         trace("recognition", t0);
         return std::move(tree_);
@@ -194,6 +203,7 @@ private:
         setup.name = directionName(view.frame.w);
 
         std::vector<ElementDraft> made;
+        const std::size_t firstWarning = tree_.warnings.size();
         if (!holesOnly) {
             LevelSlicing slicing(view, widths_, tree_.warnings);
             const std::vector<double>& levels = slicing.levels();
@@ -210,6 +220,9 @@ private:
                              levels.size(), made.size(),
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         }
+        // A level means nothing without its setup, and two setups may meet the same level.
+        for (std::size_t i = firstWarning; i < tree_.warnings.size(); ++i)
+            tree_.warnings[i] = "setup " + setup.name + ", " + tree_.warnings[i];
         progress(1.0, "linking " + setup.name);
         const auto tl = std::chrono::steady_clock::now();
         linkPocketTree(made, tol_.linear);

@@ -5,6 +5,7 @@
 #include "Validate.h"
 
 #include <aeronc/core/Error.h>
+#include <aeronc/toolpath/FloorFillet.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,18 @@ Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const
                              " mm) is not larger than the cutter and its allowance: drill it instead");
         const double floor = h.through ? h.bottom - p.breakThrough - cutter.cornerRadius : h.bottom + p.axialAllowance;
         if (!(floor < h.top)) throw inputError(what + ": the axial allowance leaves nothing to cut");
+        // A blind hole's floor fillet holds the cutter off the wall near the floor, as on a
+        // pocket's walls (FloorFillet.h): the radius at a height above the floor.
+        const double rf = h.through ? 0.0 : h.floorFilletRadius;
+        requireFinite(rf, what + "'s floor fillet radius");
+        auto roughAt = [&](double above) {
+            return rough - wallFilletOffset(rf, cutter.cornerRadius, p.radialAllowance, std::max(0.0, above));
+        };
+        const double roughFloor = roughAt(0);
+        const double finishFloor = finish - floorFilletOffset(rf, cutter.cornerRadius, p.finishingAllowance);
+        if (!(roughFloor > tol) || !(finishFloor > tol))
+            throw inputError(what + ": its floor fillet (radius " + std::to_string(rf) +
+                             " mm) leaves the cutter no room to go round at the floor");
         // Pitch: at most the step-down, and no steeper than the ramp angle on the helix.
         const double pitch = std::min(p.stepDown, 2 * M_PI * rough * tanAngle / chordFactor(rough, tol));
         const double start = entryTop(p, h.top) + approach;
@@ -48,12 +61,25 @@ Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const
         const Point first = onCircle(h.centre, rough, a0);
         if (!w.started()) w.rapid(first[0], first[1], hs.safe);
         w.rapidOver(first, hs.clearance, start);
-        double a = helixMoves(w, h.centre, rough, a0, sign * 2 * M_PI * turns, floor, tol);
-        a = helixMoves(w, h.centre, rough, a, sign * 2 * M_PI, floor, tol);  // the flat turn at the bottom
+        // Down at the full radius to where the fillet begins to bind, then drawn in by it.
+        const double band = std::min(start - floor, std::max(0.0, rf - cutter.cornerRadius - p.radialAllowance));
+        double a = helixMoves(w, h.centre, rough, a0, sign * 2 * M_PI * (start - floor - band) / pitch, floor + band, tol);
+        if (band > 0) {
+            const double angle = sign * 2 * M_PI * band / pitch;
+            const std::size_t n = arcSegments(rough, std::fabs(angle), tol);
+            const double h0 = w.h();
+            for (std::size_t k = 1; k <= n; ++k) {
+                const double t = double(k) / n;
+                const double hk = k == n ? floor : h0 + (floor - h0) * t;
+                w.feed(onCircle(h.centre, roughAt(hk - floor), a + angle * t), hk);
+            }
+            a += angle;
+        }
+        a = helixMoves(w, h.centre, roughFloor, a, sign * 2 * M_PI, floor, tol);  // the flat turn at the bottom
         // Straight out to the finishing radius, once round, and in to the centre, off the wall.
-        const Point out = onCircle(h.centre, finish, a);
+        const Point out = onCircle(h.centre, finishFloor, a);
         w.feed(out, floor);
-        a = helixMoves(w, h.centre, finish, a, sign * 2 * M_PI, floor, tol);
+        a = helixMoves(w, h.centre, finishFloor, a, sign * 2 * M_PI, floor, tol);
         w.feed(h.centre, floor);
         w.retract(hs.clearance);
     }

@@ -100,7 +100,11 @@ Polyline sideOffset(const Polyline& drive, double d, int side, double tol) {
         for (std::size_t i = 0; i < n; ++i) {
             const Point p = clip::toPoint(path[i]);
             const Projection pr = project(drive, p);
-            const bool beyond = (pr.segment == 0 && pr.t < -1e-6) || (pr.segment + 2 == drive.size() && pr.t > 1 + 1e-6);
+            // Every point of the band's outline but those on its butt ends lies at d from the
+            // drive; a vertex nearer lies on an end (where the band meets itself) and would take
+            // the cutter over the drive's end into what lies beyond it.
+            const bool beyond = (pr.segment == 0 && pr.t < -1e-6) || (pr.segment + 2 == drive.size() && pr.t > 1 + 1e-6) ||
+                                pr.distance < d - tol;
             const double c = cross(sub(drive[pr.segment + 1], drive[pr.segment]), sub(p, pr.at));
             sideOf[i] = beyond ? 0 : (c > 0 ? 1 : c < 0 ? -1 : 0);
         }

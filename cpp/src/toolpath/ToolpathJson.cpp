@@ -116,6 +116,7 @@ std::vector<Hole> holes(const json& j) {
         x.top = required(h, "top");
         x.bottom = required(h, "bottom");
         x.through = h.value("through", false);
+        x.floorFilletRadius = h.value("floorFilletRadius", 0.0);
         out.push_back(x);
     }
     return out;

@@ -1,14 +1,12 @@
 #include <aeronc/toolselect/ElementPlanning.h>
 
 #include <aeronc/core/Error.h>
+#include <aeronc/core/SpindleSpeed.h>
 #include <aeronc/recognition/SetupFrame.h>
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include <sstream>
 
 namespace aeronc::toolselect {
@@ -19,7 +17,6 @@ using recognition::ElementType;
 
 namespace {
 constexpr double kDrillTol = 0.01;  // mm: a drill of the hole's diameter within this
-constexpr double kPi = 3.14159265358979323846;
 
 std::string fmt(double x) {
     std::ostringstream s;
@@ -78,7 +75,7 @@ PocketGeometry pocketGeometry(const DomainElement& e, const Vec3& setupDirection
 CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta,
                                 double maxSpindleRpm) {
     CuttingData d;
-    double n = 1000.0 * vc / (kPi * tool.diameter);  // r/min
+    double n = spindleSpeed(vc, tool.diameter);  // r/min
     if (maxSpindleRpm > 0) n = std::min(n, maxSpindleRpm);
     d.ae = aeRatio * tool.diameter;
     d.feedPerMinute = fz * tool.flutes * n;
@@ -193,69 +190,6 @@ ToolPlan planTools(const DomainTree& tree, const std::vector<Tool>& tools, const
         plan.groupsAfter.push_back(ge);
     }
     return plan;
-}
-
-std::string toJson(const ToolPlan& plan, const std::string& material, int indent) {
-    using nlohmann::json;
-    auto toolId = [&](int i) { return i < 0 ? json(nullptr) : json(plan.tools[static_cast<std::size_t>(i)].id); };
-    auto num = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
-    json j;
-    j["material"] = material;
-    j["elements"] = json::array();
-    for (const ElementChoice& c : plan.elements) {
-        const bool rough = c.roughingTool >= 0;
-        j["elements"].push_back({{"id", c.element},
-                                 {"type", recognition::toString(c.type)},
-                                 {"finishingTool", toolId(c.finishingTool)},
-                                 {"roughingTool", toolId(c.roughingTool)},
-                                 {"eta", rough ? num(c.ratio.eta) : json(nullptr)},
-                                 {"area", rough ? num(c.ratio.area) : json(nullptr)},
-                                 {"narrowPassages", rough ? json(c.ratio.narrowPassages) : json(nullptr)},
-                                 {"error", c.error.empty() ? json(nullptr) : json(c.error)}});
-    }
-    j["holes"] = json::array();
-    for (const HoleChoice& h : plan.holes)
-        j["holes"].push_back({{"id", h.element},
-                              {"diameter", num(h.diameter)},
-                              {"drill", toolId(h.drill)},
-                              {"error", h.error.empty() ? json(nullptr) : json(h.error)}});
-    auto groups = [&](const std::vector<GroupElements>& gs) {
-        json a = json::array();
-        for (const GroupElements& g : gs) a.push_back({{"tool", toolId(g.tool)}, {"elements", g.elements}});
-        return a;
-    };
-    j["groups"] = {{"before", groups(plan.groupsBefore)}, {"after", groups(plan.groupsAfter)}};
-    j["toolChanges"] = {{"before", plan.merge.toolChangesBefore}, {"after", plan.merge.toolChangesAfter}};
-    j["timeMin"] = {{"before", num(plan.merge.timeBefore)}, {"after", num(plan.merge.timeAfter)}};
-    j["toolSettings"] = json::array();
-    for (const ToolSetting& t : plan.settings)
-        j["toolSettings"].push_back({{"tool", toolId(t.tool)},
-                                     {"operation", t.operation},
-                                     {"spindleRpm", num(t.spindleRpm)},
-                                     {"feedMmMin", num(t.feedMmMin)},
-                                     {"plungeFeedMmMin", num(t.plungeFeedMmMin)},
-                                     {"vc", num(t.vc)},
-                                     {"fz", num(t.fz)},
-                                     {"ap", num(t.ap)},
-                                     {"ae", num(t.ae)}});
-    j["tools"] = json::object();
-    std::set<int> listed;
-    for (const ElementChoice& c : plan.elements) listed.insert(c.finishingTool), listed.insert(c.roughingTool);
-    for (const HoleChoice& h : plan.holes) listed.insert(h.drill);
-    for (const ToolSetting& t : plan.settings) listed.insert(t.tool);
-    for (int i : listed) {
-        if (i < 0) continue;
-        const Tool& t = plan.tools[static_cast<std::size_t>(i)];
-        j["tools"][t.id] = {{"type", t.type},         {"material", t.material},  {"diameter", t.diameter},
-                            {"cornerRadius", t.cornerRadius}, {"fluteLength", t.fluteLength}, {"reach", t.reach},
-                            {"flutes", t.flutes}};
-    }
-    j["merges"] = json::array();
-    for (const MergeReport::Step& s : plan.merge.merges)
-        j["merges"].push_back({{"kept", toolId(static_cast<int>(s.keptTool))},
-                               {"dropped", toolId(static_cast<int>(s.droppedTool))},
-                               {"mu", num(s.mu)}});
-    return j.dump(indent);
 }
 
 }  // namespace aeronc::toolselect

@@ -157,9 +157,21 @@ private:
             const std::size_t c = grid_.index(i, j);
             if (lengthIn(part_.begin(c), part_.end(c), z0, z1) > half) break;  // the part again
             if (stockBeyondPart(stock_, part_, c, z0, z1) <= half) break;      // clear
+            // Alongside another wall (a sample by a sharp corner walking down the neighbouring
+            // wall's allowance): what is met is that wall's material, not this one's thickness.
+            if (last >= 0 && (partBeside(x + tc * nx - grid_.cell * ny, y + tc * ny + grid_.cell * nx, z0, z1, half) ||
+                              partBeside(x + tc * nx + grid_.cell * ny, y + tc * ny - grid_.cell * nx, z0, z1, half)))
+                break;
             last = tc;
         }
         return last < 0 ? 0 : std::min(last + 0.5 * grid_.cell, o_.wallSearch);
+    }
+
+    bool partBeside(double x, double y, double z0, double z1, double half) const {
+        int i, j;
+        if (!grid_.cellAt(x, y, i, j)) return false;
+        const std::size_t c = grid_.index(i, j);
+        return lengthIn(part_.begin(c), part_.end(c), z0, z1) > half;
     }
 
     const TriangleMesh& mesh_;

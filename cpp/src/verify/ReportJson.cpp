@@ -66,7 +66,9 @@ json toJson(const SimulationReport& r) {
                        {"segments", o.segments},
                        {"removedVolume", mm(o.removedVolume)},
                        {"gouges", o.gougingMoves},
-                       {"collisions", o.collidingMoves}});
+                       {"collisions", o.collidingMoves},
+                       {"worstGouge", mm(o.worstGouge)},
+                       {"worstCollision", mm(o.worstCollision)}});
     json faces = json::array();
     for (const auto& f : r.coverage.faces)
         faces.push_back({{"face", f.face},

@@ -35,9 +35,11 @@ public:
         ++r_.cells;
         if (!segmentWorst_ || h.depth > segmentWorst_->depth) segmentWorst_ = h;
     }
-    // Returns true when the segment's move offends and was not counted yet.
-    bool endSegment() {
+    // Returns true when the segment's move offends and was not counted yet; opWorst: the
+    // deepest offence of the operation so far, raised to this segment's.
+    bool endSegment(double& opWorst) {
         if (!segmentWorst_) return false;
+        opWorst = std::max(opWorst, segmentWorst_->depth);
         MoveEvent e;
         e.operation = op_, e.label = *label_, e.move = seg_->move, e.tip = seg_->to;
         e.depth = segmentWorst_->depth, e.wall = segmentWorst_->wall, e.face = segmentWorst_->face;
@@ -188,8 +190,8 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
                 removed += s > 0 ? run.stock.removeAbove(c, h) : run.stock.removeBelow(c, -h);
             }
         }
-        if (run.gouges.endSegment()) ++summary.gougingMoves;
-        if (run.collisions.endSegment()) ++summary.collidingMoves;
+        if (run.gouges.endSegment(summary.worstGouge)) ++summary.gougingMoves;
+        if (run.collisions.endSegment(summary.worstCollision)) ++summary.collidingMoves;
     }
     summary.removedVolume = removed * grid.cellArea();
 }

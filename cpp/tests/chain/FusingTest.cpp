@@ -201,6 +201,36 @@ TEST(Fusing, BevelsAFlatEndMillCannotFinishAreListedWithTheirFaces) {
     EXPECT_EQ(listed, (std::vector<std::vector<int>>{{202, 203}, {204}, {205}}));
 }
 
+// A blind counterbore with a fillet between wall and floor (milled_002's four): its helix unit
+// carries the fillet, so the cutter keeps out of it near the floor (HelicalHole); a through
+// hole has none.
+TEST(Fusing, BlindHoleCarriesItsFloorFilletToTheHelix) {
+    recognition::DomainTree t = test::smallTree();
+    recognition::DomainElement& e = t.elements[2];
+    e.hole->through = false;
+    e.hole->diameter = 12;
+    e.minWidth = 12;
+    e.minCornerRadius = 6;
+    e.floorFaces = {301};
+    e.floorFilletRadius = 1.5;
+    toolselect::ToolPlan plan = test::smallPlan();
+    plan.holes[0].diameter = 12;
+    plan.holes[0].drill = -1;
+    MachiningChain c = buildChain(t, plan, parseTemplate(test::panelRows()), test::smallOptions());
+    const MachiningUnit* helix = nullptr;
+    for (const MachiningUnit& u : c.units)
+        if (u.element == 2 && u.operation == Operation::Helix) helix = &u;
+    ASSERT_NE(helix, nullptr);
+    ASSERT_EQ(helix->holes.size(), 1u);
+    EXPECT_DOUBLE_EQ(helix->holes[0].floorFilletRadius, 1.5);
+    EXPECT_EQ(toJson(fromJson(toJson(c))), toJson(c));
+    e.hole->through = true;
+    e.floorFaces.clear();
+    c = buildChain(t, plan, parseTemplate(test::panelRows()), test::smallOptions());
+    for (const MachiningUnit& u : c.units)
+        for (const HoleTarget& h : u.holes) EXPECT_EQ(h.floorFilletRadius, 0) << "unit " << u.id;
+}
+
 // A hole a wall stands over (recognition's overhung) gets no drill and no helix: the chain
 // lists it with the reason.
 TEST(Fusing, OverhungHoleIsListedNotDrilled) {

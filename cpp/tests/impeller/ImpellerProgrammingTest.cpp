@@ -5,6 +5,7 @@
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impeller/ProcessRoute.h>
+#include <aeronc/kb/ImpellerProgram.h>
 #include <aeronc/kb/ImpellerRoute.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
@@ -189,5 +190,91 @@ TEST(ImpellerRoute, FollowsTheDimensions) {
     auto bad = rules;
     bad[0].toolRule = "guess";
     EXPECT_NE(test::inputErrorOf([&] { planRoute(r.features, r.dims, bad, tools); }).find("unknown tool rule"),
+              std::string::npos);
+}
+
+// The one impeller program (kb::programImpeller, what the command line, the Python module and
+// Program impeller all use): tool numbers in route order, one per tool; the 5-axis tools cut at
+// the cutting-parameter optimiser's speeds for their own toolpaths' engagement, the facing,
+// drilling and boring tools at the knowledge base's; the operations carry those speeds.
+TEST(ImpellerProgram, OneProgramWithTheOptimisersCuttingData) {
+    testparts::ImpellerSpec spec;
+    spec.bladeCount = 4;
+    spec.splitters = false;
+    const auto r = recognised(spec);
+    const auto kb = defaultKb("program");
+    const auto route = kb::planImpellerRoute(kb, r.features, r.dims);
+    kb::ImpellerProgramOptions o;
+    o.paths.stations = 3, o.paths.channels = 1;
+    const auto prog = kb::programImpeller(r.part.shape, r.features, r.dims, route.steps, kb, o);
+
+    // Numbers: one per distinct tool, in route order; the hub shares the blades' tool.
+    std::map<std::string, int> numberOf;
+    int last = 0;
+    for (const auto& s : route.steps) {
+        if (!s.tool) continue;
+        const int n = prog.toolNumbers.at(s.position);
+        if (numberOf.emplace(s.tool->id, n).second) EXPECT_EQ(n, ++last) << s.operation;
+        EXPECT_EQ(n, numberOf.at(s.tool->id)) << s.operation;
+    }
+    EXPECT_GE(last, 5);
+
+    const auto machine = kb.machine("AC-5AX");
+    ASSERT_FALSE(prog.cutting.empty());
+    std::map<std::string, const kb::ToolCutting*> cuttingOf;
+    for (const auto& c : prog.cutting) cuttingOf[c.tool] = &c;
+    for (const auto& s : route.steps) {
+        if (!s.tool) continue;
+        const auto* c = cuttingOf.count(s.tool->id) ? cuttingOf.at(s.tool->id) : nullptr;
+        ASSERT_NE(c, nullptr) << s.operation << " " << s.tool->id;
+        EXPECT_LE(c->rpm, machine.maxSpindleRpm * (1 + 1e-12)) << c->tool;
+        EXPECT_LE(c->feed, machine.maxFeedMmMin * (1 + 1e-12)) << c->tool;
+        EXPECT_GT(c->length, 0) << c->tool;
+        if (s.operation == "face" || s.operation == "drill" || s.operation == "bore") {
+            // The knowledge base's v_c and f_z: n = 1000 v_c / (pi D), v_f = f_z Z n, capped.
+            EXPECT_EQ(c->active, std::vector<std::string>{"knowledge base"});
+            EXPECT_DOUBLE_EQ(c->rpm, std::min(1000 * c->kbVc / (kPi * s.tool->diameter), machine.maxSpindleRpm));
+            EXPECT_NEAR(c->feed, std::min(c->kbFz * s.tool->flutes * c->rpm, machine.maxFeedMmMin), 1e-9);
+        } else {
+            // The optimiser's optimum: within its chip load (1.5 x the knowledge base's f_z), with
+            // the limits it met named, v_f = f_z Z n; not the knowledge base's raw speed.
+            EXPECT_NE(c->active, std::vector<std::string>{"knowledge base"}) << c->tool;
+            EXPECT_LE(c->fz, 1.5 * c->kbFz * (1 + 1e-9)) << c->tool;
+            EXPECT_NEAR(c->feed, c->fz * s.tool->flutes * c->rpm, 1e-6 * c->feed) << c->tool;
+            EXPECT_NE(c->rpm, std::min(1000 * c->kbVc / (kPi * s.tool->diameter), machine.maxSpindleRpm)) << c->tool;
+        }
+    }
+    // Every operation's cutter carries its tool's number and speeds (the CL program's S and F).
+    auto expectSpeeds = [&](const std::vector<impellerpath::Operation>& ops) {
+        for (const auto& op : ops) {
+            if (op.name == "turn") continue;  // the lathe's insert is the core's own
+            ASSERT_TRUE(cuttingOf.count(op.cutter.id)) << op.name;
+            EXPECT_EQ(op.cutter.rpm, cuttingOf.at(op.cutter.id)->rpm) << op.name;
+            EXPECT_EQ(op.cutter.feed, cuttingOf.at(op.cutter.id)->feed) << op.name;
+        }
+    };
+    ASSERT_EQ(prog.fiveAxis.operations.size(), 4u);  // roughing, blades, hub, fillets
+    expectSpeeds(prog.fiveAxis.operations);
+    expectSpeeds(prog.axial.operations);
+    // The cut length is the tip's path over the cutting moves.
+    const auto& rough = prog.fiveAxis.operations[0];
+    long double length = 0;
+    for (std::size_t i = 1; i < rough.moves.size(); ++i)
+        if (!rough.moves[i].rapid)
+            length += ((rough.moves[i].centre - rough.cutter.tipRadius * rough.moves[i].axis) -
+                       (rough.moves[i - 1].centre - rough.cutter.tipRadius * rough.moves[i - 1].axis)).norm();
+    EXPECT_NEAR(cuttingOf.at(rough.cutter.id)->length, static_cast<double>(length), 1e-9 * static_cast<double>(length));
+    EXPECT_EQ(prog.rapids.linkCollisions, 0);
+    EXPECT_GT(prog.rapids.links, 0);
+
+    // A tool of the wrong kind is refused before any toolpath is made.
+    auto steps = route.steps;
+    for (auto& s : steps)
+        if (s.operation == "rough_channels") s.tool = steps.front().tool ? steps.front().tool : steps[1].tool;
+    EXPECT_NE(test::inputErrorOf([&] { kb::checkImpellerProgram(steps, kb, o); }).find("the channels need a ball"),
+              std::string::npos);
+    o.material = "unobtainium";
+    EXPECT_NE(test::inputErrorOf([&] { kb::checkImpellerProgram(route.steps, kb, o); })
+                  .find("unknown workpiece material 'unobtainium'"),
               std::string::npos);
 }

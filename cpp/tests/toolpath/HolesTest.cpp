@@ -77,6 +77,40 @@ TEST(HelicalHole, ThroughHoleBreaksThroughBeyondTheCornerRadius) {
     EXPECT_TRUE(crossed);
 }
 
+// A blind counterbore (21.8 mm, R2 fillet between wall and floor; milled_002's four) milled
+// with a flat 16 mm end mill: going round at the full radius down to the floor the cutter
+// took the fillet away (0.46 mm by the verification). Near the floor it is drawn in as the
+// fillet rises: no position, at any height, reaches past the fillet's surface there.
+TEST(HelicalHole, BlindHoleKeepsOutOfItsFloorFillet) {
+    const Point c{5, 7};
+    Hole h{c, 21.8, 20, 6, false};
+    h.floorFilletRadius = 2;
+    HelicalHoleParameters p;
+    p.stepDown = 1;
+    const Toolpath t = helicalHole({h}, {16, 0}, p);
+    const double R = 8, rf = 2, wall = 21.8 / 2;
+    double worst = -1e9, lowest = 1e9, reach = 0;
+    for (const Move& m : t.moves) {
+        if (m.kind == Move::Kind::Rapid) continue;
+        const double above = m.h - h.bottom, rho = dist({m.u, m.v}, c) + R;
+        lowest = std::min(lowest, m.h);
+        // The part's surface at the cutter's bottom: the fillet's arc below rf, the wall above.
+        const double surface = above >= rf ? wall : wall - rf + std::sqrt(rf * rf - (rf - above) * (rf - above));
+        worst = std::max(worst, rho - surface);
+        if (above > rf) reach = std::max(reach, rho);
+    }
+    EXPECT_DOUBLE_EQ(lowest, 6);
+    EXPECT_LE(worst, 1e-9);
+    EXPECT_NEAR(reach, wall, 1e-9);  // above the fillet the wall is cut to size
+    // Through holes have no floor: the fillet does not apply.
+    h.through = true;
+    const Toolpath through = helicalHole({h}, {16, 0}, p);
+    double widest = 0;
+    for (const Move& m : through.moves)
+        if (m.kind != Move::Kind::Rapid && m.h < h.bottom) widest = std::max(widest, dist({m.u, m.v}, c) + R);
+    EXPECT_NEAR(widest, wall, 1e-9);
+}
+
 TEST(HelicalHole, BadInputIsAClearError) {
     const HelicalHoleParameters p;
     EXPECT_NE(inputErrorOf([&] { helicalHole({{{0, 0}, 12, 0, -5, false}}, {12, 0}, p); }).find("not larger"),

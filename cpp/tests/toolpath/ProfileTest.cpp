@@ -281,3 +281,28 @@ TEST(Profile, PassBreaksOffWhereAnotherWallLeavesNoRoom) {
     }
     EXPECT_LT(plainNearest, 2);
 }
+
+// A wall that turns towards the pocket just before its open end (milled_005's ledge running
+// out at the blank through a chamfer): the first stretch's offset runs on past the last
+// segment's butt end, and the band's outline meets that end 3.6 mm from the drive's end
+// point. The pass must start at the end's offset corner, never on the butt end: every cut
+// keeps R + allowance from the whole drive, its end point included.
+TEST(Profile, OpenDriveNeverStartsOnItsButtEnd) {
+    const Loop drive{{0, 40}, {0, 8}, {3, 6}};
+    for (Lead lead : {Lead::None, Lead::Arc}) {
+        ProfileParameters p;
+        p.side = ToolSide::Left;
+        p.lead = lead;
+        p.radialAllowance = 0.2;
+        const Toolpath t = profile({drive, false, {}, {}, 0, -2}, {10, 0}, p);
+        double nearest = 1e9;
+        for (std::size_t i = 1; i < t.moves.size(); ++i) {
+            const Move& a = t.moves[i - 1];
+            const Move& b = t.moves[i];
+            if (b.kind == Move::Kind::Rapid || std::max(a.h, b.h) >= 0) continue;
+            for (std::size_t k = 0; k + 1 < drive.size(); ++k)
+                nearest = std::min(nearest, segmentSegment({a.u, a.v}, {b.u, b.v}, drive[k], drive[k + 1]));
+        }
+        EXPECT_GE(nearest, 5.2 - p.chordTolerance - 1e-9) << (lead == Lead::None ? "no leads" : "arc leads");
+    }
+}

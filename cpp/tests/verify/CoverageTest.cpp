@@ -170,3 +170,34 @@ TEST(Coverage, UnfacedTopIsReportedAsItsThickness) {
     // The raised blank holds the tool's plunge and the retract clear of it.
     EXPECT_EQ(r.collisions.moves, 0u);
 }
+
+// A sharp-cornered pocket roughed with a 0.5 mm radial allowance: each wall keeps the allowance
+// and, by the corners, what the round tool cannot reach (at most its radius plus the allowance).
+// A wall sample right by a corner once walked down the neighbouring wall's allowance and read
+// that wall's length (up to the search limit) as its thickness.
+TEST(Coverage, SampleByASharpCornerDoesNotReadTheNeighbouringWallsAllowance) {
+    const PocketSpec sharp{10, 10, 50, 30, 0, 8};
+    const Plate plate = makePlate(60, 40, 20, {sharp});
+    const double allowance = 0.5;
+    const PocketSpec inner{sharp.x0 + allowance, sharp.y0 + allowance, sharp.x1 - allowance, sharp.y1 - allowance,
+                           kR, sharp.floorZ};
+    Program p;
+    p.cellSize = 0.5;
+    p.hasBlank = true;
+    p.blank = {0, 0, 0, 60, 40, 20};
+    Operation op;
+    op.label = "rough";
+    op.cutter = Cutter::fromDiameter(2 * kR, 0);
+    op.radialAllowance = allowance;
+    op.moves = pocketPath(inner, kR, 2.4, 8, 25);
+    p.operations = {op};
+    for (int w : plate.pockets[0].walls) p.finishedFaces.push_back(w);
+    const SimulationReport r = simulate(plate.mesh, p);
+    EXPECT_EQ(r.gouges.moves, 0u);
+    ASSERT_EQ(r.coverage.faces.size(), plate.pockets[0].walls.size());
+    for (const auto& f : r.coverage.faces) {
+        EXPECT_NEAR(f.uncoveredArea, f.wallArea, 1e-9) << "face " << f.face;  // the allowance everywhere
+        EXPECT_GE(f.maxLeftover, allowance - p.cellSize) << "face " << f.face;
+        EXPECT_LE(f.maxLeftover, kR + allowance + p.cellSize) << "face " << f.face;
+    }
+}

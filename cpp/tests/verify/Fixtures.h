@@ -3,7 +3,7 @@
 // rectangular pockets (rounded corners), meshed by hand, and a pocketing path for a flat end
 // mill that machines such a pocket completely.
 #include <aeronc/verify/Program.h>
-#include <aeronc/verify/TriangleMesh.h>
+#include <aeronc/core/TriangleMesh.h>
 
 #include <algorithm>
 #include <array>

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+using namespace aeronc;
 using namespace aeronc::verify;
 using namespace aeronc::verify::test;
 

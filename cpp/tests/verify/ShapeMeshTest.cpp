@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <filesystem>
 
+using namespace aeronc;
 using namespace aeronc::verify;
 using namespace aeronc::verify::test;
 

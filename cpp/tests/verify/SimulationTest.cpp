@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+using namespace aeronc;
 using namespace aeronc::verify;
 using namespace aeronc::verify::test;
 
@@ -102,6 +103,8 @@ TEST(Simulation, PathTooLowGougesTheFloorByThatMuch) {
     EXPECT_NEAR(r.gouges.worst->position[2], 8, 1e-12);
     EXPECT_EQ(r.gouges.moves, cuttingMoves(path));  // every move at the floor
     EXPECT_EQ(r.operations[0].gougingMoves, cuttingMoves(path));
+    EXPECT_NEAR(r.operations[0].worstGouge, 0.1, 1e-9);  // the operation's own worst, for the gate
+    EXPECT_EQ(r.operations[0].worstCollision, 0);
     EXPECT_EQ(r.collisions.moves, 0u);
     // The leftover map shows the floor 0.1 below where it belongs.
     const Grid& g = r.leftover.grid;
@@ -173,6 +176,8 @@ TEST(Simulation, RapidThroughMaterialCollides) {
     EXPECT_NEAR(r.collisions.worst->depth, kR - 0.25 * std::sqrt(2.0), 1e-9);
     EXPECT_EQ(r.operations[1].collidingMoves, 1u);
     EXPECT_EQ(r.operations[0].collidingMoves, 0u);
+    EXPECT_DOUBLE_EQ(r.operations[1].worstCollision, r.collisions.worst->depth);
+    EXPECT_EQ(r.operations[0].worstCollision, 0);
 }
 
 TEST(Simulation, MinusZToolAxisMachinesFromBelow) {

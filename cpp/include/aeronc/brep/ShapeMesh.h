@@ -1,10 +1,10 @@
 #pragma once
 // The OCCT side of the verification: a B-rep solid as the triangle mesh the dexel model reads.
-#include <aeronc/verify/TriangleMesh.h>
+#include <aeronc/core/TriangleMesh.h>
 
 #include <TopoDS_Shape.hxx>
 
-namespace aeronc::verify {
+namespace aeronc {
 
 // Meshes the shape with BRepMesh_IncrementalMesh (absolute linear deflection in mm, angular
 // deflection in radians) and returns its triangles oriented outward, each tagged with its face's
@@ -12,4 +12,4 @@ namespace aeronc::verify {
 // aeronc::Error when a face gets no triangulation.
 TriangleMesh meshShape(const TopoDS_Shape& shape, double deflection = 0.005, double angularDeflection = 0.5);
 
-}  // namespace aeronc::verify
+}  // namespace aeronc

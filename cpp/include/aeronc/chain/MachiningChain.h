@@ -35,6 +35,8 @@ struct HoleTarget {
     double diameter = 0;
     double top = 0, bottom = 0;  // heights along w; bottom includes the breakthrough of a through hole
     bool through = false;
+    // A blind hole's fillet between wall and floor: the cutter keeps out of it near the floor.
+    double floorFilletRadius = 0;
 };
 
 // One machining unit: a region of one element, one operation, one tool.

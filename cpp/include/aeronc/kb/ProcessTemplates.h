@@ -38,4 +38,18 @@ chain::MachiningChain planChain(const recognition::DomainTree& tree, const Knowl
                                 const std::string& material, const std::string& machine = "",
                                 const std::string& templateOrFamily = "integral_panel");
 
+// The same with the tools planned before (Select tools, `aeronc select-tools`): the plan is
+// taken as it is, not made again. Also throws when the plan names an element the tree does
+// not have.
+chain::MachiningChain planChain(const recognition::DomainTree& tree, const KnowledgeBase& kb,
+                                const toolselect::ToolPlan& toolPlan, const std::string& material,
+                                const std::string& machine = "",
+                                const std::string& templateOrFamily = "integral_panel");
+
+// A tool plan stored as JSON (toolselect::toJson: a Machining Features group's ToolPlan, the
+// CLI's select-tools output) read against the knowledge base's tools; throws inputError for a
+// plan made for another material or with tools the base no longer has as they were.
+toolselect::ToolPlan storedToolPlan(const KnowledgeBase& kb, const std::string& toolPlanJson,
+                                    const std::string& material);
+
 }  // namespace aeronc::kb

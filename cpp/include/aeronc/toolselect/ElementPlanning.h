@@ -86,7 +86,4 @@ ToolPlan planTools(const recognition::DomainTree& tree, const std::vector<Tool>&
 CuttingData roughingCuttingData(const Tool& tool, double vc, double fz, double ap, double aeRatio, double delta,
                                 double maxSpindleRpm = 0);
 
-// JSON text of a plan (the CLI's select-tools output).
-std::string toJson(const ToolPlan& plan, const std::string& material, int indent = 1);
-
 }  // namespace aeronc::toolselect

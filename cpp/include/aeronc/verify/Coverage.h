@@ -12,7 +12,7 @@
 // of the wall) does not count as the wall's.
 #include <aeronc/verify/PartDexels.h>
 #include <aeronc/verify/StockDexels.h>
-#include <aeronc/verify/TriangleMesh.h>
+#include <aeronc/core/TriangleMesh.h>
 
 #include <string>
 #include <utility>

@@ -2,7 +2,7 @@
 // The part as Z-dexels: for each cell centre, the intervals of Z inside the part along the
 // vertical line, each end tagged with the face it lies on.
 #include <aeronc/verify/Grid.h>
-#include <aeronc/verify/TriangleMesh.h>
+#include <aeronc/core/TriangleMesh.h>
 
 #include <cstdint>
 #include <vector>

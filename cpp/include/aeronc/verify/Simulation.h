@@ -47,6 +47,7 @@ struct OperationSummary {
     std::size_t moves = 0, segments = 0;
     double removedVolume = 0;  // mm^3
     std::size_t gougingMoves = 0, collidingMoves = 0;
+    double worstGouge = 0, worstCollision = 0;  // mm, the deepest of the operation's (0: none)
 };
 
 // Per cell: the stock minus the part at the top (stock top - part top) and at the bottom (part

@@ -1,10 +1,10 @@
 #pragma once
-// A part as triangles: what the verification rasterises. No CAD kernel here; ShapeMesh.h makes
-// one from an OCCT shape.
+// A part as triangles: what the verification rasterises. No CAD kernel here; brep/ShapeMesh.h
+// makes one from an OCCT shape.
 #include <array>
 #include <vector>
 
-namespace aeronc::verify {
+namespace aeronc {
 
 using Point3 = std::array<double, 3>;
 
@@ -29,4 +29,4 @@ std::array<double, 6> bounds(const TriangleMesh& mesh);
 // length, or coordinates that are not finite.
 void validate(const TriangleMesh& mesh);
 
-}  // namespace aeronc::verify
+}  // namespace aeronc

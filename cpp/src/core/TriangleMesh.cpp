@@ -1,10 +1,10 @@
 #include <aeronc/core/Error.h>
-#include <aeronc/verify/TriangleMesh.h>
+#include <aeronc/core/TriangleMesh.h>
 
 #include <cmath>
 #include <string>
 
-namespace aeronc::verify {
+namespace aeronc {
 
 int TriangleMesh::addVertex(double x, double y, double z) {
     vertices.push_back({x, y, z});
@@ -55,4 +55,4 @@ void validate(const TriangleMesh& mesh) {
                                  std::to_string(k) + " of " + std::to_string(n));
 }
 
-}  // namespace aeronc::verify
+}  // namespace aeronc

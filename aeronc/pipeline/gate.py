@@ -1,0 +1,82 @@
+"""The gate before a program leaves: which operations are left out of it, and why.
+
+The posted programs are simulated (pipeline.verification). Every operation that gouges the part
+or rapids through material fails its check; so does every operation the toolpath core refused
+(it has no toolpath). A failed operation is left out of the delivered program (the posts'
+--skip-failed, aeronc.post.readiness), and with it what depends on it: the later operations of
+the same element and of the elements inside it (they would cut, with a finishing tool and its
+feeds, the material it was to remove), and any operation that, once the program is posted
+again without them, removes far more material than it did with them. The programs are then
+simulated again; this repeats until nothing fails.
+"""
+from aeronc.operations.base import mark
+from aeronc.post import readiness
+
+# An operation removing more than this much more material once others are left out carries
+# their load: GROWTH times what it removed before, and at least GROWTH_MM3 more.
+GROWTH = 1.5
+GROWTH_MM3 = 100.0
+
+
+def not_ready(ops):
+    """{label: why} of the operations the posts will leave out (no toolpath, failed, no move)."""
+    out = {}
+    for op in ops:
+        if op.Check in readiness.NOT_READY:
+            out[op.Label] = op.Note or op.Check.lower()
+        elif not op.Path.Commands:
+            out[op.Label] = "no toolpath"
+    return out
+
+
+def fail(op, why):
+    """Mark an operation as failed (Check, Note): the posts then refuse it or leave it out."""
+    mark(op, readiness.FAILED, why)
+
+
+def passed(op):
+    """Mark an operation whose simulation in the delivered program found nothing wrong."""
+    mark(op, readiness.PASSED, "")
+
+
+def dependents(ops, left_out, result):
+    """{label: why} of the operations (ops in program order, active ones) that follow a left-out
+    operation of their own element or of an element that contains theirs."""
+    parent = {int(e["id"]): int(e.get("parent", -1)) for e in result.get("elements", [])}
+
+    def ancestors(element):
+        seen = []
+        while element >= 0 and element not in seen:
+            seen.append(element)
+            element = parent.get(element, -1)
+        return seen
+
+    out = {}
+    gone = []  # (element, label) of the left-out operations met so far
+    for op in ops:
+        element = int(getattr(op, "ElementId", -1))
+        if op.Label in left_out or op.Label in out:
+            gone.append((element, op.Label))
+            continue
+        mine = ancestors(element)
+        before = next((label for e, label in gone if e in mine), None)
+        if before is not None:
+            out[op.Label] = "left out with {}: it would cut the material that operation leaves".format(before)
+            gone.append((element, op.Label))
+    return out
+
+
+def grown(first, report, left_out):
+    """{label: why} of the operations that remove far more material in report than in first
+    (the reports of the simulation with and without the left-out operations)."""
+    before = {op["label"]: float(op.get("removedVolume", 0)) for op in first.get("ops", [])}
+    out = {}
+    for op in report.get("ops", []):
+        was = before.get(op["label"])
+        now = float(op.get("removedVolume", 0))
+        if was is not None and now > GROWTH * was and now - was > GROWTH_MM3:
+            out[op["label"]] = ("it would remove {:,.0f} mm\u00b3 instead of {:,.0f} mm\u00b3 once {} {} left "
+                                "out: the load of the operations left out".format(
+                                    now, was, ", ".join(sorted(left_out)[:3]) + (" ..." if len(left_out) > 3 else ""),
+                                    "is" if len(left_out) == 1 else "are"))
+    return out

@@ -1,0 +1,37 @@
+# cmake -DDIR=<folder> -DOUT=<header> -P EmbedSql.cmake
+#
+# Embeds the knowledge base's migration steps, DIR/v<N>_to_v<N+1>.sql, into the header OUT as
+# aeronc::kb::detail::kMigrations (old schema version -> its step's SQL text), so the SQL files
+# are the one source of the migrations. Run at build time whenever a file changes; OUT is only
+# rewritten when its text changes.
+file(GLOB files "${DIR}/*.sql")
+list(SORT files)
+if(NOT files)
+  message(FATAL_ERROR "EmbedSql: no migration files in ${DIR}")
+endif()
+set(text "// Generated from ${DIR}/*.sql by cpp/cmake/EmbedSql.cmake: edit the SQL files, not this.\n")
+string(APPEND text "#pragma once\n#include <map>\n\nnamespace aeronc::kb::detail {\n\n")
+string(APPEND text "// Old schema version -> the SQL that turns a database of that version into the next one.\n")
+string(APPEND text "inline const std::map<int, const char*> kMigrations = {\n")
+foreach(f IN LISTS files)
+  get_filename_component(name "${f}" NAME_WE)
+  if(NOT name MATCHES "^v([0-9]+)_to_v([0-9]+)$")
+    message(FATAL_ERROR "EmbedSql: ${f}: a migration file is named v<N>_to_v<N+1>.sql")
+  endif()
+  set(from ${CMAKE_MATCH_1})
+  set(to ${CMAKE_MATCH_2})
+  math(EXPR next "${from} + 1")
+  if(NOT to EQUAL next)
+    message(FATAL_ERROR "EmbedSql: ${f}: a step goes from one version to the next")
+  endif()
+  file(READ "${f}" sql)
+  string(FIND "${sql}" ")aeronc_sql\"" clash)
+  if(NOT clash EQUAL -1)
+    message(FATAL_ERROR "EmbedSql: ${f} contains the text that ends the embedded string")
+  endif()
+  string(APPEND text "    {${from}, R\"aeronc_sql(${sql})aeronc_sql\"},\n")
+endforeach()
+string(APPEND text "};\n\n}  // namespace aeronc::kb::detail\n")
+file(WRITE "${OUT}.new" "${text}")
+file(COPY_FILE "${OUT}.new" "${OUT}" ONLY_IF_DIFFERENT)
+file(REMOVE "${OUT}.new")
