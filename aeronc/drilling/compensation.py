@@ -126,9 +126,16 @@ def synthetic_measurements(photo_set, moved, quality=0.95, decimals=6):
 
 
 def datums_of(measured_set):
-    """The measured datum holes of a measured-hole set for the core: [{id, nominal, measured}]."""
-    return [{"id": i, "nominal": (n.x, n.y, n.z), "measured": (m.x, m.y, m.z)}
-            for i, n, m in zip(measured_set.HoleIds, measured_set.Nominal, measured_set.Measured)]
+    """The measured datum holes of a measured-hole set for the core: [{id, nominal, measured,
+    normal}]; the normal (the camera's axis, from the photo-hole set) is None when not known."""
+    ps = getattr(measured_set, "PhotoHoleSet", None)
+    normals = dict(zip(ps.HoleIds, ps.Normals)) if ps is not None and len(ps.Normals) == len(ps.HoleIds) else {}
+    out = []
+    for i, n, m in zip(measured_set.HoleIds, measured_set.Nominal, measured_set.Measured):
+        a = normals.get(i)
+        out.append({"id": i, "nominal": (n.x, n.y, n.z), "measured": (m.x, m.y, m.z),
+                    "normal": (a.x, a.y, a.z) if a is not None else None})
+    return out
 
 
 def _key(p):

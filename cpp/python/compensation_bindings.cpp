@@ -76,6 +76,7 @@ std::vector<Datum> datumsOf(const py::list& list) {
         x.id = d["id"].cast<std::string>();
         x.nominal = vecOf(d, "nominal");
         x.measured = vecOf(d, "measured");
+        if (d.contains("normal") && !d["normal"].is_none()) x.normal = vecOf(d, "normal");
         rowOf(d, x);
         out.push_back(x);
     }

@@ -44,8 +44,20 @@ struct Miss {
     Vec3 predicted = Vec3::Zero();
 };
 
-void take(Miss& m, Method method, const Vec3& predicted, const Vec3& measured) {
-    const double e = (predicted - measured).norm();
+// How far a prediction misses a datum hole's deviation, across its normal when the normal is
+// known. The camera finds a hole's centre in its picture, across its axis (the hole's normal):
+// a burr, a chip or a reflection moves that centre sideways. A skin bends and sags along its
+// normal, and there a sparse set of datum holes is the worst predicted; judged along it, a real
+// sag between datum holes far apart would look like a misread reading.
+double missOf(const Vec3& predicted, const Datum& d) {
+    Vec3 e = predicted - d.deviation();
+    const double n = d.normal.norm();
+    if (n > 0.0) e -= e.dot(d.normal / n) * (d.normal / n);
+    return e.norm();
+}
+
+void take(Miss& m, Method method, const Vec3& predicted, const Datum& d) {
+    const double e = missOf(predicted, d);
     if (!(e >= m.miss)) m.miss = e, m.predictor = method, m.predicted = predicted;
 }
 
@@ -66,7 +78,7 @@ Survey survey(const std::vector<Datum>& datums, std::vector<size_t> inUse) {
     s.misses.resize(s.used.size());
     for (const auto& f : s.figures) {
         if (!f.available) continue;
-        for (size_t j = 0; j < s.used.size(); ++j) take(s.misses[j], f.method, f.predicted[j], s.used[j].deviation());
+        for (size_t j = 0; j < s.used.size(); ++j) take(s.misses[j], f.method, f.predicted[j], s.used[j]);
     }
     std::vector<double> finite;
     for (const auto& m : s.misses)
@@ -87,7 +99,7 @@ Miss missFrom(const std::vector<Datum>& used, const Datum& d) {
     Miss best;
     for (Method m : allMethods()) {
         try {
-            take(best, m, Compensator(m, used).correction(asHole(d)), d.deviation());
+            take(best, m, Compensator(m, used).correction(asHole(d)), d);
         } catch (const Error&) {
             // the datum holes in use do not support this method
         }
@@ -97,7 +109,10 @@ Miss missFrom(const std::vector<Datum>& used, const Datum& d) {
 
 // The axis the miss mostly lies along, for the message.
 int mainAxis(const Miss& m, const Datum& d) {
-    const Vec3 e = (m.predicted - d.deviation()).cwiseAbs();
+    Vec3 e = m.predicted - d.deviation();
+    const double n = d.normal.norm();
+    if (n > 0.0) e -= e.dot(d.normal / n) * (d.normal / n);
+    e = e.cwiseAbs();
     int axis = 0;
     for (int c = 1; c < 3; ++c)
         if (e[c] > e[axis]) axis = c;

@@ -106,6 +106,7 @@ inline std::vector<Datum> measuredDatums(const Pattern& p, const Distortion& d) 
         x.id = datumId(i);
         x.nominal = p.points[static_cast<size_t>(i)];
         x.measured = d(x.nominal);
+        x.normal = p.normals[static_cast<size_t>(i)];
         out.push_back(x);
     }
     return out;

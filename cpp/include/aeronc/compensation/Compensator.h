@@ -32,6 +32,9 @@ struct Datum {
     Vec3 measured = Vec3::Zero();
     int row = -1;
     double station = 0.0;
+    // The unit surface normal at the hole, the camera's axis (zero: not known). Only the datum
+    // check uses it: a misread reading is off across it (docs/compensation.md).
+    Vec3 normal = Vec3::Zero();
     Vec3 deviation() const { return measured - nominal; }
 };
 

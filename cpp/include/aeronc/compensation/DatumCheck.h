@@ -5,8 +5,11 @@
 //
 // The miss of a datum hole is the distance between its measured deviation and the deviation
 // the other datum holes predict for it, by the method that predicts it best (the leave-one-out
-// of every method, Compensator.h). A misread reading is missed by every method. A real
-// distortion is followed by at least one method: a bend by the spline, an offset by the fits.
+// of every method, Compensator.h), across the hole's normal when it is known (Datum::normal):
+// the camera finds the hole's centre in its picture, and a burr, a chip or a reflection moves
+// that sideways, while a skin sags along its normal, where sparse datum holes predict it worst.
+// A misread reading is missed by every method. A real distortion is followed by at least one
+// method: a bend by the spline, an offset by the fits.
 // The typical miss of a set of datum holes is the median of their misses; the camera noise
 // makes it (with a noise of sigma per coordinate, about 1.6 sigma).
 //
@@ -36,7 +39,7 @@ namespace aeronc::compensation {
 struct DatumCheckOptions {
     bool enabled = true;
     double factor = 5.0;    // a reading is out of line beyond this many typical misses of the others...
-    double minimum = 0.05;  // ...and beyond this many mm
+    double minimum = 0.15;  // ...and beyond this many mm
     double maxShare = 0.25;  // never leave out more than this share of the datum holes
     size_t minDatums = 6;    // fewer datum holes in use: too few to tell a misread reading
     size_t candidates = 4;   // readings tried per step (each costs a leave-one-out of the others)
