@@ -83,10 +83,10 @@ class MeasuredHoleSet(BaseProxy):
         declare_property(obj, "App::PropertyBool", "DatumCheck", g,
                          "Leave out datum readings out of line with the others", True)
         declare_property(obj, "App::PropertyFloat", "OutOfLineFactor", g,
-                         "A reading is out of line when the other datum holes predict it (across its normal) "
+                         "A reading is out of line when the other datum holes predict it (across its normal and whole) "
                          "worse than this many times the typical (median) miss of the others...", 5.0)
         declare_property(obj, "App::PropertyLength", "OutOfLineMinimum", g,
-                         "...and worse than this (across the hole's normal)", 0.15)
+                         "...and worse than this", 0.1)
         declare_property(obj, "App::PropertyStringList", "PutBack", g,
                          "Datum holes put back: used although out of line")
         declare_property(obj, "App::PropertyStringList", "LeftOutByHand", g, "Datum holes never used")

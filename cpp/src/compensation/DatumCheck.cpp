@@ -39,7 +39,8 @@ double median(std::vector<double> v) {
 const char* const kAxis[3] = {"X", "Y", "Z"};
 
 struct Miss {
-    double miss = NAN;  // the smallest miss over the methods
+    double miss = NAN;   // the smallest miss over the methods (across the normal when known)
+    double whole = NAN;  // the smallest whole distance over the methods
     std::optional<Method> predictor;
     Vec3 predicted = Vec3::Zero();
 };
@@ -57,6 +58,8 @@ double missOf(const Vec3& predicted, const Datum& d) {
 }
 
 void take(Miss& m, Method method, const Vec3& predicted, const Datum& d) {
+    const double w = (predicted - d.deviation()).norm();
+    if (!(w >= m.whole)) m.whole = w;
     const double e = missOf(predicted, d);
     if (!(e >= m.miss)) m.miss = e, m.predictor = method, m.predicted = predicted;
 }
@@ -68,6 +71,7 @@ struct Survey {
     std::vector<LeaveOneOut> figures;
     std::vector<Miss> misses;
     double typical = 0.0;
+    double typicalWhole = 0.0;  // of the whole distances
 };
 
 Survey survey(const std::vector<Datum>& datums, std::vector<size_t> inUse) {
@@ -84,6 +88,10 @@ Survey survey(const std::vector<Datum>& datums, std::vector<size_t> inUse) {
     for (const auto& m : s.misses)
         if (std::isfinite(m.miss)) finite.push_back(m.miss);
     s.typical = median(finite);
+    finite.clear();
+    for (const auto& m : s.misses)
+        if (std::isfinite(m.whole)) finite.push_back(m.whole);
+    s.typicalWhole = median(finite);
     return s;
 }
 
@@ -150,6 +158,12 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
         return it->second;
     };
     auto limitOf = [&](double typical) { return std::max(options.factor * typical, options.minimum); };
+    // Out of line against the others: across the normal, and by the whole distance too. Across
+    // alone, a bend across a sparse pattern can stand out where the whole distances of the
+    // others, raised by a sag along the normal, show that the methods do not follow it closely.
+    auto beyond = [&](const Miss& m, double typical, double typicalWhole) {
+        return m.miss > limitOf(typical) && m.whole > limitOf(typicalWhole);
+    };
     // Out of line among all the datum holes in use at first. Required at every step: once a
     // reading is left out, the distortion that only it and a neighbour showed can make the
     // neighbour look out of line in its turn (three datum holes a row, a bend between them).
@@ -158,8 +172,8 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
         auto it = outAtFirst.find(i);
         if (it != outAtFirst.end()) return it->second;
         const size_t j = static_cast<size_t>(std::find(full.inUse.begin(), full.inUse.end(), i) - full.inUse.begin());
-        const double typical = out.leftOut.empty() ? withoutIt(i).typical : survey(datums, without(full.inUse, i)).typical;
-        return outAtFirst[i] = full.misses[j].miss > limitOf(typical);
+        const Survey rest = out.leftOut.empty() ? withoutIt(i) : survey(datums, without(full.inUse, i));
+        return outAtFirst[i] = beyond(full.misses[j], rest.typical, rest.typicalWhole);
     };
     // Datum holes in use (positions in s) missed beyond the minimum, most missed first.
     auto suspects = [&](bool keptToo) {
@@ -170,7 +184,8 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
         return v;
     };
 
-    std::map<size_t, std::pair<Miss, double>> decided;  // left out: its miss and the others' typical miss
+    // Left out: its miss and the others' typical misses, as it was found.
+    std::map<size_t, std::tuple<Miss, double, double>> decided;
     const size_t maxLeftOut = static_cast<size_t>(std::floor(options.maxShare * static_cast<double>(datums.size())));
     if (!options.enabled) {
         out.note = "datum check off";
@@ -190,10 +205,10 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
                 const size_t i = s.inUse[j];
                 if (!outOfLineAtFirst(i)) continue;
                 const Survey& rest = withoutIt(i);
-                if (!(s.misses[j].miss > limitOf(rest.typical))) continue;
+                if (!beyond(s.misses[j], rest.typical, rest.typicalWhole)) continue;
                 out.datums[i].use = DatumUse::LeftOut;
                 out.leftOut.push_back(datums[i].id);
-                decided[i] = {s.misses[j], rest.typical};  // as it was found, for its reason
+                decided[i] = {s.misses[j], rest.typical, rest.typicalWhole};
                 Survey next = rest;
                 s = std::move(next);
                 others.clear();
@@ -209,13 +224,15 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
 
     // Every datum hole's verdict against the datum holes finally in use.
     std::vector<Miss> final(datums.size());
+    std::vector<double> typicalWhole(datums.size(), NAN);
     for (size_t j = 0; j < s.inUse.size(); ++j) final[s.inUse[j]] = s.misses[j];
     for (size_t i = 0; i < datums.size(); ++i) {
         if (decided.count(i)) {
-            std::tie(final[i], out.datums[i].typical) = decided[i];
+            std::tie(final[i], out.datums[i].typical, typicalWhole[i]) = decided[i];
         } else if (out.datums[i].use == DatumUse::LeftOutByHand) {
             final[i] = missFrom(s.used, datums[i]);
             out.datums[i].typical = s.typical;
+            typicalWhole[i] = s.typicalWhole;
         }
     }
     if (out.checked) {
@@ -229,15 +246,19 @@ DatumCheck checkDatums(const std::vector<Datum>& datums, const DatumCheckOptions
             look = kept;
         }
         // Out of line now and at first, as the check requires of a reading it leaves out.
-        for (size_t j : look)
-            if (outOfLineAtFirst(s.inUse[j])) out.datums[s.inUse[j]].typical = withoutIt(s.inUse[j]).typical;
+        for (size_t j : look) {
+            const size_t i = s.inUse[j];
+            if (!outOfLineAtFirst(i)) continue;
+            out.datums[i].typical = withoutIt(i).typical;
+            typicalWhole[i] = withoutIt(i).typicalWhole;
+        }
     }
     for (size_t i = 0; i < datums.size(); ++i) {
         auto& v = out.datums[i];
         const Miss& m = final[i];
         v.miss = m.miss, v.predictor = m.predictor, v.predicted = m.predicted;
         if (std::isfinite(v.typical)) v.limit = limitOf(v.typical);
-        v.outOfLine = out.checked && std::isfinite(v.limit) && m.miss > v.limit;
+        v.outOfLine = out.checked && std::isfinite(v.limit) && beyond(m, v.typical, typicalWhole[i]);
         if (v.use == DatumUse::Used && v.outOfLine && keep.count(v.id)) v.use = DatumUse::PutBack;
         if (!std::isfinite(m.miss)) {
             v.reason = "no method predicts it from the others";

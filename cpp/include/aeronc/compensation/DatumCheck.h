@@ -10,11 +10,16 @@
 // that sideways, while a skin sags along its normal, where sparse datum holes predict it worst.
 // A misread reading is missed by every method. A real distortion is followed by at least one
 // method: a bend by the spline, an offset by the fits.
-// The typical miss of a set of datum holes is the median of their misses; the camera noise
-// makes it (with a noise of sigma per coordinate, about 1.6 sigma).
+// The whole miss, the distance along the normal included, is kept too. The typical miss of a
+// set of datum holes is the median of their misses (and the typical whole miss, of their whole
+// misses); the camera noise makes it (with a noise of sigma per coordinate, a little over 1.2
+// sigma across the normal, 1.5 sigma whole).
 //
 // A reading is out of line when its miss is larger than `minimum` and larger than `factor`
-// times the typical miss of the others, the others taken without it. Without it: a misread
+// times the typical miss of the others, the others taken without it, and its whole miss is too
+// against their typical whole miss: across the normal alone, a bend across the rows of a sparse
+// pattern makes a clean corner stand out, while the others' whole misses, raised by the sag,
+// show that the methods do not follow that skin closely. Without it: a misread
 // reading pulls the predictions of its neighbours (of every hole, for a best fit), and with
 // few datum holes it would raise the typical miss above its own. The readings most missed
 // (at most `candidates` of them, beyond `minimum`) are tried in turn; the first out of line
@@ -39,7 +44,7 @@ namespace aeronc::compensation {
 struct DatumCheckOptions {
     bool enabled = true;
     double factor = 5.0;    // a reading is out of line beyond this many typical misses of the others...
-    double minimum = 0.15;  // ...and beyond this many mm
+    double minimum = 0.1;  // ...and beyond this many mm
     double maxShare = 0.25;  // never leave out more than this share of the datum holes
     size_t minDatums = 6;    // fewer datum holes in use: too few to tell a misread reading
     size_t candidates = 4;   // readings tried per step (each costs a leave-one-out of the others)
