@@ -178,10 +178,11 @@ def html_page(data, png):
     check = data.get("check") or {}
     # Each reading is judged against the typical miss of the others, taken without it (its own
     # limit is in its "why"); the figures here are those of the datum holes finally in use.
-    check_text = ("The datum holes in use miss their predictions by {:.4f} mm typically; a reading is out of "
-                  "line when it misses by more than {:g} times the others' typical miss (about {:.4f} mm) and "
-                  "by more than {:g} mm.".format(check["typical_miss"], check["factor"], check["threshold"],
-                                                 check["minimum"]) if check.get("checked") else
+    check_text = ("The datum holes in use miss their predictions across their normals by {:.4f} mm typically; "
+                  "a reading is out of line when it misses by more than {:g} times the others' typical miss "
+                  "and by more than {:g} mm (here about {:.3f} mm).".format(
+                      check["typical_miss"], check["factor"], check["minimum"], check["threshold"])
+                  if check.get("checked") else
         "Datum readings not checked: {}.".format(check.get("note", "no measurements")))
     fit = data.get("fit") or {}
     fit_text = ""
