@@ -31,6 +31,9 @@ def register():
                           ("AeroNC_EditKnowledgeBase", EditKnowledgeBase)):
         if name not in known:
             FreeCADGui.addCommand(name, command())
+    from aeronc.commands.show_setup import ShowSetup
+    if "AeroNC_ShowSetup" not in known:  # context menu of a chain's Job only
+        FreeCADGui.addCommand("AeroNC_ShowSetup", ShowSetup())
     from aeronc.commands import datum_holes
     for name, command in zip(DRILLING_COMMANDS, (datum_holes.DefineDatumHoles, datum_holes.CameraProgram,
                                                  datum_holes.ImportMeasurements, datum_holes.CompensatedDrilling)):

@@ -83,7 +83,10 @@ def extend(wb):
                 from aeronc.commands.recognise_features import selected_solid
                 from aeronc.commands.select_tools import selected_machining_features
                 from aeronc.commands import datum_holes
-                if datum_holes.selected_holes() is not None:
+                from aeronc.commands.show_setup import selected_chain_job
+                if selected_chain_job() is not None:
+                    wb.appendContextMenu("", ["Separator", "AeroNC_ShowSetup"])
+                elif datum_holes.selected_holes() is not None:
                     wb.appendContextMenu("", ["Separator", "AeroNC_DefineDatumHoles"])
                 elif datum_holes.selected_photo_set() is not None or datum_holes.selected_measured_set() is not None:
                     wb.appendContextMenu("", ["Separator"] + DRILLING_COMMANDS[1:])

@@ -494,6 +494,9 @@ class MachiningChainPanel:
             FreeCAD.Console.PrintMessage("AeroNC: {}\n".format(m))
         FreeCAD.Console.PrintMessage("AeroNC: {}: {} units in {}\n".format(
             obj.Label, obj.UnitCount, ", ".join(j.Label for j in obj.Jobs)))
+        if obj.Jobs:  # one setup at a time; the Job's context menu shows another
+            from aeronc.commands.show_setup import show_setup
+            show_setup(obj, obj.Jobs[0])
         self._close()
         return True
 

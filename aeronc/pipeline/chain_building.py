@@ -122,6 +122,7 @@ def build(group, family, material, machine="", kb_path=None, edits=None, built=N
         _store(target, built, edits, chain)
         messages = notes + _sync_jobs(target, chain, part, setup_job.blank_box(group), kb, progress)
         target.Messages = messages
+        target.purgeTouched()  # its execute computes nothing: the Jobs are made here
         return target
 
     return in_transaction(doc, "Machining chain", work)
@@ -146,6 +147,7 @@ def update(obj, edits=None, progress=None):
     def work():
         _store(obj, built, edits, chain)
         obj.Messages = notes + _sync_jobs(obj, chain, part, setup_job.blank_box(group), kb, progress)
+        obj.purgeTouched()
         return obj
 
     return in_transaction(doc, "Update machining chain", work)

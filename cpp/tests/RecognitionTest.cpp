@@ -14,6 +14,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -255,6 +256,53 @@ TEST(Recognition, RegionKeepsOffAFilletAcrossATiltedAxis) {
         }
     }
     EXPECT_LT(deepest, 0.01);
+}
+
+// A drafted boss standing in a pocket (10 degrees, radius 8 at the floor, 6.6 at its top): its
+// wall widens towards the floor, so the island the region keeps off is the boss at the floor,
+// not its section half-way up (milled_002's body widens the same way over its flanges; the
+// clearing took 0.7 mm off it).
+TEST(Recognition, IslandWideningTowardsTheFloorIsKeptOffAtTheFloor) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 80, 20).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(20, 20, 10), 60, 40, 20).Shape());
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(50, 40, 10), gp_Dir(0, 0, 1)), 8,
+                                                       8 - 8 * std::tan(10 * M_PI / 180), 8)
+                                      .Shape())
+               .Shape();
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* pocket = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 10) < 1e-6 && !e.floorFaces.empty()) pocket = &e;
+    ASSERT_NE(pocket, nullptr);
+    ASSERT_EQ(pocket->islands.size(), 1u);
+    double nearest = HUGE_VAL;
+    for (const auto& p : pocket->islands[0]) nearest = std::min(nearest, std::hypot(p[0] - 50, p[1] - 40));
+    EXPECT_GT(nearest, 8 - 0.02);
+}
+
+// A pocket whose long floor edges have R3 fillets and whose end wall is a bevel leaning back
+// (26.6 degrees) straight from the floor: the slice stands above the fillets, 3 mm up, where
+// the bevel stands 1.5 mm further back than at its foot. The region stops at the foot.
+TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBackBesideFloorFillets) {
+    TopoDS_Shape part = cut(BRepPrimAPI_MakeBox(100, 60, 20).Shape(), BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 8), 60, 30, 20).Shape());
+    BRepBuilderAPI_MakePolygon wedge;
+    for (const gp_Pnt& p : {gp_Pnt(80, 0, 8), gp_Pnt(86, 0, 20), gp_Pnt(86, 0, 21), gp_Pnt(79, 0, 21), gp_Pnt(79, 0, 8)})
+        wedge.Add(p);
+    wedge.Close();
+    part = cut(part, BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(wedge.Wire()).Face(), gp_Vec(0, 60, 0)).Shape());
+    // Keep the block's sides: the wedge cut through them.
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(78, 0, 0), 10, 15, 20).Shape()).Shape();
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(78, 45, 0), 10, 15, 20).Shape()).Shape();
+    part = filletEdgesAt(part, 8, 20, 15, 80, 15, 3);
+    part = filletEdgesAt(part, 8, 20, 45, 80, 45, 3);
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* floor = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 8) < 1e-6 && !e.floorFaces.empty()) floor = &e;
+    ASSERT_NE(floor, nullptr);
+    EXPECT_NEAR(floor->floorFilletRadius, 3, 1e-6);
+    double xmax = -HUGE_VAL;
+    for (const auto& p : floor->contour) xmax = std::max(xmax, p[0]);
+    EXPECT_NEAR(xmax, 80, 0.02);
 }
 
 // A hole whose mouth a bridge partly covers from above: a ray down its axis is clear, but a

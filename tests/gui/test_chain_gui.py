@@ -203,18 +203,45 @@ def run():
           all(op.Active for uid, op in ops.items() if uid != disabled))
     view_types = {op.ViewObject.TypeId for op in ops.values()}
     check("Path's view provider draws the operations", view_types == {"PathGui::ViewProviderPathPython"}, view_types)
-    check("operations visible", all(op.ViewObject.Visibility for op in ops.values()))
+    first_ops = pathcompat.job_operations(chain.Jobs[0])
+    check("the first setup's operations visible", first_ops and all(op.ViewObject.Visibility for op in first_ops))
 
-    # The paths over the part in the 3-D view.
+    touched = [o.Name for o in doc.Objects if "Touched" in o.State]
+    check("nothing left to recompute after OK", not touched, touched)
+    doc.recompute(None, True, True)  # Ctrl+Shift+R: every object recomputed
+    pump()
+    touched = [o.Name for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State]
+    check("nothing touched after a forced recompute", not touched, touched)
+
+    def shown(j):
+        """(models, stock, operations) of Job j: True where every one is visible, False where none."""
+        def state(objs):
+            v = {o.ViewObject.Visibility for o in objs}
+            return v.pop() if len(v) == 1 else None
+        return (state(pathcompat.job_models(j)), state([j.Stock]), state(pathcompat.job_operations(j)))
+
+    first_job, others = chain.Jobs[0], chain.Jobs[1:]
+    check("after OK only the first setup's Job is shown", shown(first_job) == (True, True, True) and
+          all(shown(j) == (False, False, False) for j in others), [shown(j) for j in chain.Jobs])
+    check("the part in its original place is hidden", not part.ViewObject.Visibility and
+          not group.ViewObject.Visibility)
+    check("a chain with several setups", others, len(chain.Jobs))
+    if others:
+        Gui.Selection.clearSelection()
+        Gui.Selection.addSelection(others[0])
+        pump()
+        check("a Job's context menu offers Show this setup only", "Show this setup only" in tree_context_menu())
+        Gui.runCommand("AeroNC_ShowSetup")
+        pump()
+        check("Show this setup only switches the setups", shown(others[0]) == (True, True, True) and
+              shown(first_job) == (False, False, False), [shown(j) for j in chain.Jobs])
+
+    # The paths over the part in the 3-D view: the Job of the edited units.
     Gui.Selection.clearSelection()
-    for j in chain.Jobs:
-        for m in pathcompat.job_models(j):
-            m.ViewObject.Visibility = j is job
-            m.ViewObject.Transparency = 60
-        for op in pathcompat.job_operations(j):
-            op.ViewObject.Visibility = j is job
-    part.ViewObject.Visibility = False
-    group.ViewObject.Visibility = False
+    Gui.Selection.addSelection(job)
+    Gui.runCommand("AeroNC_ShowSetup")
+    for m in pathcompat.job_models(job):
+        m.ViewObject.Transparency = 60
     for tree_view in Gui.getMainWindow().findChildren(QtGui.QTreeWidget):
         tree_view.collapseAll()
     Gui.Selection.addSelection(job)

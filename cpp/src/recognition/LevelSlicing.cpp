@@ -77,16 +77,21 @@ double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top
     return std::isfinite(hi) ? std::min(hi, top) : top;
 }
 
-Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const {
+Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double h, double zl, double z,
+                                    std::vector<int>& leaning) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
-    if (!(z - zl > 0.1 * tol)) return {};
-    Paths near;
-    // The faces along the region's boundary: its walls, and those its contour loops run on (an
-    // exterior region knows its walls by probes only).
+    const bool band = z - zl > 0.1 * tol;
+    Paths near, feet;
+    // The faces along the region's boundary: its walls, those its contour loops run on (an
+    // exterior region knows its walls by probes only) and its islands' (an island widening
+    // towards the floor holds material there the slice does not show).
     std::vector<int> bounding = c.contourFaces;
     for (const SectionLoop* L : c.contourLoops)
         for (int f : L->faces) pushUnique(bounding, f);
+    for (const SectionLoop* L : c.islandLoops)
+        if (L)
+            for (int f : L->faces) pushUnique(bounding, f);
     for (int f : bounding) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
@@ -94,22 +99,43 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
         // the axis whose section moves with the height (seen from a tilted setup its foot
         // stands further into the region at the floor than at the slice).
         const bool spans = s.att == Attitude::Curved && s.lo < zl && s.hi > z;
-        if (!facesUp && !spans) continue;
+        // A blend rising from the floor that is no circular fillet (a spline).
+        const bool blend = s.att == Attitude::Curved && faces_[f].kind == SurfaceKind::Other &&
+                           std::fabs(s.lo - h) <= tol && s.hi > h + tol;
+        if (!blend && (!band || (!facesUp && !spans))) continue;
         // The region's walls among them: bevels and rounds (a hole across the axis is concave,
         // and what the region loses beside it is not its wall).
         const bool wall = std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end();
-        if (wall && (facesUp || !faces_[f].concave)) leaning.push_back(f);
+        if (wall && !blend && (facesUp || !faces_[f].concave)) leaning.push_back(f);
         // Its footprint: its box in the setup's frame (the same however the part is placed).
         P2 lo, hi;
         view_.faceBox(f, lo, hi);
-        near.push_back({toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})});
+        const Path box{toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})};
+        // A circular fillet from the floor is the toolpaths' to keep out of (by its radius): what
+        // stands beside it counts above it. Any other face counts at the floor, where its foot
+        // stands furthest into the region (a wall leaning on through the floor's level, a blend
+        // with no radius).
+        const bool fillet = (faces_[f].kind == SurfaceKind::Cylinder || faces_[f].kind == SurfaceKind::Torus ||
+                             faces_[f].kind == SurfaceKind::Sphere) &&
+                            std::fabs(s.lo - h) <= tol;
+        (fillet ? near : feet).push_back(box);
     }
-    if (near.empty()) return {};
-    Clipper clip;
-    clip.AddPaths(materialAt(zl), ptSubject, true);
-    clip.AddPaths(near, ptClip, true);
     Paths out;
-    clip.Execute(ctIntersection, out, pftEvenOdd, pftNonZero);
+    if (!near.empty()) {
+        Clipper clip;
+        clip.AddPaths(materialAt(zl), ptSubject, true);
+        clip.AddPaths(near, ptClip, true);
+        clip.Execute(ctIntersection, out, pftEvenOdd, pftNonZero);
+    }
+    if (!feet.empty()) {
+        // Just above the floor.
+        Clipper clip;
+        clip.AddPaths(materialAt(h + std::min(tol, 0.5 * (zl - h))), ptSubject, true);
+        clip.AddPaths(feet, ptClip, true);
+        Paths atFloor;
+        clip.Execute(ctIntersection, atFloor, pftEvenOdd, pftNonZero);
+        out.insert(out.end(), atFloor.begin(), atFloor.end());
+    }
     return out;
 }
 
@@ -134,7 +160,7 @@ std::vector<VoidRegion> LevelSlicing::trimToReach(const VoidRegion& c, double h,
     // pocket the tool may clear down to its floor) keeps off it. No warning: a bevel or a round
     // falling past the floor is ordinary geometry.
     std::vector<int> leaningFaces;
-    const Paths leaning = leaningMaterial(c, low, z, leaningFaces);
+    const Paths leaning = leaningMaterial(c, h, low, z, leaningFaces);
     // Material over the region starts above an underside between the slice and the top: a
     // plane facing down, an inclined plane (a dovetail) or a curved face (the vault of a hole
     // across the axis) ending there.
@@ -292,7 +318,7 @@ std::vector<VoidRegion> LevelSlicing::trimToReach(const VoidRegion& c, double h,
             if (std::find(walls.begin(), walls.end(), f) != walls.end()) wallsKept.push_back(f);
         // A piece parted from the region's walls (a bore reached through a cross hole) is
         // bounded by the faces of the section along its own boundary.
-        if (wallsKept.empty()) wallsKept = others;
+        if (wallsKept.empty() && n != largest) wallsKept = others;
         if (!wallsKept.empty()) piece.contourFaces = wallsKept;
         out.push_back(std::move(piece));
     }

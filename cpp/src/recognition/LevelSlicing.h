@@ -44,10 +44,12 @@ private:
     // floors), else the largest piece; none when nothing is reachable.
     std::vector<VoidRegion> trimToReach(const VoidRegion& c, double h, double z, double low, double top,
                                         std::vector<std::string>& warnings) const;
-    // The material at height zl within the boxes of c's contour faces that lean back between
-    // zl and z, as paths; empty when none leans.
-    // `leaning` receives those faces.
-    ClipperLib::Paths leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const;
+    // The material at height zl within the boxes of the faces round c that lean back between
+    // zl and z, and just above the floor h within the boxes of the blends rising from it that
+    // are no circular fillet, as paths; empty when none leans. `leaning` receives c's walls
+    // among them.
+    ClipperLib::Paths leaningMaterial(const VoidRegion& c, double h, double zl, double z,
+                                      std::vector<int>& leaning) const;
     // How high the island around `hole` (one of c's region holes) stands, at most `top`.
     double islandTop(const VoidRegion& c, const ClipperLib::Path& hole, double top) const;
     // The part's section at height z: outer loops and holes, to be read even-odd.
