@@ -1,7 +1,8 @@
 """Task panel of a measured-hole set: the deviation dP of every datum hole (also drawn as
-arrows in the 3-D view, scaled), the compensation method with every method's leave-one-out
-error (the proposed one marked), and from here a re-import, the compensated drilling and the
-report. Every change is one undo step, made at once."""
+arrows in the 3-D view, scaled), whether it is used or left out (out of line with the others,
+named in red with why; Put back / Leave out on the selected one), the compensation method with
+every method's leave-one-out error (the proposed one marked), and from here a re-import, the
+compensated drilling and the report. Every change is one undo step, made at once."""
 import os
 import traceback
 
@@ -12,7 +13,8 @@ from PySide import QtGui
 from aeronc.panels.base import ask_open_file, ask_save_file, error_reporter
 
 
-DEVIATION_COLUMNS = ["Id", "dX", "dY", "dZ", "|dP| mm", "Quality"]
+DEVIATION_COLUMNS = ["Id", "Use", "dX", "dY", "dZ", "|dP| mm", "Miss mm", "Quality"]
+OUT_COLOUR = "#b00020"
 LOO_COLUMNS = ["Method", "RMS mm", "Max mm", "Note"]
 
 
@@ -48,7 +50,24 @@ class MeasuredHoleSetPanel:
         lay.addWidget(self.info)
         self.deviations = _table(DEVIATION_COLUMNS)
         self.deviations.setMinimumHeight(170)
+        self.deviations.setSelectionBehavior(QtGui.QAbstractItemView.SelectRows)
+        self.deviations.setSelectionMode(QtGui.QAbstractItemView.SingleSelection)
         lay.addWidget(self.deviations)
+        self.flags = QtGui.QLabel("")
+        self.flags.setWordWrap(True)
+        self.flags.setStyleSheet("color: {}".format(OUT_COLOUR))
+        lay.addWidget(self.flags)
+        row = QtGui.QHBoxLayout()
+        self.put_back_button = QtGui.QPushButton("Put back")
+        self.put_back_button.setToolTip("Use the selected datum hole although it is out of line with the others")
+        self.leave_out_button = QtGui.QPushButton("Leave out")
+        self.leave_out_button.setToolTip("Never use the selected datum hole")
+        self.put_back_button.clicked.connect(lambda: self.put_back())
+        self.leave_out_button.clicked.connect(lambda: self.leave_out())
+        row.addWidget(self.put_back_button)
+        row.addWidget(self.leave_out_button)
+        row.addStretch(1)
+        lay.addLayout(row)
         form = QtGui.QFormLayout()
         self.scale = QtGui.QDoubleSpinBox()
         self.scale.setRange(1.0, 100000.0)
@@ -64,7 +83,7 @@ class MeasuredHoleSetPanel:
         lay.addLayout(form)
         self.loo = _table(LOO_COLUMNS)
         self.loo.setMinimumHeight(250)  # all seven methods without scrolling
-        lay.addWidget(QtGui.QLabel("Leave-one-out error over the datum holes (each predicted from the others):"))
+        lay.addWidget(QtGui.QLabel("Leave-one-out error over the datum holes used (each predicted from the others):"))
         lay.addWidget(self.loo)
         self.status = QtGui.QLabel("")
         self.status.setWordWrap(True)
@@ -94,15 +113,29 @@ class MeasuredHoleSetPanel:
         self.info.setText("{} datum holes of {} from {} ({}), mapped through the calibration of {}.".format(
             len(o.HoleIds), o.PhotoHoleSet.Label if o.PhotoHoleSet else "?",
             os.path.basename(o.SourceFile) or "text", o.ImportedAt, o.Machine))
+        from aeronc.objects import measured_hole_set as mhs
+        verdicts = {d["id"]: d for d in mhs.result_of(o).get("datums", [])}
         self.deviations.setRowCount(len(o.HoleIds))
         for r, (hid, d) in enumerate(zip(o.HoleIds, o.Deviations)):
             q = o.Quality[r] if r < len(o.Quality) else -1
-            values = [hid, "{:.4f}".format(d.x), "{:.4f}".format(d.y), "{:.4f}".format(d.z), "{:.4f}".format(d.Length),
+            v = verdicts.get(hid, {})
+            miss = v.get("miss")
+            values = [hid, v.get("use", ""), "{:.4f}".format(d.x), "{:.4f}".format(d.y), "{:.4f}".format(d.z),
+                      "{:.4f}".format(d.Length), "" if miss is None else "{:.4f}".format(miss),
                       "" if q < 0 else "{:.3f}".format(q)]
-            for c, v in enumerate(values):
-                self.deviations.setItem(r, c, QtGui.QTableWidgetItem(v))
+            for c, text in enumerate(values):
+                item = QtGui.QTableWidgetItem(text)
+                if v.get("reason"):
+                    item.setToolTip(v["reason"])
+                if not v.get("used", True) or v.get("out_of_line"):
+                    item.setForeground(QtGui.QBrush(QtGui.QColor(OUT_COLOUR)))
+                    font = item.font()
+                    font.setBold(True)
+                    item.setFont(font)
+                self.deviations.setItem(r, c, item)
         self.deviations.resizeColumnsToContents()
-        from aeronc.objects import measured_hole_set as mhs
+        self.flags.setText("\n".join("Datum hole " + line for line in o.DatumFlags))
+        self.flags.setVisible(len(o.DatumFlags) > 0)
         figures = mhs.result_of(o).get("leave_one_out", [])
         self.loo.setRowCount(len(figures))
         for r, f in enumerate(figures):
@@ -126,7 +159,10 @@ class MeasuredHoleSetPanel:
                 self.loo.setItem(r, c, item)
         self.loo.resizeColumnsToContents()
         bad = o.Status.startswith("not compensated")
-        self.status.setText(o.Status)
+        from aeronc.operations import compensated_drilling
+        ops = [op for op in compensated_drilling.operations_of(o.PhotoHoleSet) if op.MeasuredHoleSet is o] \
+            if o.PhotoHoleSet is not None else []
+        self.status.setText("\n".join([o.Status] + ["{}: {}".format(op.Label, op.Status) for op in ops]))
         self.status.setStyleSheet("color: #b00020" if bad else "")
 
     def _run(self, what):
@@ -140,6 +176,26 @@ class MeasuredHoleSetPanel:
         self.refresh()
         return out if out is not None else True
 
+    def selected_id(self):
+        rows = sorted({i.row() for i in self.deviations.selectedIndexes()})
+        return self.obj.HoleIds[rows[0]] if rows else None
+
+    def put_back(self, hole_id=None):
+        from aeronc.objects import measured_hole_set as mhs
+        hole_id = hole_id or self.selected_id()
+        if hole_id is None:
+            show_error("select a datum hole in the table first")
+            return None
+        return self._run(lambda: mhs.put_back(self.obj, hole_id))
+
+    def leave_out(self, hole_id=None):
+        from aeronc.objects import measured_hole_set as mhs
+        hole_id = hole_id or self.selected_id()
+        if hole_id is None:
+            show_error("select a datum hole in the table first")
+            return None
+        return self._run(lambda: mhs.leave_out(self.obj, hole_id))
+
     def choose(self, method):
         from aeronc.objects import measured_hole_set as mhs
         if method == self.obj.Method:
@@ -149,7 +205,7 @@ class MeasuredHoleSetPanel:
     def set_scale(self):
         if abs(self.scale.value() - self.obj.ArrowScale) > 1e-9:
             self.obj.ArrowScale = self.scale.value()
-            self.obj.Document.recompute([self.obj])
+            self.obj.Document.recompute()  # the drilling's correction arrows too
 
     def reimport(self, path=None):
         from aeronc.makers import datum_holes

@@ -126,9 +126,16 @@ def synthetic_measurements(photo_set, moved, quality=0.95, decimals=6):
 
 
 def datums_of(measured_set):
-    """The measured datum holes of a measured-hole set for the core: [{id, nominal, measured}]."""
-    return [{"id": i, "nominal": (n.x, n.y, n.z), "measured": (m.x, m.y, m.z)}
-            for i, n, m in zip(measured_set.HoleIds, measured_set.Nominal, measured_set.Measured)]
+    """The measured datum holes of a measured-hole set for the core: [{id, nominal, measured,
+    normal}]; the normal (the camera's axis, from the photo-hole set) is None when not known."""
+    ps = getattr(measured_set, "PhotoHoleSet", None)
+    normals = dict(zip(ps.HoleIds, ps.Normals)) if ps is not None and len(ps.Normals) == len(ps.HoleIds) else {}
+    out = []
+    for i, n, m in zip(measured_set.HoleIds, measured_set.Nominal, measured_set.Measured):
+        a = normals.get(i)
+        out.append({"id": i, "nominal": (n.x, n.y, n.z), "measured": (m.x, m.y, m.z),
+                    "normal": (a.x, a.y, a.z) if a is not None else None})
+    return out
 
 
 def _key(p):
@@ -160,10 +167,18 @@ def assign_rows(photo_set, items, field):
     return items
 
 
+def check_options(measured_set):
+    """The datum check's settings of a measured-hole set, for the core."""
+    return {"enabled": bool(measured_set.DatumCheck), "factor": float(measured_set.OutOfLineFactor),
+            "minimum": float(measured_set.OutOfLineMinimum.Value)}
+
+
 def compensate(measured_set, holes, method=None, tolerance=None):
     """The core's compensation of holes ([{id, position, normal}], part frame) from the
     measured set, by `method` (default: the set's Method; "proposed" = lowest leave-one-out).
-    Rows (for the seed's method) are those of the photo-hole set's hole pattern."""
+    Rows (for the seed's method) are those of the photo-hole set's hole pattern. Datum readings
+    out of line with the others are left out unless the set puts them back (PutBack); those
+    the set leaves out by hand (LeftOutByHand) are never used."""
     from aeronc import _core
     if method is None:
         method = measured_set.Method
@@ -173,6 +188,8 @@ def compensate(measured_set, holes, method=None, tolerance=None):
     datums = assign_rows(ps, datums_of(measured_set), "nominal")
     holes = assign_rows(ps, [dict(h) for h in holes], "position")
     try:
-        return _core.compensate(datums, holes, "" if method == "proposed" else method, tolerance)
+        return _core.compensate(datums, holes, "" if method == "proposed" else method, tolerance,
+                                measured_set.NeighbourTolerance.Value, list(measured_set.PutBack),
+                                list(measured_set.LeftOutByHand), check_options(measured_set))
     except _core.CompensationError as e:
         raise CompensationError(str(e)) from None

@@ -8,6 +8,11 @@ operation compensates them from its measured-hole set (by the set's method) and 
 Path, so importing new measurements updates it. Datum holes of its photo-hole set are always
 left out: they are drilled in advance. Without measurements it drills the nominal positions
 and says so; when the compensation fails it writes no Path at all and says why.
+
+`Flags` lists what to look at before drilling, each with its reason (docs/compensation.md):
+the datum readings left out or put back, the holes whose correction departs from their
+neighbours', the holes whose correction is longer than the tolerance. `Flagged` indexes the
+drilled holes among them.
 """
 import json
 
@@ -16,7 +21,7 @@ import FreeCAD
 from aeronc import pathcompat
 from aeronc.drilling import compensation
 from aeronc.objects import photo_hole_set
-from aeronc.objects.base import BaseProxy, add_property, proxy_type
+from aeronc.objects.base import BaseProxy, add_property, declare_property, proxy_type
 
 TYPE = "AeroNC::CompensatedDrilling"
 NOT_MEASURED = "nominal positions: no measurements imported, not compensated"
@@ -61,8 +66,14 @@ class CompensatedDrilling(BaseProxy):
         add_property(obj, "App::PropertyVectorList", "CompensatedPositions", g, "Drilled entry points (part frame)",
                      read_only=True)
         add_property(obj, "App::PropertyIntegerList", "Flagged", g,
-                     "Holes (index) whose correction exceeds the tolerance", read_only=True)
+                     "Holes (index) flagged: correction against the neighbours' or beyond the tolerance",
+                     read_only=True)
         add_property(obj, "App::PropertyString", "Report", g, "The last compensation (JSON)", hidden=True)
+        self.declare(obj)
+
+    def declare(self, obj):
+        declare_property(obj, "App::PropertyStringList", "Flags", "Compensation",
+                         "What to look at before drilling, and why", read_only=True)
 
     def execute(self, obj):
         try:
@@ -70,7 +81,7 @@ class CompensatedDrilling(BaseProxy):
         except Exception as e:  # the compensation refused: drill nothing rather than the wrong places
             obj.Status = "not compensated: {}".format(e)
             obj.MethodUsed = ""
-            obj.Corrections, obj.CompensatedPositions, obj.Flagged = [], [], []
+            obj.Corrections, obj.CompensatedPositions, obj.Flagged, obj.Flags = [], [], [], []
             obj.Report = ""
             obj.Path = pathcompat.path_from_commands()
             FreeCAD.Console.PrintError("AeroNC: {}: {}\n".format(obj.Label, obj.Status))
@@ -79,7 +90,10 @@ class CompensatedDrilling(BaseProxy):
         obj.MethodUsed = result["method"] if result else "none"
         obj.Corrections = [FreeCAD.Vector(*h["correction"]) for h in result["holes"]] if result else []
         obj.CompensatedPositions = [FreeCAD.Vector(*h["compensated"]) for h in holes]
-        obj.Flagged = [i for i, h in enumerate(holes) if h.get("exceeds_tolerance")]
+        obj.Flagged = [i for i, h in enumerate(holes) if h.get("exceeds_tolerance") or h.get("against_neighbours")]
+        flags = flag_lines(result) if result else []
+        if list(obj.Flags) != flags:
+            obj.Flags = flags
         obj.Report = json.dumps(result, separators=(",", ":")) if result else ""
         obj.Path = pathcompat.path_from_commands(drilling_commands(obj, holes))
 
@@ -112,9 +126,24 @@ def _compensated(obj):
     for h, c in zip(holes, result["holes"]):
         h["compensated"], h["drill_normal"] = tuple(c["compensated"]), tuple(c["normal"])
         h["correction"], h["exceeds_tolerance"], h["note"] = c["correction"], c["exceeds_tolerance"], c["note"]
-    status = "{} holes compensated by {} from {}; {} beyond the {:g} mm tolerance".format(
-        len(holes), result["method"], ms.Label, result["flagged"], ms.Tolerance.Value)
-    return holes, result, status
+        h["against_neighbours"] = c["against_neighbours"]
+    return holes, result, status_of(result, len(holes), ms)
+
+
+def status_of(result, count, ms):
+    """What was drilled and what to look at, in a line."""
+    left_out = [d["id"] for d in result["datums"] if not d["used"]]
+    against = sum(1 for h in result["holes"] if h["against_neighbours"])
+    beyond = sum(1 for h in result["holes"] if h["exceeds_tolerance"])
+    return ("{} holes compensated by {} from {}; datum holes left out: {}; {} holes flagged: {} against their "
+            "neighbours' corrections (beyond {:g} mm), {} beyond the {:g} mm tolerance").format(
+        count, result["method"], ms.Label, ", ".join(left_out) or "none", result["flagged_holes"], against,
+        ms.NeighbourTolerance.Value, beyond, ms.Tolerance.Value)
+
+
+def flag_lines(result):
+    """"<id>: <reason>" per flag of a compensation result, datum holes first."""
+    return ["{}: {}".format(f["id"], f["reason"]) for f in result["flags"]]
 
 
 def drilling_commands(obj, holes):

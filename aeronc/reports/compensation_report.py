@@ -1,11 +1,16 @@
 """The compensation report of a compensated drilling operation: one HTML page with
 
   - the part, the datum and measured sets, the machine, the method used and the one proposed;
-  - every method's leave-one-out error over the datum holes (each predicted from the others);
-  - the datum holes: nominal, measured, deviation dP, what the fit leaves, quality;
-  - every hole drilled: nominal position, correction, method, a flag where the correction
-    exceeds the tolerance, and a note where the seed's method extrapolates;
-  - a picture of the deviations (datum holes) and corrections (drilled holes) as arrows.
+  - what is flagged, and why: datum readings left out (out of line with the others, or by
+    hand) or put back, holes whose correction departs from their neighbours', holes whose
+    correction is longer than the tolerance;
+  - every method's leave-one-out error over the datum holes used (each predicted from the others);
+  - the datum holes: used or left out, nominal, measured, deviation dP, how far the others
+    predict it (miss), what the fit leaves, quality;
+  - every hole drilled: nominal position, correction, method, its flags, and a note where the
+    seed's method extrapolates;
+  - a picture of the deviations (datum holes) and corrections (drilled holes) as arrows, the
+    datum holes left out crossed out and named.
 
 The picture is drawn with matplotlib's Agg canvas (headless) and embedded in the page.
 """
@@ -30,22 +35,33 @@ def report_data(op):
     if ms is not None:
         for i, hid in enumerate(ms.HoleIds):
             n, m, d = ms.Nominal[i], ms.Measured[i], ms.Deviations[i]
+            v = by_id.get(hid, {})
             datums.append({"id": hid, "nominal": (n.x, n.y, n.z), "measured": (m.x, m.y, m.z), "deviation": (d.x, d.y, d.z),
-                           "residual": tuple(by_id.get(hid, {}).get("residual", (math.nan,) * 3)),
-                           "quality": ms.Quality[i] if i < len(ms.Quality) else -1.0})
+                           "residual": tuple(v.get("residual", (math.nan,) * 3)),
+                           "quality": ms.Quality[i] if i < len(ms.Quality) else -1.0,
+                           "use": v.get("use", ""), "used": v.get("used", True), "miss": v.get("miss"),
+                           "reason": v.get("reason", "")})
+    reasons = {}
+    for f in result.get("flags", []):
+        reasons.setdefault(f["id"], []).append(f)
     holes = []
     nominal = compensated_drilling.nominal_holes(op)
     for h, c in zip(nominal, result.get("holes", [])):
         holes.append({"id": h["id"], "faces": h["faces"], "nominal": tuple(c["nominal"]), "correction": tuple(c["correction"]),
-                      "compensated": tuple(c["compensated"]), "flag": c["exceeds_tolerance"], "note": c["note"]})
+                      "compensated": tuple(c["compensated"]), "beyond": c["exceeds_tolerance"],
+                      "against": c["against_neighbours"], "departure": c["neighbour_departure"],
+                      "flags": [f["kind"] for f in reasons.get(c["id"], [])], "note": c["note"]})
+    check = result.get("check", {})
     return {
         "operation": op.Label, "part": op.Source.Label if op.Source else "", "status": op.Status,
         "photo_set": ps.Label if ps else "", "measured_set": ms.Label if ms else "",
         "file": ms.SourceFile if ms else "", "machine": ms.Machine if ms else "",
         "method": result.get("method", ""), "chosen": ms.Method if ms else "", "proposed": result.get("proposed") or "",
         "tolerance": ms.Tolerance.Value if ms else 0.0, "fit": result.get("fit"),
+        "neighbour_tolerance": ms.NeighbourTolerance.Value if ms else 0.0, "check": check,
         "leave_one_out": survey.get("leave_one_out") or result.get("leave_one_out", []),
-        "datums": datums, "holes": holes, "flagged": result.get("flagged", 0),
+        "datums": datums, "holes": holes, "flags": result.get("flags", []),
+        "flagged": result.get("flagged_holes", 0),
     }
 
 
@@ -80,11 +96,16 @@ def picture(data, title=None, size=(9.0, 6.0)):
             ax.quiver(hx, hy, [h["correction"][0] * scale for h in data["holes"]],
                       [h["correction"][1] * scale for h in data["holes"]], angles="xy", scale_units="xy", scale=1,
                       color="#1f5fbf", width=0.0025, zorder=3, label="correction (x {:g})".format(scale))
-        flagged = [h for h in data["holes"] if h["flag"]]
-        if flagged:
-            ax.scatter([h["nominal"][0] for h in flagged], [h["nominal"][1] for h in flagged], s=60,
+        beyond = [h for h in data["holes"] if h["beyond"]]
+        if beyond:
+            ax.scatter([h["nominal"][0] for h in beyond], [h["nominal"][1] for h in beyond], s=60,
                        facecolors="none", edgecolors="#e08000", linewidths=1.2, zorder=4,
                        label="correction > {:g} mm".format(data["tolerance"]))
+        against = [h for h in data["holes"] if h["against"]]
+        if against:
+            ax.scatter([h["nominal"][0] for h in against], [h["nominal"][1] for h in against], s=110,
+                       facecolors="none", edgecolors="#d00000", linewidths=1.6, zorder=4,
+                       label="correction against its neighbours' (> {:g} mm)".format(data["neighbour_tolerance"]))
         dx = [d["nominal"][0] for d in data["datums"]]
         dy = [d["nominal"][1] for d in data["datums"]]
         ax.scatter(dx, dy, s=46, marker="s", facecolors="none", edgecolors="#00733a", linewidths=1.4, zorder=4,
@@ -93,8 +114,13 @@ def picture(data, title=None, size=(9.0, 6.0)):
                   [d["deviation"][1] * scale for d in data["datums"]], angles="xy", scale_units="xy", scale=1,
                   color="#8c00bf", width=0.004, zorder=5, label="measured deviation dP (x {:g})".format(scale))
         for d in data["datums"]:
-            ax.annotate(d["id"], (d["nominal"][0], d["nominal"][1]), textcoords="offset points", xytext=(4, -11),
-                        fontsize=7, color="#00733a")
+            ax.annotate(d["id"] if d["used"] else "{} {}".format(d["id"], d["use"]), (d["nominal"][0], d["nominal"][1]),
+                        textcoords="offset points", xytext=(4, -11), fontsize=7 if d["used"] else 8,
+                        color="#00733a" if d["used"] else "#d00000", fontweight="normal" if d["used"] else "bold")
+        out = [d for d in data["datums"] if not d["used"]]
+        if out:
+            ax.scatter([d["nominal"][0] for d in out], [d["nominal"][1] for d in out], s=120, marker="x",
+                       color="#d00000", linewidths=2.0, zorder=6, label="datum hole left out")
         ax.set_aspect("equal", adjustable="datalim")
         ax.margins(0.08)
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=2, fontsize=8, frameon=False)
@@ -120,10 +146,10 @@ def _v(v, digits=3):
     return ", ".join("{:.{}f}".format(c, digits) for c in v)
 
 
-def _table(headers, rows, flag_column=None):
+def _table(headers, rows, flag_column=None, flag_class="flag", flagged=bool):
     out = ["<table><tr>" + "".join("<th>{}</th>".format(html.escape(h)) for h in headers) + "</tr>"]
     for r in rows:
-        cls = ' class="flag"' if flag_column is not None and r[flag_column] else ""
+        cls = ' class="{}"'.format(flag_class) if flag_column is not None and flagged(r[flag_column]) else ""
         out.append("<tr{}>".format(cls) + "".join("<td>{}</td>".format(html.escape(str(c))) for c in r) + "</tr>")
     out.append("</table>")
     return "\n".join(out)
@@ -141,12 +167,23 @@ def html_page(data, png):
         loo.append((f["method"], "{:.4f}".format(f["rms"]) if f["available"] else "-",
                     "{:.4f}".format(f["max"]) if f["available"] else "-",
                     ", ".join(mark) if f["available"] else "not available: " + f["reason"]))
-    datums = [(d["id"], _v(d["nominal"]), _v(d["measured"]), _v(d["deviation"]),
-               "{:.4f}".format(math.sqrt(sum(c * c for c in d["deviation"]))), _v(d["residual"], 4),
-               "" if d["quality"] < 0 else "{:.3f}".format(d["quality"])) for d in data["datums"]]
+    datums = [(d["id"], d["use"], _v(d["nominal"]), _v(d["measured"]), _v(d["deviation"]),
+               "{:.4f}".format(math.sqrt(sum(c * c for c in d["deviation"]))),
+               "-" if d["miss"] is None else "{:.4f}".format(d["miss"]), _v(d["residual"], 4),
+               "" if d["quality"] < 0 else "{:.3f}".format(d["quality"]), d["reason"]) for d in data["datums"]]
     holes = [(h["id"], " ".join(h["faces"]), _v(h["nominal"]), _v(h["correction"], 4),
-              "{:.4f}".format(math.sqrt(sum(c * c for c in h["correction"]))), _v(h["compensated"]), data["method"],
-              "over tolerance" if h["flag"] else "", h["note"]) for h in data["holes"]]
+              "{:.4f}".format(math.sqrt(sum(c * c for c in h["correction"]))), "{:.4f}".format(h["departure"]),
+              _v(h["compensated"]), data["method"], "; ".join(h["flags"]), h["note"]) for h in data["holes"]]
+    flags = [(f["id"], f["kind"], f["reason"]) for f in data["flags"]]
+    check = data.get("check") or {}
+    # Each reading is judged against the typical miss of the others, taken without it (its own
+    # limit is in its "why"); the figures here are those of the datum holes finally in use.
+    check_text = ("The datum holes in use miss their predictions across their normals by {:.4f} mm typically; "
+                  "a reading is out of line when it misses by more than {:g} times the others' typical miss "
+                  "and by more than {:g} mm (here about {:.3f} mm).".format(
+                      check["typical_miss"], check["factor"], check["minimum"], check["threshold"])
+                  if check.get("checked") else
+        "Datum readings not checked: {}.".format(check.get("note", "no measurements")))
     fit = data.get("fit") or {}
     fit_text = ""
     if fit and data["method"] != "seed":
@@ -159,16 +196,24 @@ table {{ border-collapse: collapse; margin: 0.6em 0 1.4em 0; font-size: 0.85em; 
 th, td {{ border: 1px solid #bbb; padding: 2px 6px; text-align: left; }}
 th {{ background: #eee; }}
 tr.flag td {{ background: #fff0d8; }}
+tr.out td {{ background: #ffd8d8; }}
 </style></head><body>
 <h1>Compensation report: {op}</h1>
 <p>Part <b>{part}</b>; datum holes <b>{ps}</b>; measurements <b>{ms}</b> ({file}), mapped through the
 calibration of machine <b>{machine}</b>.</p>
 <p>Method used: <b>{method}</b> (chosen: {chosen}; proposed, lowest leave-one-out error: <b>{proposed}</b>).
-Tolerance {tol:g} mm: <b>{flagged}</b> of {n} corrections exceed it. {status}</p>
+<b>{flagged}</b> of {n} holes drilled are flagged. {status}</p>
 {fit}
+<h2>Flagged: what to look at before drilling</h2>
+<p>A datum reading is <i>left out</i> when the other datum holes predict its deviation worse than
+the check allows (by the method that predicts it best); it is <i>put back</i> when the user uses
+it all the same. A hole drilled is flagged <i>against neighbours</i> when its correction departs
+from the linear trend of its neighbours' corrections by more than {ntol:g} mm, and <i>beyond
+tolerance</i> when its correction is longer than the tolerance, {tol:g} mm. {check}</p>
+{flags}
 <h2>Deviations and corrections</h2>
 <img src="data:image/png;base64,{png}" alt="deviations as arrows">
-<h2>Leave-one-out error over the datum holes (mm)</h2>
+<h2>Leave-one-out error over the datum holes used (mm)</h2>
 <p>Each datum hole predicted from the others; no single method wins every distortion.</p>
 {loo}
 <h2>Datum holes (part frame, mm)</h2>
@@ -180,11 +225,15 @@ Tolerance {tol:g} mm: <b>{flagged}</b> of {n} corrections exceed it. {status}</p
            file=e(data["file"] or "no file"), machine=e(data["machine"]), method=e(data["method"] or "none"),
            chosen=e(data["chosen"]), proposed=e(data["proposed"] or "-"), tol=data["tolerance"],
            flagged=data["flagged"], n=len(data["holes"]), status=e(data["status"]), fit=fit_text,
+           ntol=data["neighbour_tolerance"], check=e(check_text),
+           flags=_table(["hole", "flag", "why"], flags) if flags else "<p>Nothing flagged.</p>",
            png=base64.b64encode(png).decode("ascii"),
            loo=_table(["method", "RMS", "max", ""], loo),
-           datums=_table(["datum hole", "nominal", "measured", "dP", "|dP|", "left by the fit", "quality"], datums),
-           holes=_table(["hole", "faces", "nominal", "correction", "|correction|", "compensated", "method", "flag",
-                         "note"], holes, flag_column=7))
+           datums=_table(["datum hole", "use", "nominal", "measured", "dP", "|dP|", "miss", "left by the fit",
+                          "quality", "why"], datums, flag_column=1, flag_class="out",
+                         flagged=lambda use: use not in ("used", "")),
+           holes=_table(["hole", "faces", "nominal", "correction", "|correction|", "from neighbours'", "compensated",
+                         "method", "flags", "note"], holes, flag_column=8))
 
 
 def write_report(op, html_path, png_path=None):

@@ -65,6 +65,8 @@ def _stages(r, shape, datum_faces, camera, name, tolerance, machine):
             ms.Tolerance = tolerance
         doc.recompute()
     r.report(ms.Status)
+    for line in ms.DatumFlags:
+        r.say("           datum hole " + line)
     for line in ms.LeaveOneOut:
         r.say("           leave-one-out " + line)
 
@@ -85,6 +87,7 @@ def _stages(r, shape, datum_faces, camera, name, tolerance, machine):
         r.save_document(doc, "{}.FCStd".format(name))
     r.report(report)
     r.finish()
-    return {"datumHoles": list(ps.HoleIds), "measurements": ms.Status, "drilling": op.Status, "report": report,
+    return {"datumHoles": list(ps.HoleIds), "leftOut": list(ms.LeftOut), "measurements": ms.Status,
+            "drilling": op.Status, "flags": list(op.Flags), "report": report,
             "nominal": [tuple(v) for v in op.NominalPositions],
             "compensated": [tuple(v) for v in op.CompensatedPositions]}

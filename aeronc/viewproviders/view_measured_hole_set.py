@@ -1,9 +1,14 @@
 """View provider of a measured-hole set: each datum hole's measured deviation dP drawn in the
-3-D view as an arrow from the nominal hole, ArrowScale times longer than it is; double-click
-opens the set's task panel (the deviations, the method and its leave-one-out errors)."""
+3-D view as an arrow from the nominal hole, ArrowScale times longer than it is (purple); a datum
+hole left out crossed out in red with its id and "left out"; double-click opens the set's task
+panel (the deviations, the datum check, the method and its leave-one-out errors)."""
 import FreeCAD
 
+from aeronc.viewproviders import arrows
 from aeronc.viewproviders.view_base import BaseView
+
+USED = (0.55, 0.0, 0.75)  # apart from Path's red rapids
+LEFT_OUT = (0.85, 0.0, 0.0)
 
 
 def arrow_segments(obj):
@@ -25,14 +30,10 @@ class ViewMeasuredHoleSet(BaseView):
         super().attach(vobj)
         from pivy import coin
         self.root = coin.SoSeparator()
-        style = coin.SoDrawStyle()
-        style.lineWidth = 4
-        colour = coin.SoBaseColor()
-        colour.rgb = (0.55, 0.0, 0.75)  # apart from Path's red rapids
-        self.root.addChild(style)
-        self.root.addChild(colour)
-        self.arrows = coin.SoSeparator()
+        self.arrows = coin.SoSeparator()  # one child per arrow drawn
+        self.left_out = coin.SoSeparator()
         self.root.addChild(self.arrows)
+        self.root.addChild(self.left_out)
         vobj.addDisplayMode(self.root, "Arrows")
         self.rebuild(vobj.Object)
 
@@ -46,39 +47,30 @@ class ViewMeasuredHoleSet(BaseView):
         return mode
 
     def updateData(self, obj, prop):
-        if prop in ("Deviations", "Nominal", "ArrowScale") and hasattr(self, "arrows"):
+        if prop in ("Deviations", "Nominal", "ArrowScale", "LeftOut") and hasattr(self, "arrows"):
             self.rebuild(obj)
 
     def rebuild(self, obj):
-        from pivy import coin
         self.arrows.removeAllChildren()
-        for a, b in arrow_segments(obj):
-            d = b - a
-            length = d.Length
-            if length < 1e-9:
-                continue
-            sep = coin.SoSeparator()
-            coords = coin.SoCoordinate3()
-            coords.point.setValues(0, 2, [(a.x, a.y, a.z), (b.x, b.y, b.z)])
-            sep.addChild(coords)
-            line = coin.SoLineSet()
-            line.numVertices.setValue(2)
-            sep.addChild(line)
-            # The head: a cone along the arrow, its tip at the arrow's end.
-            head = min(0.25 * length, 12.0)
-            place = coin.SoTransform()
-            u = FreeCAD.Vector(d).normalize()
-            place.translation = tuple(b - u * (head / 2))
-            place.rotation = coin.SbRotation(coin.SbVec3f(0, 1, 0), coin.SbVec3f(u.x, u.y, u.z))
-            sep.addChild(place)
-            cone = coin.SoCone()
-            cone.height = head
-            cone.bottomRadius = head * 0.35
-            sep.addChild(cone)
-            self.arrows.addChild(sep)
+        self.left_out.removeAllChildren()
+        out = set(getattr(obj, "LeftOut", []))
+        size = 6.0
+        for hid, (a, b) in zip(obj.HoleIds, arrow_segments(obj)):
+            left_out = hid in out
+            node = arrows.arrow(a, b)
+            if node is not None:
+                self.arrows.addChild(arrows.coloured(LEFT_OUT if left_out else USED, node, line_width=4))
+            if left_out:
+                self.left_out.addChild(arrows.coloured(
+                    LEFT_OUT, arrows.markers([a], "CROSS_9_9"), arrows.label(a + FreeCAD.Vector(size, size, size),
+                                                                            "{} left out".format(hid)),
+                    point_size=9))
 
     def arrow_count(self):
         return self.arrows.getNumChildren() if hasattr(self, "arrows") else 0
+
+    def left_out_count(self):
+        return self.left_out.getNumChildren() if hasattr(self, "left_out") else 0
 
     def setEdit(self, vobj, mode=0):
         import FreeCADGui

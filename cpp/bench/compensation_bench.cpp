@@ -4,6 +4,7 @@
 #include <aeronc/compensation/Compensation.h>
 #include <aeronc/compensation/MeasurementCsv.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <cmath>
@@ -69,15 +70,28 @@ int main(int argc, char** argv) {
     std::printf("  %-16s %8.3f s %8.3f s\n", "rows found", secs(t0), cpu() - c0);
     t0 = Clock::now();
     c0 = cpu();
-    const auto loo = leaveOneOut(in.datums);
-    std::printf("  %-16s %8.3f s %8.3f s   (all seven methods over the %zu datum holes)\n", "leave-one-out", secs(t0),
-                cpu() - c0, in.datums.size());
+    const DatumCheck check = checkDatums(in.datums);
+    const auto& loo = check.leaveOneOut;
+    std::printf("  %-16s %8.3f s %8.3f s   (all seven methods' leave-one-out over the %zu datum holes; %zu left out)\n",
+                "datum check", secs(t0), cpu() - c0, in.datums.size(), check.leftOut.size());
     for (Method m : allMethods()) {
         t0 = Clock::now();
         c0 = cpu();
         const Compensator c(m, in.datums);
         const auto holes = correctHoles(c, in.holes, 0.5);
         const double t = secs(t0), tc = cpu() - c0;
+        if (m == Method::RigidTps) {
+            // The neighbour check of the corrections: once per compensation, whatever the method.
+            std::vector<Vec3> positions, corrections;
+            for (const auto& h : holes) positions.push_back(h.nominal), corrections.push_back(h.correction);
+            const auto tn = Clock::now();
+            const double cn = cpu();
+            const auto departures = neighbourDepartures(positions, corrections);
+            std::printf("  %-16s %8.3f s %8.3f s   (%zu holes' departure from their neighbours' corrections, largest "
+                        "%.4f mm)\n",
+                        "neighbour check", secs(tn), cpu() - cn, departures.size(),
+                        *std::max_element(departures.begin(), departures.end()));
+        }
         double rms = 0.0;
         for (const auto& h : holes) rms += (h.compensated - bend(h.nominal)).squaredNorm();
         std::printf("  %-16s %8.3f s %8.3f s   (fit and %zu holes; error RMS %.4f mm, leave-one-out RMS %.4f mm)\n",

@@ -10,6 +10,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 namespace py = pybind11;
 using namespace aeronc::compensation;
 
@@ -74,6 +76,7 @@ std::vector<Datum> datumsOf(const py::list& list) {
         x.id = d["id"].cast<std::string>();
         x.nominal = vecOf(d, "nominal");
         x.measured = vecOf(d, "measured");
+        if (d.contains("normal") && !d["normal"].is_none()) x.normal = vecOf(d, "normal");
         rowOf(d, x);
         out.push_back(x);
     }
@@ -124,9 +127,28 @@ py::dict resultDict(const CompensationResult& r) {
         x["id"] = d.id;
         x["deviation"] = triple(d.deviation);
         x["residual"] = triple(d.residual);
+        const auto& v = d.verdict;
+        x["use"] = datumUseName(v.use);
+        x["used"] = v.use == DatumUse::Used || v.use == DatumUse::PutBack;
+        x["miss"] = std::isfinite(v.miss) ? py::object(py::float_(v.miss)) : py::object(py::none());
+        x["predictor"] = v.predictor ? py::object(py::str(methodName(*v.predictor))) : py::object(py::none());
+        x["predicted"] = triple(v.predicted);
+        x["typical"] = std::isfinite(v.typical) ? py::object(py::float_(v.typical)) : py::object(py::none());
+        x["limit"] = std::isfinite(v.limit) ? py::object(py::float_(v.limit)) : py::object(py::none());
+        x["out_of_line"] = v.outOfLine;
+        x["reason"] = v.reason;
         datums.append(x);
     }
     out["datums"] = datums;
+    py::dict check;
+    check["checked"] = r.check.checked;
+    check["note"] = r.check.note;
+    check["typical_miss"] = r.check.typicalMiss;
+    check["threshold"] = r.check.threshold;
+    check["factor"] = r.check.options.factor;
+    check["minimum"] = r.check.options.minimum;
+    check["left_out"] = r.check.leftOut;
+    out["check"] = check;
     py::list holes;
     for (const auto& h : r.holes) {
         py::dict x;
@@ -136,11 +158,24 @@ py::dict resultDict(const CompensationResult& r) {
         x["compensated"] = triple(h.compensated);
         x["normal"] = triple(h.normal);
         x["exceeds_tolerance"] = h.exceedsTolerance;
+        x["neighbour_departure"] = h.neighbourDeparture;
+        x["against_neighbours"] = h.againstNeighbours;
         x["note"] = h.note;
         holes.append(x);
     }
     out["holes"] = holes;
-    out["flagged"] = r.flagged;
+    py::list flags;
+    for (const auto& f : r.flags) {
+        py::dict x;
+        x["kind"] = flagKindName(f.kind);
+        x["id"] = f.id;
+        x["value"] = f.value;
+        x["limit"] = f.limit;
+        x["reason"] = f.reason;
+        flags.append(x);
+    }
+    out["flags"] = flags;
+    out["flagged_holes"] = r.flaggedHoles;
     return out;
 }
 
@@ -169,12 +204,27 @@ void bindCompensation(py::module_& m) {
 
     m.def(
         "compensate",
-        [](const py::list& datums, const py::list& holes, const std::string& method, double tolerance) {
+        [](const py::list& datums, const py::list& holes, const std::string& method, double tolerance,
+           double neighbourTolerance, const std::vector<std::string>& keep, const std::vector<std::string>& drop,
+           const py::dict& check) {
             return guardedCompensation([&] {
                 CompensationInput in;
                 in.datums = datumsOf(datums);
                 in.holes = holesOf(holes);
                 in.tolerance = tolerance;
+                in.neighbourTolerance = neighbourTolerance;
+                in.keep = {keep.begin(), keep.end()};
+                in.drop = {drop.begin(), drop.end()};
+                for (const auto& [key, value] : check) {
+                    const auto k = key.cast<std::string>();
+                    if (k == "enabled") in.check.enabled = value.cast<bool>();
+                    else if (k == "factor") in.check.factor = value.cast<double>();
+                    else if (k == "minimum") in.check.minimum = value.cast<double>();
+                    else if (k == "max_share") in.check.maxShare = value.cast<double>();
+                    else if (k == "min_datums") in.check.minDatums = value.cast<size_t>();
+                    else throw compensationError("datum check: unknown option '" + k +
+                                                 "' (enabled, factor, minimum, max_share, min_datums)");
+                }
                 std::optional<Method> chosen;
                 if (!method.empty() && method != "proposed") {
                     chosen = methodFromName(method);
@@ -193,9 +243,14 @@ void bindCompensation(py::module_& m) {
             });
         },
         py::arg("datums"), py::arg("holes"), py::arg("method") = std::string(), py::arg("tolerance") = 0.5,
+        py::arg("neighbour_tolerance") = 0.05, py::arg("keep") = std::vector<std::string>(),
+        py::arg("drop") = std::vector<std::string>(), py::arg("check") = py::dict(),
         "Compensate holes from measured datum holes. datums: [{id, nominal, measured[, row, station]}], holes: "
         "[{id, position, normal[, row, station]}], method: a name of compensation_methods() or '' / 'proposed' "
-        "(lowest leave-one-out error). Returns {method, proposed, fit, leave_one_out, datums, holes, flagged}.");
+        "(lowest leave-one-out error); keep: datum ids put back (never left out), drop: datum ids left out by "
+        "hand; check: {enabled, factor, minimum, max_share, min_datums} of the datum check. Returns {method, "
+        "proposed, fit, leave_one_out (over the datum holes used), check, datums (every one, with use, miss, "
+        "reason), holes, flags [{kind, id, value, limit, reason}], flagged_holes}.");
 
     m.def(
         "find_rows",

@@ -27,6 +27,27 @@ from aeronc.tests.app.support import new_document, temp_fcstd
 
 SHARED = os.environ.get("AERONC_SHARED_DATA", "")
 DATUM_PLACES = (0, 7, 14)  # first, middle and last hole of each row of fifteen
+ISSUE_DATUMS = (0, 10, 20, 30, 40)  # every tenth hole of each row of 41
+
+
+def _offset(p):
+    """The assembly offset of the misread-datum checks."""
+    return (p[0] + 0.5, p[1] - 0.3, p[2] + 0.2)
+
+
+def _camera(photo, seed, misread=None, noise=0.01):
+    """_offset as a camera sees it, with `noise` mm of noise per coordinate (seeded) and the
+    datum holes of `misread` ({id: (dx, dy, dz)}) read that far off."""
+    import random
+    rng = random.Random(seed)
+    off = {tuple(round(c, 6) for c in p): misread[i] for i, p in zip(photo.HoleIds, photo.Positions)
+           if i in (misread or {})}
+
+    def see(p):
+        q = _offset(p)
+        d = off.get(tuple(round(c, 6) for c in p), (0.0, 0.0, 0.0))
+        return tuple(q[k] + d[k] + rng.gauss(0.0, noise) for k in range(3))
+    return see
 
 
 def _distortions(box):
@@ -470,6 +491,127 @@ class CompensationTest(unittest.TestCase):
         self.assertEqual(html.count('<tr class="flag">'), len(op.Flagged))
         self.assertGreater(len(op.Flagged), 0)
         self.assertLess(len(op.Flagged), 48)
+
+    # -- misread datum readings ---------------------------------------------------------------
+    def _issue_skin(self):
+        """The 5 x 41 curved skin with 25 datum holes (every tenth hole of each row), its photo
+        and measured sets (a clean reading first) and the drilling of its 180 other holes (a few
+        minutes: the skin's 205 holes are cut and found)."""
+        s = self.skin({"rows": 5, "holes_per_row": 41})
+        photo = datum_holes.create_photo_hole_set(s.doc, s.part, s.faces_at(ISSUE_DATUMS))
+        ms = datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(
+            photo, _camera(photo, seed=1)))
+        job = pathcompat.create_job(s.doc, [s.part])
+        s.doc.recompute()
+        op = datum_holes.create_compensated_drilling(job, photo, ms)
+        return s, photo, ms, op
+
+    def _drilled_error(self, op):
+        return _rms([(c - _vec(_offset(tuple(n)))).Length for n, c in zip(op.NominalPositions,
+                                                                          op.CompensatedPositions)])
+
+    def test_misread_datum_holes_are_named_left_out_and_can_be_put_back(self):
+        s, photo, ms, op = self._issue_skin()
+        self.assertEqual(len(op.CompensatedPositions), 180)
+        said = []
+        mhs.console_warning, warn = said.append, mhs.console_warning
+        self.addCleanup(setattr, mhs, "console_warning", warn)
+        by_place = {s.place[f.split()[0]]: i for f, i in zip(photo.HoleFaces, photo.HoleIds)}
+        middle, corner = by_place[(2, 20)], by_place[(4, 40)]
+        # Four noise draws: clean, one misread (the issue's 0.8 mm along X), two (0.3 mm across
+        # the row at the corner too). Errors summed over the draws.
+        sums = {"clean": 0.0, "one": 0.0, "two": 0.0}
+        for seed in range(1, 5):
+            for case, misread in (("clean", {}), ("one", {middle: (0.8, 0, 0)}),
+                                  ("two", {middle: (0.8, 0, 0), corner: (0, 0.3, 0)})):
+                datum_holes.import_measurements(photo, text=compensation.synthetic_measurements(
+                    photo, _camera(photo, seed, misread)), measured_set=ms)
+                self.assertEqual(sorted(ms.LeftOut), sorted(misread), (case, seed, list(ms.DatumFlags)))
+                for hid in misread:
+                    self.assertTrue(any(l.startswith(hid + ": left out: ") and "from where the other datum holes "
+                                        "put it" in l for l in ms.DatumFlags), list(ms.DatumFlags))
+                    self.assertTrue(any(l.startswith(hid + ": left out: ") for l in op.Flags))
+                    self.assertIn(hid, ms.Status)
+                    self.assertIn(hid, op.Status)
+                if not misread:  # a clean set: nothing left out, nothing said about a datum hole
+                    self.assertEqual((list(ms.LeftOut), list(ms.DatumFlags)), ([], []))
+                    self.assertIn("none out of line", ms.Status)
+                sums[case] += self._drilled_error(op) ** 2
+        rms = {k: math.sqrt(v / 4) for k, v in sums.items()}
+        print("\n5 x 41 skin, offset (0.5, -0.3, 0.2) mm, 0.01 mm noise, 4 draws: drilled holes RMS {:.4f} mm clean, "
+              "{:.4f} mm one misread datum, {:.4f} mm two".format(rms["clean"], rms["one"], rms["two"]))
+        self.assertLess(rms["one"], 1.5 * rms["clean"])
+        self.assertLess(rms["two"], 1.5 * rms["clean"])
+        # The console named them (once per change).
+        self.assertTrue(any(middle + ": left out" in t for t in said), said)
+        self.assertTrue(any(corner + ": left out" in t for t in said), said)
+
+        # The report names them and says what is flagged: |(0.5, -0.3, 0.2)| = 0.62 mm, so every
+        # hole is beyond the 0.5 mm tolerance; at 0.7 mm only the datum holes are flagged.
+        from aeronc.reports import compensation_report
+        out = os.path.dirname(temp_fcstd("misread_report"))
+        page = compensation_report.write_report(op, os.path.join(out, "report.html"), os.path.join(out, "report.png"))
+        html = open(page, encoding="utf-8").read()
+        for hid in (middle, corner):
+            self.assertIn('<tr class="out"><td>{}</td><td>left out</td>'.format(hid), html)
+            self.assertIn("<td>{}</td><td>datum left out</td><td>left out: ".format(hid), html)
+        self.assertEqual(html.count('<tr class="out">'), 2)
+        self.assertEqual(len(op.Flagged), 180)
+        self.assertEqual(html.count('<tr class="flag">'), 180)
+        self.assertEqual(html.count("<td>beyond tolerance</td><td>correction "), 180)
+        self.assertIn("<b>180</b> of 180 holes drilled are flagged", html)
+        ms.Tolerance = 0.7
+        s.doc.recompute()
+        self.assertEqual((len(op.Flagged), len(op.Flags)), (0, 2))
+        page = compensation_report.write_report(op, os.path.join(out, "report.html"))
+        self.assertIn("<b>0</b> of 180 holes drilled are flagged", open(page, encoding="utf-8").read())
+
+        # Put the middle one back: one undo step; it is used (and flagged), the holes move.
+        left = self._drilled_error(op)
+        undo = s.doc.UndoCount
+        mhs.put_back(ms, middle)
+        self.assertEqual(s.doc.UndoCount, undo + 1)
+        self.assertEqual((list(ms.PutBack), list(ms.LeftOut)), ([middle], [corner]))
+        self.assertTrue(any(l.startswith(middle + ": put back by hand, used") for l in ms.DatumFlags))
+        back = self._drilled_error(op)
+        self.assertGreater(back, 2 * left)  # 0.8 mm over 24 other datum holes: about 0.03 mm
+        s.doc.undo()
+        s.doc.recompute()
+        self.assertEqual((list(ms.PutBack), sorted(ms.LeftOut)), ([], sorted([middle, corner])))
+        self.assertAlmostEqual(self._drilled_error(op), left, places=12)
+        s.doc.redo()
+        s.doc.recompute()
+        self.assertEqual(list(ms.PutBack), [middle])
+        # Left out by hand: a clean datum hole, never used; one undo step.
+        clean_one = by_place[(0, 10)]
+        mhs.leave_out(ms, clean_one)
+        self.assertEqual(s.doc.UndoCount, undo + 2)
+        self.assertEqual(sorted(ms.LeftOut), sorted([corner, clean_one]))
+        self.assertTrue(any(l.startswith(clean_one + ": left out by hand") for l in ms.DatumFlags))
+        with self.assertRaisesRegex(compensation.CompensationError, "DH99 is not a measured datum hole"):
+            mhs.put_back(ms, "DH99")
+
+        # Saved and reopened: the lists and the result come back.
+        before = {"put": list(ms.PutBack), "hand": list(ms.LeftOutByHand), "out": list(ms.LeftOut),
+                  "flags": list(op.Flags), "path": op.Path.toGCode()}
+        path = temp_fcstd("misread")
+        s.doc.saveAs(path)
+        FreeCAD.closeDocument(s.doc.Name)
+        self.skins.remove(s)
+        doc = FreeCAD.openDocument(path)
+        try:
+            ms2 = next(o for o in doc.Objects if mhs.is_measured_hole_set(o))
+            op2 = next(o for o in doc.Objects if cd.is_compensated_drilling(o))
+            self.assertEqual({"put": list(ms2.PutBack), "hand": list(ms2.LeftOutByHand), "out": list(ms2.LeftOut),
+                              "flags": list(op2.Flags), "path": op2.Path.toGCode()}, before)
+            ms2.touch()
+            doc.recompute()
+            self.assertEqual((list(ms2.LeftOut), list(op2.Flags), op2.Path.toGCode()),
+                             (before["out"], before["flags"], before["path"]))
+            mhs.leave_out(ms2, middle)  # the put-back one out again: off the put-back list
+            self.assertEqual((list(ms2.PutBack), sorted(ms2.LeftOut)), ([], sorted([middle, corner, clean_one])))
+        finally:
+            FreeCAD.closeDocument(doc.Name)
 
     # -- saving ---------------------------------------------------------------------------------
     def test_nodes_survive_saving_and_reopening(self):

@@ -6,7 +6,9 @@ Select holes of a generated wing skin in the 3-D view, right-click, Define as da
 hole (and, on the sample panel, hole nodes of its Machining Features tree); reorder and remove
 in the set's panel, draw a row of holes by hand and read the spacing checks; write the camera
 program; import a measurement file (the deviations in a table and as arrows in the 3-D view);
-choose the method with the leave-one-out errors; make the compensated drilling. Screenshots go
+choose the method with the leave-one-out errors; make the compensated drilling (its
+corrections as arrows); re-import with one datum hole misread: it is named and left out in the
+panel and the 3-D view (screenshot aeronc_datum_outlier), put back, undone. Screenshots go
 to env AERONC_ARTIFACTS (default /tmp). Prints "N passed, N failed"; exit 0 when all pass.
 """
 import os
@@ -152,7 +154,7 @@ def run():
     check("the measured set's panel replaces the photo-hole set's", mp is not None and mp.obj is ms and
           PhotoHoleSetPanel.current is None)
     check("dP per datum hole in the table", mp.deviations.rowCount() == 9 and
-          abs(float(mp.deviations.item(0, 4).text()) - ms.Deviations[0].Length) < 1e-4)
+          abs(float(mp.deviations.item(0, 5).text()) - ms.Deviations[0].Length) < 1e-4)
     check("the deviations drawn as arrows", ms.ViewObject.Proxy.arrow_count() == 9)
     check("every method's leave-one-out error listed, the proposed one marked",
           mp.loo.rowCount() == 7 and any(mp.loo.item(r, 3).text().startswith("proposed") for r in range(7)))
@@ -185,6 +187,70 @@ def run():
         tree_view.expandAll()
     shot = window_shot(doc, "aeronc_datum_holes")
     check("datum holes screenshot saved", os.path.getsize(shot) > 20000, shot)
+    op = ops[0]
+    check("clean measurements: no datum hole left out, none named in the panel",
+          list(ms.LeftOut) == [] and not mp.flags.isVisible() and
+          all(mp.deviations.item(r, 1).text() == "used" for r in range(9)), (list(ms.DatumFlags), list(ms.Misses)))
+    check("the drilled holes' corrections drawn as arrows", op.ViewObject.Proxy.correction_count() == 36,
+          op.ViewObject.Proxy.correction_count())
+
+    # -- a misread datum hole: named, left out, put back -----------------------------------------
+    bad = ms.HoleIds[4]
+    at = ps.Positions[4]
+
+    # The assembly offset and stretched by 0.4 per mille, 0.01 mm of camera noise, and the
+    # camera reading one datum hole 0.8 mm off along X.
+    import random
+    rng = random.Random(5)
+
+    def misread(p):
+        q = (1.0004 * p[0] + 0.5, 1.0004 * p[1] - 0.3, p[2] + 0.2)
+        near = abs(p[0] - at.x) < 1e-6 and abs(p[1] - at.y) < 1e-6 and abs(p[2] - at.z) < 1e-6
+        return tuple(c + rng.gauss(0.0, 0.01) + (0.8 if near and k == 0 else 0.0) for k, c in enumerate(q))
+    csv2 = os.path.join(out, "measured_misread.csv")
+    with open(csv2, "w") as f:
+        f.write(compensation.synthetic_measurements(ps, misread))
+    undo = doc.UndoCount
+    mp.reimport(csv2)
+    pump(0.5)
+    row = list(ms.HoleIds).index(bad)
+    check("re-import with {} read 0.8 mm off: one undo step, it is left out".format(bad),
+          list(ms.LeftOut) == [bad] and doc.UndoCount == undo + 1, (list(ms.DatumFlags), list(ms.Misses), errors))
+    check("the panel names it: its row says left out, in red, and why",
+          mp.deviations.item(row, 1).text() == "left out" and mp.flags.isVisible() and
+          "Datum hole {}: left out: ".format(bad) in mp.flags.text() and
+          mp.deviations.item(row, 0).foreground().color().name() == "#b00020", mp.flags.text())
+    check("the drilling says it and drills from the other eight", bad in op.Status and
+          any(l.startswith(bad + ": left out: ") for l in op.Flags), (op.Status, list(op.Flags)))
+    check("the 3-D view crosses it out and names it", ms.ViewObject.Proxy.left_out_count() == 1)
+    check("the corrections still drawn, none against its neighbours' (a stretch is linear)",
+          op.ViewObject.Proxy.correction_count() == 36 and op.ViewObject.Proxy.flagged_count()[1] == 0,
+          op.ViewObject.Proxy.flagged_count())
+    check("only the misread datum hole flagged", list(ms.DatumFlags) == [l for l in ms.DatumFlags if
+                                                                          l.startswith(bad + ":")],
+          list(ms.DatumFlags))
+    Gui.Selection.clearSelection()
+    Gui.activeDocument().activeView().viewTop()
+    Gui.SendMsgToActiveView("ViewFit")
+    pump()
+    shot = window_shot(doc, "aeronc_datum_outlier")
+    check("misread datum screenshot saved", os.path.getsize(shot) > 20000, shot)
+    undo = doc.UndoCount
+    mp.deviations.selectRow(row)
+    mp.put_back_button.click()
+    pump()
+    check("Put back: one undo step, used again, and flagged as put back",
+          list(ms.LeftOut) == [] and list(ms.PutBack) == [bad] and doc.UndoCount == undo + 1 and
+          mp.deviations.item(row, 1).text() == "put back" and "put back by hand" in mp.flags.text(),
+          (list(ms.LeftOut), list(ms.PutBack), doc.UndoNames, mp.flags.text()))
+    check("the 3-D view no longer crosses it out", ms.ViewObject.Proxy.left_out_count() == 0)
+    doc.undo()
+    doc.recompute()
+    pump()
+    mp.refresh()
+    check("undo leaves it out again", list(ms.LeftOut) == [bad] and list(ms.PutBack) == [] and
+          mp.deviations.item(row, 1).text() == "left out", (list(ms.LeftOut), list(ms.PutBack)))
+    check("no error", not errors, errors)
     check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
     pump()
     check("panel closed", not Gui.Control.activeDialog())

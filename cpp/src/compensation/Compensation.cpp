@@ -1,148 +1,22 @@
 #include <aeronc/compensation/Compensation.h>
-#include <aeronc/compensation/ResidualField.h>
-#include <aeronc/compensation/RowInterpolation.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
 namespace aeronc::compensation {
 
-const std::vector<Method>& allMethods() {
-    static const std::vector<Method> methods{Method::Seed,          Method::Rigid,    Method::Similarity,
-                                             Method::RigidIdw,      Method::SimilarityIdw, Method::RigidTps,
-                                             Method::SimilarityTps};
-    return methods;
-}
-
-std::string methodName(Method m) {
-    switch (m) {
-        case Method::Seed: return "seed";
-        case Method::Rigid: return "rigid";
-        case Method::Similarity: return "similarity";
-        case Method::RigidIdw: return "rigid+idw";
-        case Method::SimilarityIdw: return "similarity+idw";
-        case Method::RigidTps: return "rigid+tps";
-        case Method::SimilarityTps: return "similarity+tps";
-    }
-    return "?";
-}
-
-std::optional<Method> methodFromName(const std::string& name) {
-    for (Method m : allMethods())
-        if (methodName(m) == name) return m;
-    return std::nullopt;
-}
-
 namespace {
 
-bool similarityBased(Method m) {
-    return m == Method::Similarity || m == Method::SimilarityIdw || m == Method::SimilarityTps;
-}
-bool idw(Method m) { return m == Method::RigidIdw || m == Method::SimilarityIdw; }
-bool tps(Method m) { return m == Method::RigidTps || m == Method::SimilarityTps; }
-
-NominalHole asHole(const Datum& d) {
-    NominalHole h;
-    h.id = d.id;
-    h.position = d.nominal;
-    h.row = d.row;
-    h.station = d.station;
-    return h;
+std::string mm(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f mm", v);
+    return buf;
 }
 
 }  // namespace
-
-struct Compensator::Fields {
-    std::optional<InverseDistanceField> idw;
-    std::optional<ThinPlateSpline> tps;
-};
-
-Compensator::Compensator(Method method, std::vector<Datum> datums) : method_(method), datums_(std::move(datums)) {
-    if (datums_.empty()) throw compensationError("no datum holes to compensate from");
-    if (method_ == Method::Seed) {
-        for (size_t i = 0; i < datums_.size(); ++i) {
-            if (datums_[i].row < 0) throw compensationError("the seed's method needs the rows of the datum holes");
-            rowDatums_[datums_[i].row].push_back(static_cast<int>(i));
-        }
-        for (auto& [row, members] : rowDatums_)
-            std::sort(members.begin(), members.end(), [&](int a, int b) {
-                return datums_[static_cast<size_t>(a)].station < datums_[static_cast<size_t>(b)].station;
-            });
-        return;
-    }
-    std::vector<Vec3> nominal, measured;
-    for (const auto& d : datums_) nominal.push_back(d.nominal), measured.push_back(d.measured);
-    fit_ = similarityBased(method_) ? fitSimilarity(nominal, measured) : fitRigid(nominal, measured);
-    for (const auto& d : datums_) residuals_.push_back(d.measured - fit_.apply(d.nominal));
-    auto fields = std::make_shared<Fields>();
-    if (idw(method_)) fields->idw.emplace(nominal, residuals_);
-    if (tps(method_)) fields->tps.emplace(nominal, residuals_);
-    fields_ = fields;
-}
-
-Vec3 Compensator::correction(const NominalHole& hole, std::string* note) const {
-    if (method_ == Method::Seed) return seedCorrection(hole, note);
-    Vec3 c = fit_.apply(hole.position) - hole.position;
-    if (fields_->idw) c += fields_->idw->at(hole.position);
-    if (fields_->tps) c += fields_->tps->at(hole.position);
-    return c;
-}
-
-std::vector<Vec3> Compensator::corrections(const std::vector<NominalHole>& holes, std::vector<std::string>* notes) const {
-    std::vector<Vec3> out(holes.size());
-    if (notes) notes->assign(holes.size(), std::string());
-    if (method_ == Method::Seed) {
-        for (size_t i = 0; i < holes.size(); ++i) out[i] = seedCorrection(holes[i], notes ? &(*notes)[i] : nullptr);
-        return out;
-    }
-    for (size_t i = 0; i < holes.size(); ++i) {
-        out[i] = fit_.apply(holes[i].position) - holes[i].position;
-        if (fields_->idw) out[i] += fields_->idw->at(holes[i].position);
-    }
-    if (fields_->tps) {
-        std::vector<Vec3> points;
-        points.reserve(holes.size());
-        for (const auto& h : holes) points.push_back(h.position);
-        fields_->tps->addAt(points, out);
-    }
-    return out;
-}
-
-Vec3 Compensator::seedCorrection(const NominalHole& hole, std::string* note) const {
-    auto say = [&](const std::string& text) {
-        if (note) *note = text;
-    };
-    const auto it = rowDatums_.find(hole.row);
-    if (hole.row < 0 || it == rowDatums_.end()) {
-        // Nothing to interpolate between: the nearest datum hole's deviation, and say so.
-        size_t best = 0;
-        for (size_t i = 1; i < datums_.size(); ++i)
-            if ((datums_[i].nominal - hole.position).squaredNorm() < (datums_[best].nominal - hole.position).squaredNorm())
-                best = i;
-        say("no datum hole in its row: deviation of the nearest datum hole " + datums_[best].id);
-        return datums_[best].deviation();
-    }
-    const auto& members = it->second;
-    const Datum& first = datums_[static_cast<size_t>(members.front())];
-    const Datum& last = datums_[static_cast<size_t>(members.back())];
-    if (hole.station < first.station) {
-        say("before the first datum hole of its row: deviation of " + first.id);
-        return first.deviation();
-    }
-    if (hole.station > last.station) {
-        say("beyond the last datum hole of its row: deviation of " + last.id);
-        return last.deviation();
-    }
-    for (size_t k = 0; k + 1 < members.size(); ++k) {
-        const Datum& a = datums_[static_cast<size_t>(members[k])];
-        const Datum& b = datums_[static_cast<size_t>(members[k + 1])];
-        if (hole.station <= b.station && b.station > a.station)
-            return rowCorrection(a.deviation(), b.deviation(), b.station - a.station, hole.station - a.station);
-    }
-    return first.deviation();  // every datum hole of the row at the hole's station
-}
 
 void assignRows(std::vector<Datum>& datums, std::vector<NominalHole>& holes, const RowOptions& options) {
     const bool missing = std::any_of(datums.begin(), datums.end(), [](const Datum& d) { return d.row < 0; }) ||
@@ -156,50 +30,6 @@ void assignRows(std::vector<Datum>& datums, std::vector<NominalHole>& holes, con
     for (size_t i = 0; i < datums.size(); ++i) datums[i].row = rows.row[i], datums[i].station = rows.station[i];
     for (size_t i = 0; i < holes.size(); ++i)
         holes[i].row = rows.row[datums.size() + i], holes[i].station = rows.station[datums.size() + i];
-}
-
-std::vector<LeaveOneOut> leaveOneOut(const std::vector<Datum>& datums) {
-    std::vector<LeaveOneOut> out;
-    for (Method m : allMethods()) {
-        LeaveOneOut f;
-        f.method = m;
-        f.available = true;
-        for (size_t j = 0; j < datums.size() && f.available; ++j) {
-            std::vector<Datum> others;
-            others.reserve(datums.size() - 1);
-            for (size_t k = 0; k < datums.size(); ++k)
-                if (k != j) others.push_back(datums[k]);
-            try {
-                const Compensator c(m, std::move(others));
-                f.errors.push_back((c.correction(asHole(datums[j])) - datums[j].deviation()).norm());
-            } catch (const Error& e) {
-                f.available = false;
-                f.reason = "without " + datums[j].id + ": " + e.what();
-            }
-        }
-        if (datums.size() < 2) f.available = false, f.reason = "needs at least two datum holes";
-        if (f.available) {
-            double sum = 0.0;
-            for (double e : f.errors) sum += e * e, f.max = std::max(f.max, e);
-            f.rms = std::sqrt(sum / static_cast<double>(f.errors.size()));
-        } else {
-            f.errors.clear();
-        }
-        out.push_back(std::move(f));
-    }
-    return out;
-}
-
-std::optional<Method> proposedMethod(const std::vector<LeaveOneOut>& figures) {
-    double best = INFINITY;
-    for (const auto& f : figures)
-        if (f.available) best = std::min(best, f.rms);
-    if (!std::isfinite(best)) return std::nullopt;
-    const double within = best + std::max(1e-9, 0.005 * best);
-    for (Method m : allMethods())
-        for (const auto& f : figures)
-            if (f.method == m && f.available && f.rms <= within) return m;
-    return std::nullopt;
 }
 
 CompensationResult compensate(CompensationInput input, std::optional<Method> method) {
@@ -223,10 +53,20 @@ CompensationResult compensate(CompensationInput input, std::optional<Method> met
         h.normal.normalize();
     }
     if (!(input.tolerance >= 0.0)) throw compensationError("the correction tolerance must be zero or positive");
+    if (!(input.neighbourTolerance >= 0.0))
+        throw compensationError("the neighbour tolerance must be zero or positive");
     assignRows(datums, holes, input.rows);
 
     CompensationResult r;
-    r.leaveOneOut = leaveOneOut(datums);
+    r.check = checkDatums(datums, input.check, input.keep, input.drop);
+    const std::vector<Datum>& used = r.check.used;
+    if (used.size() < 2) {
+        std::ostringstream os;
+        os << "fewer than two datum holes in use (" << used.size() << " of " << datums.size()
+           << "): put back datum holes left out by hand";
+        throw compensationError(os.str());
+    }
+    r.leaveOneOut = r.check.leaveOneOut;
     r.proposed = proposedMethod(r.leaveOneOut);
     if (!method && !r.proposed) {
         std::string why;
@@ -234,17 +74,49 @@ CompensationResult compensate(CompensationInput input, std::optional<Method> met
         throw compensationError("no method can be proposed from these datum holes:" + why);
     }
     r.method = method ? *method : *r.proposed;
-    const Compensator c(r.method, datums);
+    const Compensator c(r.method, used);
     r.fit = c.fit();
-    for (const auto& d : datums) r.datums.push_back({d.id, d.deviation(), d.measured - c.fit().apply(d.nominal)});
-    r.holes = correctHoles(c, holes, input.tolerance);
-    for (const auto& h : r.holes) r.flagged += h.exceedsTolerance ? 1 : 0;
+    for (size_t i = 0; i < datums.size(); ++i) {
+        const auto& d = datums[i];
+        r.datums.push_back({d.id, d.deviation(), d.measured - c.fit().apply(d.nominal), r.check.datums[i]});
+    }
+    r.holes = correctHoles(c, holes, input.tolerance, input.neighbourTolerance);
+
+    for (const auto& d : r.datums) {
+        const auto& v = d.verdict;
+        const double off = v.miss, limit = std::isfinite(v.limit) ? v.limit : r.check.threshold;
+        if (v.use == DatumUse::LeftOut) r.flags.push_back({FlagKind::DatumLeftOut, d.id, off, limit, v.reason});
+        if (v.use == DatumUse::LeftOutByHand)
+            r.flags.push_back({FlagKind::DatumLeftOutByHand, d.id, off, limit, v.reason});
+        if (v.use == DatumUse::PutBack) r.flags.push_back({FlagKind::DatumPutBack, d.id, off, limit, v.reason});
+        if (v.use == DatumUse::Used && v.outOfLine)
+            r.flags.push_back({FlagKind::DatumOutOfLineUsed, d.id, off, limit, v.reason});
+    }
+    for (const auto& h : r.holes) {
+        if (h.againstNeighbours)
+            r.flags.push_back({FlagKind::AgainstNeighbours, h.id, h.neighbourDeparture, input.neighbourTolerance,
+                               "correction departs " + mm(h.neighbourDeparture) + " from its neighbours' (beyond " +
+                                   mm(input.neighbourTolerance) + ")"});
+        if (h.exceedsTolerance)
+            r.flags.push_back({FlagKind::BeyondTolerance, h.id, h.correction.norm(), input.tolerance,
+                               "correction " + mm(h.correction.norm()) + " beyond the " + mm(input.tolerance) +
+                                   " tolerance"});
+        r.flaggedHoles += (h.againstNeighbours || h.exceedsTolerance) ? 1 : 0;
+    }
     return r;
 }
 
-std::vector<HoleCorrection> correctHoles(const Compensator& c, const std::vector<NominalHole>& holes, double tolerance) {
+std::vector<HoleCorrection> correctHoles(const Compensator& c, const std::vector<NominalHole>& holes, double tolerance,
+                                         double neighbourTolerance) {
     std::vector<std::string> notes;
     const std::vector<Vec3> corrections = c.corrections(holes, &notes);
+    std::vector<double> departures(holes.size(), 0.0);
+    if (std::isfinite(neighbourTolerance)) {
+        std::vector<Vec3> positions;
+        positions.reserve(holes.size());
+        for (const auto& h : holes) positions.push_back(h.position);
+        departures = neighbourDepartures(positions, corrections);
+    }
     std::vector<HoleCorrection> out;
     out.reserve(holes.size());
     for (size_t i = 0; i < holes.size(); ++i) {
@@ -257,6 +129,8 @@ std::vector<HoleCorrection> correctHoles(const Compensator& c, const std::vector
         hc.compensated = h.position + hc.correction;
         hc.normal = c.usesFit() ? Vec3((c.fit().rotation * h.normal).normalized()) : h.normal;
         hc.exceedsTolerance = hc.correction.norm() > tolerance;
+        hc.neighbourDeparture = departures[i];
+        hc.againstNeighbours = departures[i] > neighbourTolerance;
         out.push_back(std::move(hc));
     }
     return out;

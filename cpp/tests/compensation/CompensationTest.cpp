@@ -27,7 +27,7 @@ TEST(Compensation, ReportHasEveryHoleAndDatum) {
         EXPECT_EQ(h.exceedsTolerance, h.correction.norm() > 1.3);
         flagged += h.exceedsTolerance;
     }
-    EXPECT_EQ(flagged, r.flagged);
+    EXPECT_EQ(flagged, r.flaggedHoles);
     EXPECT_GT(flagged, 0);
     EXPECT_LT(flagged, static_cast<int>(r.holes.size()));
     for (const auto& l : r.leaveOneOut) {

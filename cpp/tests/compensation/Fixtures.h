@@ -3,13 +3,17 @@
 #include <aeronc/compensation/Compensation.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace aeronc::compensation::test {
 
 constexpr double kPi = 3.14159265358979323846;
+
+inline std::string datumId(int i) { return "DH" + std::to_string(i); }
 
 // Rows of holes; every row has datum holes at both ends and in the middle.
 struct Pattern {
@@ -44,8 +48,9 @@ inline Pattern flatSkin(int rows = 5, int holes = 21) {
 }
 
 // A skin curved chordwise (a cylinder of radius 800 mm about the y axis): rows follow the
-// curvature (arcs of 0.7 rad), 40 mm apart spanwise.
-inline Pattern curvedSkin(int rows = 5, int holes = 21) {
+// curvature (arcs of 0.7 rad), 40 mm apart spanwise. Datum holes at the rows' ends and middle,
+// or at `datumPlaces`.
+inline Pattern curvedSkin(int rows = 5, int holes = 21, std::vector<int> datumPlaces = {}) {
     Pattern p{"curved skin", {}, {}, {}, {}, {}};
     const double radius = 800.0;
     for (int r = 0; r < rows; ++r) {
@@ -57,7 +62,7 @@ inline Pattern curvedSkin(int rows = 5, int holes = 21) {
             p.normals.emplace_back(std::sin(t), 0.0, std::cos(t));
         }
     }
-    splitDatums(p, {0, holes / 2, holes - 1});
+    splitDatums(p, datumPlaces.empty() ? std::vector<int>{0, holes / 2, holes - 1} : datumPlaces);
     return p;
 }
 
@@ -98,12 +103,44 @@ inline std::vector<Datum> measuredDatums(const Pattern& p, const Distortion& d) 
     std::vector<Datum> out;
     for (int i : p.datums) {
         Datum x;
-        x.id = "DH" + std::to_string(i);
+        x.id = datumId(i);
         x.nominal = p.points[static_cast<size_t>(i)];
         x.measured = d(x.nominal);
+        x.normal = p.normals[static_cast<size_t>(i)];
         out.push_back(x);
     }
     return out;
+}
+
+// Camera noise: every measured coordinate off by a normal variate of `sigma` mm; the same
+// numbers for the same seed on every platform (Box-Muller over mt19937, whose sequence the
+// standard fixes).
+inline void addNoise(std::vector<Datum>& datums, double sigma, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    auto uniform = [&] { return (static_cast<double>(rng()) + 0.5) / 4294967296.0; };
+    for (auto& d : datums)
+        for (int c = 0; c < 3; ++c) {
+            const double u = uniform(), v = uniform();
+            d.measured[c] += sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * kPi * v);
+        }
+}
+
+// The curved skin of the misread-datum checks: 5 rows of 41 holes, datum holes every tenth hole
+// (25 datum holes, 180 to drill), the assembly offset by (0.5, -0.3, 0.2) mm.
+inline Pattern fiveByFortyOne() { return curvedSkin(5, 41, {0, 10, 20, 30, 40}); }
+inline Vec3 assemblyOffset(const Vec3& x) { return x + Vec3(0.5, -0.3, 0.2); }
+
+// The direction along the row at hole i of a curved skin (its rows run chordwise), and across it.
+inline Vec3 alongRow(const Pattern& p, int i) {
+    const Vec3& n = p.normals[static_cast<size_t>(i)];
+    return Vec3(n.z(), 0.0, -n.x());
+}
+inline Vec3 acrossRow() { return Vec3::UnitY(); }
+
+// The camera misreads datum hole i by `off`.
+inline void misread(std::vector<Datum>& datums, int i, const Vec3& off) {
+    for (auto& d : datums)
+        if (d.id == datumId(i)) d.measured += off;
 }
 
 inline std::vector<NominalHole> drillingHoles(const Pattern& p) {

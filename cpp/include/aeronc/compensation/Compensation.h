@@ -10,81 +10,21 @@
 // No method wins every distortion (a similarity fit is best for rigid and scale errors, an
 // interpolated residual for bending), so the proposed method is the one whose leave-one-out
 // error is lowest: each datum hole predicted from the others.
-#include <aeronc/compensation/BestFit.h>
+//
+// Before that, datum readings out of line with the others are left out (DatumCheck.h); after
+// it, what a user must look at is flagged (HoleFlags.h).
+#include <aeronc/compensation/Compensator.h>
+#include <aeronc/compensation/DatumCheck.h>
+#include <aeronc/compensation/HoleFlags.h>
 #include <aeronc/compensation/HoleRows.h>
 
-#include <map>
-#include <memory>
+#include <cmath>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace aeronc::compensation {
-
-enum class Method { Seed, Rigid, Similarity, RigidIdw, SimilarityIdw, RigidTps, SimilarityTps };
-
-// Every method, simplest first (the order that breaks ties in the leave-one-out proposal).
-const std::vector<Method>& allMethods();
-std::string methodName(Method m);                            // "seed", "rigid", "similarity+tps", ...
-std::optional<Method> methodFromName(const std::string& name);  // nullopt for an unknown name
-
-// A measured datum hole: its nominal position and where it was measured, in the part frame.
-// row and station (distance along the row) matter for the seed's method; row -1 lets
-// compensate() find the rows.
-struct Datum {
-    std::string id;
-    Vec3 nominal = Vec3::Zero();
-    Vec3 measured = Vec3::Zero();
-    int row = -1;
-    double station = 0.0;
-    Vec3 deviation() const { return measured - nominal; }
-};
-
-// A hole still to be drilled: nominal position and unit surface normal.
-struct NominalHole {
-    std::string id;
-    Vec3 position = Vec3::Zero();
-    Vec3 normal = Vec3::UnitZ();
-    int row = -1;
-    double station = 0.0;
-};
-
-// A method fitted to a set of datum holes: the correction at any nominal hole.
-class Compensator {
-public:
-    // Throws when the datum holes do not support the method: none at all; a 3-D fit with fewer
-    // than three or with collinear datum holes; rows missing for the seed's method. (One datum
-    // hole is enough for the seed's method here: a leave-one-out prediction from two.)
-    Compensator(Method method, std::vector<Datum> datums);
-
-    Method method() const { return method_; }
-    // The correction dP at a hole; `note` (if given) says when the seed's method extrapolates.
-    Vec3 correction(const NominalHole& hole, std::string* note = nullptr) const;
-    // correction() of many holes at once (faster for the spline); notes as correction() gives them.
-    std::vector<Vec3> corrections(const std::vector<NominalHole>& holes, std::vector<std::string>* notes = nullptr) const;
-    // The fitted transform (identity for the seed's method); it also turns the normals.
-    const SimilarityTransform& fit() const { return fit_; }
-    bool usesFit() const { return method_ != Method::Seed; }
-
-private:
-    Vec3 seedCorrection(const NominalHole& hole, std::string* note) const;
-
-    Method method_;
-    std::vector<Datum> datums_;
-    SimilarityTransform fit_;
-    std::vector<Vec3> residuals_;  // measured - fit(nominal) per datum
-    std::map<int, std::vector<int>> rowDatums_;  // per row: its datum holes by station
-    struct Fields;
-    std::shared_ptr<const Fields> fields_;
-};
-
-struct LeaveOneOut {
-    Method method = Method::Seed;
-    bool available = false;
-    std::string reason;          // why not available
-    double rms = 0.0, max = 0.0;  // over the datum holes, mm
-    std::vector<double> errors;  // per datum hole: |predicted - measured deviation|
-};
 
 struct HoleCorrection {
     std::string id;
@@ -93,6 +33,8 @@ struct HoleCorrection {
     Vec3 compensated = Vec3::Zero();
     Vec3 normal = Vec3::UnitZ();  // the nominal normal turned by the fit
     bool exceedsTolerance = false;
+    double neighbourDeparture = 0.0;  // from the linear trend of its neighbours' corrections, mm
+    bool againstNeighbours = false;   // neighbourDeparture beyond the neighbour tolerance
     std::string note;
 };
 
@@ -100,43 +42,45 @@ struct DatumResidual {
     std::string id;
     Vec3 deviation = Vec3::Zero();  // measured - nominal
     Vec3 residual = Vec3::Zero();   // measured - fit(nominal): what the fit leaves
+    DatumVerdict verdict;           // used or left out, its miss, why
 };
 
 struct CompensationInput {
     std::vector<Datum> datums;
     std::vector<NominalHole> holes;
-    double tolerance = 0.5;  // a correction longer than this is flagged, mm
-    RowOptions rows;         // used when rows are not given
+    double tolerance = 0.5;           // a correction longer than this is flagged, mm
+    double neighbourTolerance = 0.05;  // a correction departing more from its neighbours' is flagged, mm
+    RowOptions rows;                  // used when rows are not given
+    DatumCheckOptions check;
+    std::set<std::string> keep;  // datum holes put back by the user: never left out
+    std::set<std::string> drop;  // datum holes left out by the user
 };
 
 struct CompensationResult {
     Method method = Method::Seed;
     std::optional<Method> proposed;  // none when no method's leave-one-out error can be computed
     SimilarityTransform fit;
-    std::vector<LeaveOneOut> leaveOneOut;  // in allMethods() order
-    std::vector<DatumResidual> datums;
+    std::vector<LeaveOneOut> leaveOneOut;  // in allMethods() order, over the datum holes used
+    DatumCheck check;                      // its `used` are the datum holes the fit and fields use
+    std::vector<DatumResidual> datums;     // every datum hole given, used or not
     std::vector<HoleCorrection> holes;
-    int flagged = 0;
+    std::vector<Flag> flags;  // datum flags first (in the datums' order), then the holes' in theirs
+    int flaggedHoles = 0;     // drilled holes with at least one flag
 };
 
 // Finds rows (HoleRows.h) over the datum and nominal holes together when any of them has
 // row -1, and gives every point its row and station.
 void assignRows(std::vector<Datum>& datums, std::vector<NominalHole>& holes, const RowOptions& options = {});
 
-// Each method's leave-one-out error over the datum holes (rows assigned).
-std::vector<LeaveOneOut> leaveOneOut(const std::vector<Datum>& datums);
-
-// The available method with the lowest leave-one-out RMS error; a method within 1e-9 mm or
-// 0.5 % of the best and earlier in allMethods() wins the tie.
-std::optional<Method> proposedMethod(const std::vector<LeaveOneOut>& figures);
-
-// Corrects each hole with a fitted method; a correction longer than `tolerance` is flagged.
+// Corrects each hole with a fitted method; a correction longer than `tolerance` is flagged, and
+// one departing from its neighbours' trend by more than `neighbourTolerance`.
 std::vector<HoleCorrection> correctHoles(const Compensator& compensator, const std::vector<NominalHole>& holes,
-                                         double tolerance);
+                                         double tolerance, double neighbourTolerance = INFINITY);
 
-// Checks the input (at least two datum holes, finite values, unique ids), assigns rows,
-// computes the leave-one-out figures and compensates every hole with `method` (the proposed
-// one when nullopt).
+// Checks the input (at least two datum holes, finite values, unique ids), assigns rows, leaves
+// out the datum readings out of line (DatumCheck.h), computes the leave-one-out figures over the
+// datum holes used, compensates every hole with `method` (the proposed one when nullopt) and
+// flags what to look at (HoleFlags.h).
 CompensationResult compensate(CompensationInput input, std::optional<Method> method = std::nullopt);
 
 }  // namespace aeronc::compensation
