@@ -74,8 +74,11 @@ def run():
     pump()
     panel = SelectToolsPanel.current
     check("Select tools panel open", Gui.Control.activeDialog() and panel is not None)
-    check("materials and machines from the knowledge base", panel.material.count() == 4 and panel.machine.count() == 3,
-          (panel.material.count(), panel.machine.count()))
+    kb = knowledge_base.open_kb(kb_path)
+    shown = ([panel.material.itemText(i) for i in range(panel.material.count())],
+             [panel.machine.itemText(i) for i in range(panel.machine.count())])
+    check("materials and machines from the knowledge base", len(shown[0]) == 4 and
+          "AC-GANTRY" in shown[1] and shown == (list(kb.workpiece_materials()), list(kb.machine_names())), shown)
     panel.material.setCurrentIndex(panel.material.findText("7050-T7451"))
     panel.run_button.click()
     pump()
