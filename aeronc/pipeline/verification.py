@@ -111,23 +111,42 @@ def _arc_points(start, end, centre, rotation, step):
     return pts
 
 
+def machine_tips(ops, machine_json):
+    """[(tool tips, last tool axis)] per operation: the forward kinematics of every move, in the
+    Job's frame (the machine read once per operation)."""
+    from aeronc import _core
+    out = []
+    for op in ops:
+        joints = [[m[1], m[2], m[3], m[4], m[5]] for m in op["moves"]]
+        with from_core(VerificationError, "forward kinematics of " + op["label"]):
+            tips, axes = _core.forward_kinematics_many(machine_json, joints) if joints else ([], [])
+        out.append((tips, axes[-1] if axes else None))
+    return out
+
+
+def placed(ops, tips, placement):
+    """ops with their moves at the tool tips of machine_tips, carried by a FreeCAD Placement;
+    each op's "axis" the last move's tool axis so carried."""
+    import FreeCAD
+    m = placement.toMatrix()
+    a11, a12, a13, a14 = m.A11, m.A12, m.A13, m.A14
+    a21, a22, a23, a24 = m.A21, m.A22, m.A23, m.A24
+    a31, a32, a33, a34 = m.A31, m.A32, m.A33, m.A34
+    out = []
+    for op, (points, axis) in zip(ops, tips):
+        moves = [[mv[0], a11 * x + a12 * y + a13 * z + a14, a21 * x + a22 * y + a23 * z + a24,
+                  a31 * x + a32 * y + a33 * z + a34] for mv, (x, y, z) in zip(op["moves"], points)]
+        if axis is not None:
+            d = placement.Rotation.multVec(FreeCAD.Vector(*axis))
+            axis = [round(d.x, 9), round(d.y, 9), round(d.z, 9)]
+        out.append(dict(op, moves=moves, axis=axis or [0.0, 0.0, 1.0]))
+    return out
+
+
 def to_part_frame(ops, machine_json, job_to_part):
     """Machine-coordinate moves -> tool tips in the part's frame, and the tool axis there.
     job_to_part: a FreeCAD Placement from the Job's frame to the part's."""
-    from aeronc import _core
-    import FreeCAD
-    out = []
-    for op in ops:
-        moves, axis = [], None
-        for m in op["moves"]:
-            with from_core(VerificationError, "forward kinematics of " + op["label"]):
-                tip, a = _core.forward_kinematics(machine_json, [m[1], m[2], m[3]], [m[4], m[5]], None, 0.0)
-            p = job_to_part.multVec(FreeCAD.Vector(*tip))
-            d = job_to_part.Rotation.multVec(FreeCAD.Vector(*a))
-            axis = (round(d.x, 9), round(d.y, 9), round(d.z, 9))
-            moves.append([m[0], p.x, p.y, p.z])
-        out.append(dict(op, moves=moves, axis=list(axis) if axis else [0.0, 0.0, 1.0]))
-    return out
+    return placed(ops, machine_tips(ops, machine_json), job_to_part)
 
 
 def plunges_marked(moves):
@@ -165,9 +184,9 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
     for p in programs:
         read = reread(p["path"], tools)
         to_part = setup_job.frame_placement(p["frame"]).inverse()
-        placed = json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"])))
-        in_part = to_part_frame(read, placed, to_part)
-        in_job = to_part_frame(read, placed, FreeCAD.Placement())
+        tips = machine_tips(read, json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"]))))
+        in_part = placed(read, tips, to_part)
+        in_job = placed(read, tips, FreeCAD.Placement())
         for op, op_job in zip(in_part, in_job):
             job, fc_op = ops_by_label.get(op["label"], (None, None))
             if fc_op is None:

@@ -215,6 +215,36 @@ void bindKinematics(py::module_& m) {
         py::arg("tool_length") = 0.0, "Machine axes -> (tool tip, tool axis) in the workpiece frame.");
 
     m.def(
+        "forward_kinematics_many",
+        [](const std::string& machineJson, const std::vector<std::array<double, 5>>& joints,
+           const std::optional<std::array<double, 3>>& partZero, double toolLength) {
+            return guardedPost([&] {
+                MachineSetup setup;
+                if (partZero) setup.partZero = Vec3((*partZero)[0], (*partZero)[1], (*partZero)[2]);
+                setup.toolLength = toolLength;
+                // The machine read once for a whole program: a call per move spent most of the
+                // verification's time reading it again.
+                const Kinematics kin(machineOf(machineJson, "machine"), setup);
+                std::vector<std::array<double, 3>> tips(joints.size()), axes(joints.size());
+                {
+                    py::gil_scoped_release nogil;
+                    for (std::size_t i = 0; i < joints.size(); ++i) {
+                        Joints j;
+                        j.linear = Vec3(joints[i][0], joints[i][1], joints[i][2]);
+                        j.rotary = {joints[i][3], joints[i][4]};
+                        const ToolPose p = kin.forward(j);
+                        tips[i] = {p.tip.x(), p.tip.y(), p.tip.z()};
+                        axes[i] = {p.axis.x(), p.axis.y(), p.axis.z()};
+                    }
+                }
+                return py::make_tuple(tips, axes);
+            });
+        },
+        py::arg("machine_json"), py::arg("joints"), py::arg("part_zero") = py::none(), py::arg("tool_length") = 0.0,
+        "[[x, y, z, a, c], ...] machine axes -> ([tool tip], [tool axis]) in the workpiece frame, the machine "
+        "read once.");
+
+    m.def(
         "inverse_kinematics",
         [](const std::string& machineJson, const std::array<double, 3>& axis, const std::array<double, 2>& keep) {
             return guardedPost([&] {

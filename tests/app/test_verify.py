@@ -156,3 +156,28 @@ class PartBoxTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class MachineTipsTest(unittest.TestCase):
+    """The tool tips of a re-read program: one forward-kinematics call per operation gives what a
+    call per move gives, carried into the part's frame by the setup's placement."""
+
+    def test_batch_kinematics_matches_a_call_per_move_and_the_placement(self):
+        from aeronc.pipeline import verification
+        from aeronc.post import machines
+        machine_json, _ = machines.load("AC-5AX")
+        placed_json = json.dumps(dict(json.loads(machine_json), partZero=[12.0, -30.0, 85.0]))
+        moves = [[0, 10.0, 20.0, 50.0, 0.0, 0.0], [1, -35.5, 60.25, 12.0, 30.0, 45.0],
+                 [1, 100.0, -80.0, 5.0, -20.0, 190.0], [0, 0.0, 0.0, 120.0, 90.0, -90.0]]
+        ops = [{"label": "Pocket E1 r U0", "moves": moves}]
+        turn = FreeCAD.Placement(FreeCAD.Vector(5, -7, 11), FreeCAD.Rotation(FreeCAD.Vector(1, 1, 0), 35))
+        (got,) = verification.to_part_frame(ops, placed_json, turn)
+        self.assertEqual(len(got["moves"]), len(moves))
+        for m, g in zip(moves, got["moves"]):
+            tip, axis = _core.forward_kinematics(placed_json, m[1:4], m[4:6], None, 0.0)
+            want = turn.multVec(FreeCAD.Vector(*tip))
+            self.assertEqual(g[0], m[0])
+            self.assertLess((FreeCAD.Vector(*g[1:4]) - want).Length, 1e-9, (m, g, want))
+        last = turn.Rotation.multVec(FreeCAD.Vector(*axis))
+        self.assertLess((FreeCAD.Vector(*got["axis"]) - last).Length, 1e-8)
+        self.assertGreater(abs(got["axis"][2] - 1.0), 0.1)  # a tilted axis: the rotaries count
