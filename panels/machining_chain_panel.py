@@ -59,6 +59,7 @@ class MachiningChainPanel:
         self.chain = None
         self.notes = []
         self.refused = {}  # unit JSON -> the toolpath core's reason or None: computed once per unit
+        self.refused_count = 0  # enabled units the posts would refuse, as last shown
         self.form = self._build_form()
         MachiningChainPanel.current = self
         self._restore_dock = lambda: None
@@ -252,6 +253,7 @@ class MachiningChainPanel:
         if not chain.get("unmachined"):
             self.unmachined.addItem("Every element has a unit.")
         self.not_ready.clear()
+        self.refused_count = len(not_ready)
         for uid, why in sorted(not_ready.items()):
             item = QtGui.QListWidgetItem("\u2718 Unit {} ({}): {}".format(uid, mc.operation_label(units[uid]), why)
                                         if uid in units else "\u2718 Unit {}: {}".format(uid, why))
@@ -385,9 +387,9 @@ class MachiningChainPanel:
 
     def _title_findings(self):
         """Each tab's title with its count, so the numbers show even on the tab behind."""
-        left = len(self._unmachined_elements(self.chain)) if getattr(self, "chain", None) else 0
-        refused = sum(1 for i in range(self.not_ready.count()) if self.not_ready.item(i).text().startswith("\u2718"))
-        broken = sum(1 for c in (getattr(self, "chain", None) or {}).get("checks", []) if not c.get("ok", True))
+        left = len(self._unmachined_elements(self.chain))
+        refused = self.refused_count
+        broken = sum(1 for c in (self.chain or {}).get("checks", []) if not c.get("ok", True))
         self.findings.setTabText(0, "Not machined ({})".format(left))
         self.findings.setTabText(1, "Not ready ({})".format(refused))
         self.findings.setTabText(2, "Construction rules" + (" ({} broken)".format(broken) if broken else ""))

@@ -125,8 +125,9 @@ def machine_tips(ops, machine_json):
 
 
 def placed(ops, tips, placement):
-    """ops with their moves at the tool tips of machine_tips, carried by a FreeCAD Placement;
-    each op's "axis" the last move's tool axis so carried."""
+    """ops with their moves at the tool tips of machine_tips, carried by a FreeCAD Placement
+    (the Job's frame to the part's, for one); each op's "axis" the last move's tool axis so
+    carried."""
     import FreeCAD
     m = placement.toMatrix()
     a11, a12, a13, a14 = m.A11, m.A12, m.A13, m.A14
@@ -141,12 +142,6 @@ def placed(ops, tips, placement):
             axis = [round(d.x, 9), round(d.y, 9), round(d.z, 9)]
         out.append(dict(op, moves=moves, axis=axis or [0.0, 0.0, 1.0]))
     return out
-
-
-def to_part_frame(ops, machine_json, job_to_part):
-    """Machine-coordinate moves -> tool tips in the part's frame, and the tool axis there.
-    job_to_part: a FreeCAD Placement from the Job's frame to the part's."""
-    return placed(ops, machine_tips(ops, machine_json), job_to_part)
 
 
 def plunges_marked(moves):
@@ -363,7 +358,7 @@ def _element_faces(e):
 
 
 def simulate(part_shape, ops, blank, finished, elements, cell_size=0.5, options=None):
-    """Run ops (part frame, see to_part_frame; each with "cutter", "radialAllowance",
+    """Run ops (part frame, see placed; each with "cutter", "radialAllowance",
     "axialAllowance") on the blank; returns the core's report dict."""
     from aeronc import _core
     program = _program(ops, blank, finished, elements, cell_size)

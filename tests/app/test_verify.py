@@ -171,7 +171,7 @@ class MachineTipsTest(unittest.TestCase):
                  [1, 100.0, -80.0, 5.0, -20.0, 190.0], [0, 0.0, 0.0, 120.0, 90.0, -90.0]]
         ops = [{"label": "Pocket E1 r U0", "moves": moves}]
         turn = FreeCAD.Placement(FreeCAD.Vector(5, -7, 11), FreeCAD.Rotation(FreeCAD.Vector(1, 1, 0), 35))
-        (got,) = verification.to_part_frame(ops, placed_json, turn)
+        (got,) = verification.placed(ops, verification.machine_tips(ops, placed_json), turn)
         self.assertEqual(len(got["moves"]), len(moves))
         for m, g in zip(moves, got["moves"]):
             tip, axis = _core.forward_kinematics(placed_json, m[1:4], m[4:6], None, 0.0)
