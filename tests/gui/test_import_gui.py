@@ -130,7 +130,7 @@ def run():
     check("Select tools makes no Job (the machining chain does)", not pathcompat.jobs_of_part(doc, part),
           [j.Label for j in pathcompat.jobs_of_part(doc, part)])
     from aeronc.pipeline import chain_building
-    chain = chain_building.build(group, "integral_panel", "7050-T7451", panel.machine.currentText())
+    chain = chain_building.build(group, "integral_panel", group.Material, group.Machine)
     jobs = list(chain.Jobs)
     check("the machining chain's Jobs", jobs, chain.Messages)
     if not jobs:
