@@ -261,9 +261,8 @@ def _sync_operations(job, units, tcs):
         if op is not None and type(op.Proxy) is not cls:
             doc.removeObject(op.Name)  # the unit changed its operation type: a new operation
             op = None
-        if op is None:
+        if op is None:  # into the Job's Operations with the others below: adding one by one is quadratic
             op = operations.create(doc, unit, operation_label(unit))
-            pathcompat.add_operation(job, op)
         full = _unit_defaults(unit, job)
         for prop, kept, chains in op.Proxy.assign(op, full, tcs[setup_job.tag_of(unit)]):
             messages.append("{}: {} kept at {} (edited by hand; the chain has {})".format(op.Label, prop, kept, chains))
