@@ -41,7 +41,7 @@ constexpr std::size_t kCribTools = 30;
 constexpr const char* kWithoutVersion6 = R"sql(
         DELETE FROM tool WHERE neck_diameter IS NOT NULL OR id = 'EM-BALL16';
         DELETE FROM cutting_condition WHERE d_min IN (0, 1);
-        DELETE FROM threshold WHERE name LIKE 'long_reach_%';
+        DELETE FROM threshold WHERE name LIKE 'long_reach_%' OR name = 'allowance_max_ratio';
         DROP TABLE edge_tool;
         ALTER TABLE tool DROP COLUMN neck_diameter;
 )sql";

@@ -263,7 +263,8 @@ INSERT INTO threshold (name, value, description) VALUES
   ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area'),
   ('long_reach_ratio',     4.00, 'a necked tool reaching more than this many diameters gets reduced cutting data'),
   ('long_reach_ap_factor', 0.50, 'a_p of a long-reach tool as a fraction of the handbook value'),
-  ('long_reach_fz_factor', 0.80, 'f_z of a long-reach tool as a fraction of the handbook value');
+  ('long_reach_fz_factor', 0.80, 'f_z of a long-reach tool as a fraction of the handbook value'),
+  ('allowance_max_ratio',  0.25, 'a unit leaves at most this times its tool diameter as radial allowance');
 
 -- Process planning (docs/machining-chain.md) --------------------------------------------
 -- The same rows are seeded by the migration from schema version 2 (migrations/v2_to_v3.sql).

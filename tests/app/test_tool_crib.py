@@ -94,5 +94,25 @@ class CribTest(unittest.TestCase):
             self.assertNotEqual(set(json.load(f)["tools"]), {"EM-F12", "EM-F6"})
 
 
+class LongReachTest(unittest.TestCase):
+    """The optimiser's chip load for a long-reach tool is the reduced f_z (docs/tool-crib.md)."""
+
+    def test_only_a_necked_tool_beyond_the_ratio_is_reduced(self):
+        from aeronc.pipeline import cutting_optimisation
+        tmp = tempfile.mkdtemp(prefix="aeronc_long_reach_")
+        try:
+            kb = knowledge_base.open_kb(os.path.join(tmp, "kb.sqlite"))
+            self.assertEqual(cutting_optimisation.long_reach_fz_factor(kb, "EM-F6x30"), 0.8)
+            self.assertEqual(cutting_optimisation.long_reach_fz_factor(kb, "EM-F6"), 1.0)  # no neck
+            self.assertEqual(cutting_optimisation.long_reach_fz_factor(kb, "EM-F1.5"), 0.8)  # 5.3 x D
+            # The threshold decides: at 6 diameters the 5 x D tool is no longer reduced.
+            t = kb.table("threshold")
+            row = t["rowIds"][[r[0] for r in t["rows"]].index("long_reach_ratio")]
+            kb.edit_table("threshold", edits=[(row, "value", "6")])
+            self.assertEqual(cutting_optimisation.long_reach_fz_factor(kb, "EM-F6x30"), 1.0)
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -183,6 +183,7 @@ chain::ChainOptions chainOptions(const KnowledgeBase& kb, const std::string& mat
     o.machine = machineOf(kb, machine);
     o.breakthrough = thresholdOr(kb, "breakthrough_mm", o.breakthrough);
     o.restMinArea = thresholdOr(kb, "rest_min_area_mm2", o.restMinArea);
+    o.allowanceRatio = thresholdOr(kb, "allowance_max_ratio", o.allowanceRatio);
     return o;
 }
 

@@ -135,3 +135,34 @@ TEST(ToolCrib, OneMillimetreDeepPocketIsFinishedWithTheOneMillimetreEndMill) {
     EXPECT_EQ(pockets, 2);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
 }
+
+// Grooves 2 mm wide and 1 mm deep (engraving): the roughing step's 1 mm allowance leaves no room
+// for any cutter (0.5 + 2 x 1 > 2); capped at a quarter of the tool's diameter, the 1 mm end
+// mill roughs them with 0.25 mm and every step fits the groove.
+TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
+    testparts::PanelSpec s = pocketsOnly(9, 8, 0.5);
+    s.pitch = 3.5;  // grooves 3.5 - 1.5 = 2 mm wide
+    s.ribThickness = 1.5;
+    const auto tree = recogniseUp(s);
+    const test::KbDir dir("crib_grooves");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.minWidth, 2.0, 1e-2);  // measured on the faceted outline
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        std::set<StepCode> steps;
+        for (const MachiningUnit& u : c.units) {
+            if (u.element != e.id) continue;
+            steps.insert(u.step);
+            EXPECT_LE(u.radialAllowance, 0.25 * u.cutter.diameter + 1e-9) << toString(u.step);
+            EXPECT_LE(u.cutter.diameter + 2 * u.radialAllowance, e.minWidth + 1e-6) << toString(u.step) << " " << u.tool;
+        }
+        EXPECT_TRUE(steps.count(StepCode::Rough));
+        EXPECT_TRUE(steps.count(StepCode::FinishWall));
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}

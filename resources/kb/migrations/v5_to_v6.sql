@@ -133,4 +133,5 @@ INSERT OR IGNORE INTO cutting_condition (workpiece_material, tool_material, oper
 INSERT OR IGNORE INTO threshold (name, value, description) VALUES
   ('long_reach_ratio',     4.00, 'a necked tool reaching more than this many diameters gets reduced cutting data'),
   ('long_reach_ap_factor', 0.50, 'a_p of a long-reach tool as a fraction of the handbook value'),
-  ('long_reach_fz_factor', 0.80, 'f_z of a long-reach tool as a fraction of the handbook value');
+  ('long_reach_fz_factor', 0.80, 'f_z of a long-reach tool as a fraction of the handbook value'),
+  ('allowance_max_ratio',  0.25, 'a unit leaves at most this times its tool diameter as radial allowance');
