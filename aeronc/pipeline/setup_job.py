@@ -57,7 +57,10 @@ def part_box(shape, deflection=1e-3, fine=1e-6):
     hi = [max(b[1][k] for b in boxes) for k in range(3)]
     for (edge, pts), (elo, ehi) in zip(edges, boxes):
         curved = len(pts) > 2  # a straight edge's ends are exact
-        if curved and any(elo[k] < lo[k] + deflection or ehi[k] > hi[k] - deflection for k in range(3)):
+        # Only an axis the edge curves in can gain from the fine walk: an arc in the plane of a
+        # side (a pocket's corner on the top face) keeps that coordinate exactly.
+        if curved and any(elo[k] != ehi[k] and (elo[k] < lo[k] + deflection or ehi[k] > hi[k] - deflection)
+                          for k in range(3)):
             flo, fhi = extent(edge.discretize(Deflection=fine))
             lo = [min(a, b) for a, b in zip(lo, flo)]
             hi = [max(a, b) for a, b in zip(hi, fhi)]
