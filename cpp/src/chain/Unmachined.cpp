@@ -42,11 +42,12 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
         out.push_back({e.id, std::nullopt, why, {}});
     }
     // Attached features no unit cuts.
-    if (e.hole && e.hole->countersinkDiameter > 0)
-        out.push_back(
-            {e.id, std::nullopt,
-             "its " + fmt(e.hole->countersinkAngle) + " degree countersink (diameter " +
-                 fmt(e.hole->countersinkDiameter) + " mm) needs a countersink tool; the chain has none", {}});
+    if (e.hole && e.hole->countersinkDiameter > 0 && !st.countersunk)
+        out.push_back({e.id, std::nullopt,
+                       "its " + fmt(e.hole->countersinkAngle) + " degree countersink (diameter " +
+                           fmt(e.hole->countersinkDiameter) + " mm) is not cut: " +
+                           (st.countersinkWhy.empty() ? std::string("no chamfer mill was offered") : st.countersinkWhy),
+                       {}});
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
     if (!e.chamferFaces.empty() && !countersunk)
