@@ -29,6 +29,7 @@ class Chamfer(Profile):
                          for k in ("diameter", "tipDiameter", "includedAngle"))):
             raise ValueError("{}: the tool controller's bit is not the chamfer mill {} the pass was planned for".format(
                 obj.Label, unit.get("tool", "")))
+        data["operation"] = "profile"  # the generator's profile, for the axis's path
         data["cutter"] = {"diameter": 2 * float(unit["edgeOffset"]), "cornerRadius": 0.0}
         data["stepDown"] = max(float(unit["top"]) - float(unit["bottom"]), 0.01)  # one level, at the tip's height
         data["stepOver"] = 2 * float(unit["edgeOffset"])

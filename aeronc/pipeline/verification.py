@@ -342,8 +342,11 @@ def finished_faces(chain, result):
         faces = finished.setdefault("E{}".format(e["id"]), set())
         if u.get("step") == "w":
             faces.update(e.get("floorFaces", []))
-        if u.get("step") == "e":  # a chamfer mill's pass finishes the element's chamfers (a countersink)
+        if u.get("step") == "e":  # a chamfer mill's pass finishes the element's chamfers and countersink
             faces.update(e.get("chamferFaces", []))
+            for a in e.get("attached", []):
+                if a.get("kind") == "countersink":
+                    faces.update(a.get("faces", []))
         if u.get("step") in ("fs", "ff"):
             faces.update(e.get("contourFaces", []))
             for island in e.get("islandFaces", []):
