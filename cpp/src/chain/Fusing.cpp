@@ -343,6 +343,26 @@ MachiningUnit& Fuser::addEdgeUnit(const DomainElement& e, const toolselect::Edge
 // cone on the countersink (toolselect/EdgeTools.h).
 void Fuser::makeEdgeUnits(const DomainElement& e) {
     ElementState& st = state_[e.id];
+    // Chamfers along a pocket's edges are not cut yet (the pass must follow only the chamfered
+    // stretches of a loop): listed with what they are and the mill that would cut them.
+    for (const recognition::AttachedFeature& a : e.attached) {
+        if (a.kind != "chamfer" || a.faces.empty()) continue;
+        if (!(a.angle > 0 && a.size > 0)) {
+            st.chamferWhy = " (not planes facing this setup's tool at one angle) are not cut: a chamfer mill along "
+                            "the axis cannot follow them";
+            continue;
+        }
+        toolselect::EdgeNeed need;
+        need.includedAngle = a.angle;
+        need.width = a.size;
+        need.height = a.size / std::tan(a.angle / 2 * M_PI / 180);
+        const toolselect::EdgeToolChoice c = toolselect::chamferTool(opt_.edgeTools, need);
+        st.chamferWhy = " (" + fmt(0.5 * (180 - a.angle)) + " degrees to the top, up to " + fmt(a.size) +
+                        " mm wide) along the element's edges are not cut: the edge step cuts countersinks only; " +
+                        (c.tool ? "chamfer mill " + c.tool->id + " (" + fmt(c.tool->includedAngle) + " degrees, D" +
+                                      fmt(c.tool->diameter) + ") would fit them"
+                                : c.why);
+    }
     if (!e.hole || !(e.hole->countersinkDiameter > 0)) return;
     const recognition::HoleInfo& h = *e.hole;
     if (!st.holeMachined) {
@@ -372,10 +392,11 @@ void Fuser::makeEdgeUnits(const DomainElement& e) {
         st.countersinkWhy = "chamfer mill " + c.tool->id + " has no cutting data in " + opt_.material;
         return;
     }
+    // The hole's top (its location) is the countersink's lower line; the cone rises from it.
     const recognition::SetupFrame& frame = tools_.frameOf(e.setup);
-    const double top = frame.height(h.location);
+    const double lower = frame.height(h.location);
     const toolselect::ChamferPass pass = toolselect::chamferPass(*c.tool);
-    MachiningUnit& u = addEdgeUnit(e, *c.tool, top, top - need.height - pass.tipBelow, pass.offset);
+    MachiningUnit& u = addEdgeUnit(e, *c.tool, lower + need.height, lower - pass.tipBelow, pass.offset);
     // The drive loop is the hole's edge under the countersink, counter-clockwise.
     const recognition::P2 centre = frame.project(h.location);
     const int n = std::max(32, static_cast<int>(std::ceil(M_PI * h.diameter / 0.5)));

@@ -51,7 +51,9 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
     if (!e.chamferFaces.empty() && !countersunk)
-        listFaces(e, std::to_string(e.chamferFaces.size()) + " chamfer face(s) need a chamfer tool; the chain has none",
+        listFaces(e,
+                  std::to_string(e.chamferFaces.size()) + " chamfer face(s)" +
+                      (st.chamferWhy.empty() ? std::string(" need a chamfer tool; the chain has none") : st.chamferWhy),
                   e.chamferFaces, out);
     // Walls leaning away from the axis: a flat end mill finishing them square to the floor leaves
     // depth x tan(lean) at their top. A drafted wall keeps within the tolerance; a bevel does not.

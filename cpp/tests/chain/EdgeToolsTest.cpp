@@ -6,6 +6,7 @@
 
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/recognition/DomainTreeJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 #include <aeronc/toolselect/EdgeTools.h>
@@ -75,7 +76,8 @@ TEST(EdgeTools, ShippedCribHoldsTheChamferMills) {
 }
 
 // The panel's countersunk bolt holes are drilled, then countersunk with the 90 degree D10 mill:
-// its tip 2.7 + 0.2 mm below the top, its axis 0.7 mm inside the 6.6 mm hole's edge, after the drill.
+// its tip 0.2 mm below the countersink's lower line (2.7 mm below the top), its axis 0.7 mm inside
+// the 6.6 mm hole's edge, after the drill.
 TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
     testparts::PanelSpec s;
     s.pocketsX = 2, s.pocketsY = 1, s.pitch = 40;
@@ -113,9 +115,11 @@ TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
         EXPECT_EQ(edge->tool, "CM-90-D10");
         EXPECT_EQ(edge->cutter.type, "chamfer");
         EXPECT_DOUBLE_EQ(edge->cutter.includedAngle, 90);
-        const double top = e.hole->location[2];
-        EXPECT_NEAR(edge->top, top, 1e-6);
-        EXPECT_NEAR(edge->bottom, top - 2.7 - 0.2, 1e-6);
+        // The countersink rises 2.7 mm from the hole's top (its location) to the panel's top.
+        const double lower = e.hole->location[2];
+        EXPECT_NEAR(lower + 2.7, s.thickness, 1e-6);
+        EXPECT_NEAR(edge->top, s.thickness, 1e-6);
+        EXPECT_NEAR(edge->bottom, lower - 0.2, 1e-6);
         EXPECT_NEAR(edge->edgeOffset, 0.7, 1e-12);
         // The drive loop is the hole's edge.
         for (const Point2& p : edge->contour)
@@ -130,4 +134,74 @@ TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
     ASSERT_TRUE(t);
     EXPECT_EQ(t->type, "chamfer");
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
+}
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <BRep_Tool.hxx>
+#include <gp_Pnt.hxx>
+
+namespace {
+
+// A 100 x 60 x 20 block with a 60 x 30 x 10 pocket whose mouth carries a 45 degree x 2 mm
+// chamfer all round (four planes: the pocket's corners are sharp).
+TopoDS_Shape chamferedPocket() {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
+    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
+    TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
+    BRepFilletAPI_MakeChamfer ch(part);
+    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        const gp_Pnt p = BRep_Tool::Pnt(a), q = BRep_Tool::Pnt(b);
+        auto onMouth = [](const gp_Pnt& r) {
+            return std::abs(r.Z() - 20) < 1e-6 && r.X() > 19 && r.X() < 81 && r.Y() > 14 && r.Y() < 46;
+        };
+        if (onMouth(p) && onMouth(q)) ch.Add(2, edge);
+    }
+    ch.Build();
+    return ch.Shape();
+}
+
+}  // namespace
+
+// Recognition measures the chamfer (90 degree mill, 2 mm wide); the chain, which cuts
+// countersinks only, lists its faces with what they are and the crib's mill that would cut them.
+TEST(EdgeTools, PocketMouthChamferIsMeasuredAndListedWithTheMillThatFits) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree = recognition::recognise(validatedSolid(chamferedPocket(), "chamfered pocket"), o);
+    const recognition::AttachedFeature* chamfer = nullptr;
+    const recognition::DomainElement* pocket = nullptr;
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    ASSERT_TRUE(chamfer);
+    EXPECT_EQ(chamfer->faces.size(), 4u);
+    EXPECT_NEAR(chamfer->angle, 90, 1e-6);
+    EXPECT_NEAR(chamfer->size, 2, 1e-6);
+    // The angle and width survive the tree's JSON.
+    const auto back = recognition::fromJson(recognition::toJson(tree));
+    bool kept = false;
+    for (const auto& e : back.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") kept = std::abs(a.angle - 90) < 1e-9 && std::abs(a.size - 2) < 1e-9;
+    EXPECT_TRUE(kept);
+
+    const test::KbDir dir("edge_pocket");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    const Unmachined* listed = nullptr;
+    for (const Unmachined& m : c.unmachined)
+        if (m.element == pocket->id && m.reason.find("chamfer face") != std::string::npos) listed = &m;
+    ASSERT_TRUE(listed);
+    EXPECT_EQ(listed->faces.size(), 4u);
+    EXPECT_NE(listed->reason.find("45 degrees to the top, up to 2 mm wide"), std::string::npos) << listed->reason;
+    EXPECT_NE(listed->reason.find("CM-90-D6"), std::string::npos) << listed->reason;
 }
