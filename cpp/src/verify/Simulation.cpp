@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 
 namespace aeronc::verify {
 
@@ -252,9 +253,12 @@ LeftoverMap leftoverOf(const PartDexels& part, const StockDexels& stock) {
 
 }  // namespace
 
-SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
-                          const SimulationOptions& options, const std::vector<PriorStock>& priors,
-                          StockDexels* finalStock) {
+namespace {
+
+// The program run on the blank: the report without its coverage and leftover map (finishReport's).
+SimulationReport runProgram(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                            const SimulationOptions& options, const std::vector<PriorStock>& priors,
+                            StockDexels& stock) {
     if (!(options.gougeTolerance >= 0) || !(options.collisionTolerance >= 0))
         throw inputError("the gouge and collision tolerances must not be negative");
     SimulationReport r;
@@ -264,7 +268,7 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     r.inconsistentColumns = part.inconsistentColumns;
 
     const auto blank = program.hasBlank ? program.blank : bounds(mesh);
-    StockDexels stock = StockDexels::box(part.grid, blank);
+    stock = StockDexels::box(part.grid, blank);
     r.blankVolume = stock.volume();
 
     auto t = Clock::now();
@@ -278,11 +282,27 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     for (auto& e : r.gouges.listed)
         if (e.wall) e.face = wallFaceNear(mesh, e.position);
     if (r.gouges.worst && r.gouges.worst->wall) r.gouges.worst->face = wallFaceNear(mesh, r.gouges.worst->position);
+    return r;
+}
 
-    t = Clock::now();
+// What the program left against the part: only reads the part, the mesh and the final stock, so
+// it may run beside the next setup's simulation.
+void finishReport(SimulationReport& r, const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                  const SimulationOptions& options, const StockDexels& stock) {
+    const auto t = Clock::now();
     r.coverage = measureCoverage(mesh, part, stock, program.finishedFaces, program.elements, options.coverage);
     if (options.leftoverMap) r.leftover = leftoverOf(part, stock);
     r.coverageSeconds = since(t);
+}
+
+}  // namespace
+
+SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                          const SimulationOptions& options, const std::vector<PriorStock>& priors,
+                          StockDexels* finalStock) {
+    StockDexels stock;
+    SimulationReport r = runProgram(part, mesh, program, options, priors, stock);
+    finishReport(r, part, mesh, program, options, stock);
     if (finalStock) *finalStock = std::move(stock);
     return r;
 }
@@ -350,19 +370,37 @@ std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const
                     throw inputError("setup " + s.name + ": its motion to the part is not a rotation");
             }
     }
-    std::vector<SimulationReport> reports;
-    std::vector<StockDexels> stocks;
-    stocks.reserve(setups.size());
-    for (std::size_t k = 0; k < setups.size(); ++k) {
+    // Setup k's coverage (which reads only its own part, mesh and final stock) runs on a second
+    // thread while setup k + 1 is simulated against the stocks the setups before it left.
+    const std::size_t n = setups.size();
+    std::vector<SimulationReport> reports(n);
+    std::vector<StockDexels> stocks(n);
+    std::vector<TriangleMesh> meshes(n);
+    std::vector<PartDexels> parts(n);
+    std::future<void> pending;
+    for (std::size_t k = 0; k < n; ++k) {
         const SetupProgram& s = setups[k];
         const Rigid toSetup = s.toPart.inverse();
-        TriangleMesh mesh = partMesh;
-        for (Point3& v : mesh.vertices) v = toSetup(v);
+        meshes[k] = partMesh;
+        for (Point3& v : meshes[k].vertices) v = toSetup(v);
         std::vector<PriorStock> priors;
         for (std::size_t j = 0; j < k; ++j) priors.push_back({&stocks[j], s.toPart.then(setups[j].toPart.inverse())});
-        stocks.emplace_back();
-        reports.push_back(rasteriseAndSimulate(mesh, s.program, options, priors, &stocks.back()));
+        const auto b = bounds(meshes[k]);
+        const auto box = s.program.hasBlank ? s.program.blank : b;
+        const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
+                                       std::max(b[4], box[4]), s.program.cellSize);
+        const auto t = Clock::now();
+        parts[k] = rasterise(meshes[k], grid);
+        const double seconds = since(t);
+        reports[k] = runProgram(parts[k], meshes[k], s.program, options, priors, stocks[k]);
+        reports[k].rasteriseSeconds = seconds;
+        if (pending.valid()) pending.get();
+        pending = std::async(std::launch::async, [&, k] {
+            finishReport(reports[k], parts[k], meshes[k], setups[k].program, options, stocks[k]);
+            parts[k] = PartDexels(), meshes[k] = TriangleMesh();  // no longer needed
+        });
     }
+    if (pending.valid()) pending.get();
     return reports;
 }
 
