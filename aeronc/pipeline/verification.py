@@ -48,8 +48,10 @@ def reread(program_path, tools, arc_step=0.5):
         with open(table, "w") as f:
             for number, diameter in sorted(tools.items()):
                 f.write("T{0} P{0} D{1:.4f} Z0.0\n".format(int(number), float(diameter)))
+        # rs274 keeps its tool table in $HOME/.tool.mmap: a HOME of its own, so that no other rs274
+        # (another program of this job, another job) reads or truncates this one's tools.
         run = subprocess.run([rs274_path(), "-t", table, "-g", program_path], capture_output=True, text=True,
-                             timeout=600)
+                             timeout=600, env=dict(os.environ, HOME=work))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     errors = [l for l in run.stderr.splitlines() if l.strip() and l.strip() != "executing"]
@@ -112,17 +114,18 @@ def _arc_points(start, end, centre, rotation, step):
 
 
 def _reread_all(paths, tools, cache=None, workers=2):
-    """[(key, reread(path))] in the order of paths, the rs274 processes two at a time; key: the
-    program's text and tools, under which cache (a dict, or None) keeps what was read."""
+    """[(key, reread(path))] in the order of paths, the rs274 processes two at a time (each with
+    its own tool table file, see reread); key: the program's text and tools, under which cache (a
+    dict, or None) keeps what was read."""
     import hashlib
     from concurrent.futures import ThreadPoolExecutor
     keys = []
     for path in paths:
         with open(path, "rb") as f:
             keys.append((hashlib.sha1(f.read()).hexdigest(), tuple(sorted(tools.items()))))
-    todo = [(k, p) for k, p in zip(keys, paths) if cache is None or k not in cache]
+    todo = {k: p for k, p in zip(keys, paths) if cache is None or k not in cache}
     with ThreadPoolExecutor(max_workers=max(1, min(workers, len(todo)))) as pool:
-        done = [(k, pool.submit(reread, p, tools)) for k, p in todo]
+        done = [(k, pool.submit(reread, p, tools)) for k, p in todo.items()]
         read = {k: f.result() for k, f in done}  # the first failure, in program order, is raised
     if cache is not None:
         cache.update(read)

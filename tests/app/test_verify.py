@@ -195,7 +195,7 @@ class MachineTipsTest(unittest.TestCase):
 class RereadRoundsTest(unittest.TestCase):
     """The gate posts and verifies again after leaving operations out: the programs whose text is
     unchanged are not re-read by rs274 again, a changed one is, and the reads come back in the
-    programs' order whichever rs274 finishes first."""
+    programs' order."""
 
     def _program(self, folder, name, depth):
         path = os.path.join(folder, name)
@@ -234,3 +234,16 @@ class RereadRoundsTest(unittest.TestCase):
         self.assertEqual(changed[1][1][0]["label"], "Pocket p1.ngc")
         self.assertEqual(changed[1][1][0]["moves"][-2][3], -5.0)  # the new depth, read
         self.assertEqual(changed[0][1], first[0][1])
+
+    def test_rs274_keeps_its_tool_table_out_of_the_users_home(self):
+        # rs274 writes its tool table to $HOME/.tool.mmap: two under one HOME (two programs read
+        # at once, two jobs) read each other's tools. Each re-read has a HOME of its own.
+        import tempfile
+        from unittest import mock
+        from aeronc.pipeline import verification
+        home = tempfile.mkdtemp(prefix="aeronc_reread_home_")
+        path = self._program(home, "p.ngc", 2)
+        with mock.patch.dict(os.environ, {"HOME": home}):
+            read = verification.reread(path, {1: 10.0})
+        self.assertEqual(read[0]["tool"], 1)
+        self.assertFalse(os.path.exists(os.path.join(home, ".tool.mmap")))
