@@ -1,10 +1,9 @@
 // Rule-based impeller recognition (impeller paper §1):
 //   1. planes and holes (concave cylinders) are classified directly;
-//   2. the other faces are grouped by equal area; a group whose members are copies of one
-//      another about one axis is a pattern, and the axis is fitted to the largest group's
-//      centroids. Every blade face repeats once per blade, so the smallest pattern is m, the
-//      blade count; a group of 2m holds faces that main and splitter blades share (congruent
-//      trailing edges). A group of any other size, or not evenly spaced, means unequal blades;
+//   2. the axis and the blade count m come from the part's rotational symmetry: the turn by
+//      2π/m about the axis takes points sampled on the faces back onto the part
+//      (RotationalSymmetry.h); the faces it takes onto one another are the patterns. A face
+//      without a copy a turn on means unequal blades;
 //   3. the hub is the single face tangent to the root fillets: every member of some pattern;
 //   4. the blade walls are the patterns tangent to the fillets, the shroud faces the patterns
 //      that meet the walls;
@@ -13,6 +12,7 @@
 #include <aeronc/impeller/ImpellerFeatures.h>
 
 #include "FaceGraph.h"
+#include "RotationalSymmetry.h"
 
 #include <aeronc/core/Error.h>
 
@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -38,8 +39,7 @@ namespace aeronc::impeller {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kAreaTolerance = 2e-3;     // relative: copies differ by OCCT's approximations only
-constexpr double kAngleTolerance = 0.01;    // rad, spacing of pattern members
+constexpr double kSplitterShare = 0.1;   // a splitter's shroud is this much smaller than a main blade's at least (exported copies differ by 1 %)
 
 struct Axis {
     gp_Pnt point;
@@ -50,13 +50,6 @@ struct Axis {
         return v - gp_Vec(dir) * v.Dot(gp_Vec(dir));
     }
 };
-
-std::string joinSizes(const std::set<int>& sizes) {
-    std::ostringstream s;
-    int k = 0;
-    for (int n : sizes) s << (k++ ? ", " : "") << n;
-    return s.str();
-}
 
 // A concave cylinder: its outward normal points towards its own axis.
 bool isHole(const FaceGraph& g, int f) {
@@ -76,67 +69,6 @@ bool isHole(const FaceGraph& g, int f) {
     return r.Magnitude() > 1e-9 && n.Dot(r) < 0;
 }
 
-// Splits `faces` (sorted by key) where two neighbours' keys differ by more than tol.
-template <class Key>
-std::vector<std::vector<int>> splitSorted(std::vector<int> faces, Key key, double tol) {
-    std::sort(faces.begin(), faces.end(), [&](int a, int b) { return key(a) < key(b); });
-    std::vector<std::vector<int>> out;
-    for (int f : faces) {
-        if (out.empty() || key(f) - key(out.back().back()) > tol) out.push_back({});
-        out.back().push_back(f);
-    }
-    return out;
-}
-
-// Groups of faces of the same surface type and equal area, largest first. Copies of a face
-// differ in area by OCCT's approximations (a fillet up to 0.1 %), while distinct faces of a blade
-// can come as close (edge rounds of equal height); so a group is also split by the distance of
-// its faces' centroids from the centroid of the whole boundary, which lies on the axis of any
-// rotational pattern and is the same for every copy.
-std::vector<std::vector<int>> groupByArea(const FaceGraph& g, const std::vector<int>& faces, double distTol) {
-    gp_XYZ c(0, 0, 0);
-    double total = 0;
-    for (int f = 1; f <= g.size(); ++f) c += g[f].centroid.XYZ() * g[f].area, total += g[f].area;
-    const gp_Pnt centre(total > 0 ? c / total : c);
-    std::vector<std::vector<int>> groups;
-    for (const auto& byType : splitSorted(faces, [&](int f) { return static_cast<double>(g[f].type); }, 0.5)) {
-        double largest = 0;
-        for (int f : byType) largest = std::max(largest, g[f].area);
-        auto logArea = [&](int f) { return std::log(std::max(g[f].area, 1e-12)); };
-        for (const auto& byArea : splitSorted(byType, logArea, kAreaTolerance))
-            for (auto& grp : splitSorted(byArea, [&](int f) { return g[f].centroid.Distance(centre); }, distTol))
-                groups.push_back(std::move(grp));
-    }
-    std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
-    return groups;
-}
-
-// The axis through the centroids of a group, when they lie on one circle (the circle through
-// three of them far apart).
-bool fitAxis(const FaceGraph& g, const std::vector<int>& group, double tol, Axis& out) {
-    const gp_Pnt p0 = g[group[0]].centroid;
-    gp_Pnt p1 = p0, p2 = p0;
-    for (int f : group)
-        if (g[f].centroid.Distance(p0) > p1.Distance(p0)) p1 = g[f].centroid;
-    double bestArea = 0;
-    for (int f : group) {
-        const double a = gp_Vec(p0, p1).Crossed(gp_Vec(p0, g[f].centroid)).Magnitude();
-        if (a > bestArea) bestArea = a, p2 = g[f].centroid;
-    }
-    if (p1.Distance(p0) < tol || bestArea < tol * p1.Distance(p0)) return false;
-    // Circumcentre of p0, p1, p2.
-    const gp_Vec a(p0, p1), b(p0, p2), n = a.Crossed(b);
-    const gp_Vec toCentre = (n.Crossed(a) * b.SquareMagnitude() + b.Crossed(n) * a.SquareMagnitude()) /
-                            (2 * n.SquareMagnitude());
-    out = Axis{p0.Translated(toCentre), gp_Dir(n)};
-    const double r0 = toCentre.Magnitude();
-    for (int f : group) {
-        if (std::abs(out.axial(g[f].centroid)) > tol) return false;
-        if (std::abs(out.radial(g[f].centroid).Magnitude() - r0) > tol) return false;
-    }
-    return true;
-}
-
 // Angle of p about the axis from a fixed reference direction, in [0, 2π).
 double angleAbout(const Axis& a, const gp_Pnt& p) {
     gp_Dir ref = std::abs(a.dir.X()) < 0.9 ? gp_Dir(1, 0, 0) : gp_Dir(0, 1, 0);
@@ -145,26 +77,6 @@ double angleAbout(const Axis& a, const gp_Pnt& p) {
     const gp_Vec r = a.radial(p);
     double t = std::atan2(r.Dot(yn), r.Dot(xn));
     return t < 0 ? t + 2 * kPi : t;
-}
-
-// Whether the group's centroids are on the axis circle, evenly spaced.
-bool evenlySpaced(const FaceGraph& g, const Axis& a, const std::vector<int>& group, double tol) {
-    const double r0 = a.radial(g[group[0]].centroid).Magnitude();
-    const double z0 = a.axial(g[group[0]].centroid);
-    if (r0 < tol) return false;
-    std::vector<double> angles;
-    for (int f : group) {
-        if (std::abs(a.radial(g[f].centroid).Magnitude() - r0) > tol || std::abs(a.axial(g[f].centroid) - z0) > tol)
-            return false;
-        angles.push_back(angleAbout(a, g[f].centroid));
-    }
-    std::sort(angles.begin(), angles.end());
-    const double step = 2 * kPi / group.size();
-    for (size_t i = 0; i < angles.size(); ++i) {
-        const double next = i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * kPi;
-        if (std::abs(next - angles[i] - step) > kAngleTolerance) return false;
-    }
-    return true;
 }
 
 // The exact axis of a face of revolution (cylinder, cone, torus, sphere, swept), if it has one.
@@ -208,21 +120,44 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         else rest.push_back(f);
     }
 
-    // 2. Groups of equal area, the axis and the blade count.
-    const auto groups = groupByArea(g, rest, 0.02 * scale);
-    if (groups.empty() || groups.front().size() < 3)
-        throw inputError("not an impeller: no rotational pattern (no face area occurs three or more times)");
-    Axis axis;
-    bool found = false;
-    for (const auto& grp : groups) {  // the largest groups (a blade face on every blade)
-        if (grp.size() < groups.front().size()) break;
-        if ((found = fitAxis(g, grp, tol, axis))) break;
+    // 2. The axis and the blade count from the part's rotational symmetry; the orbits of faces
+    // under it (a blade face and its copies on the other blades) are the patterns.
+    const RotationalSymmetry sym = findRotationalSymmetry(shape, g, std::max(5e-3 * scale, 1e-3));
+    if (sym.order < 3)
+        throw inputError("not an impeller: no rotational pattern (no axis about which a turn of 360/N degrees, "
+                         "N >= 3, takes the part onto itself, other than faces of revolution)");
+    const int m = sym.order;
+    Axis axis{sym.axis.Location(), sym.axis.Direction()};
+    {
+        // Faces without a copy a turn on: a blade missing or different. Slivers an exporter
+        // leaves along intersections do not count.
+        std::vector<int> differ;
+        for (int f : sym.unmatched)
+            if (g[f].area > 1e-4 * scale * scale) differ.push_back(f);
+        if (!differ.empty()) {
+            std::ostringstream s;
+            s << "unequal blade groups: the part repeats " << m << " times about its axis, but face";
+            s << (differ.size() > 1 ? "s " : " ");
+            for (size_t k = 0; k < differ.size() && k < 12; ++k)
+                s << (k ? ", " : "") << differ[k] << " (at " << std::lround(angleAbout(axis, g[differ[k]].centroid) * 180 / kPi)
+                  << " deg)";
+            if (differ.size() > 12) s << " and " << differ.size() - 12 << " more";
+            s << " have no copy " << std::setprecision(4) << 360.0 / m
+              << " degrees on (a blade is missing or differs from the others)";
+            throw inputError(s.str());
+        }
     }
-    if (!found)
-        throw inputError("not an impeller: no rotational pattern (the " + std::to_string(groups.front().size()) +
-                         " faces of equal area that occur most often are not copies of one another about an axis)");
-    // The centroids give the axis to OCCT's approximation; a bore or a single face of revolution
-    // on it gives it exactly.
+    std::set<int> holeSet(holes.begin(), holes.end()), planeSet(out.planes.begin(), out.planes.end());
+    std::vector<std::vector<int>> groups;
+    for (const auto& orbit : sym.orbits) {
+        std::vector<int> grp;
+        for (int f : orbit)
+            if (!holeSet.count(f) && !planeSet.count(f)) grp.push_back(f);
+        if (!grp.empty()) groups.push_back(std::move(grp));
+    }
+    std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    // The symmetry's axis is exact when a face of revolution gave it; a bore or a single face of
+    // revolution on it gives it exactly when the axes of inertia did.
     std::vector<int> revolved = holes;
     for (const auto& grp : groups)
         if (grp.size() == 1) revolved.push_back(grp.front());
@@ -236,24 +171,10 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         break;
     }
     std::vector<const std::vector<int>*> patterns;
-    std::set<int> sizes, unevenSizes;
-    for (const auto& grp : groups) {
-        if (grp.size() < 2) continue;
-        sizes.insert(static_cast<int>(grp.size()));
-        if (grp.size() >= 3 && evenlySpaced(g, axis, grp, tol)) patterns.push_back(&grp);
-        else unevenSizes.insert(static_cast<int>(grp.size()));
-    }
+    for (const auto& grp : groups)
+        if (static_cast<int>(grp.size()) >= m) patterns.push_back(&grp);
     if (patterns.empty())
-        throw inputError("not an impeller: no rotational pattern (no faces of equal area evenly spaced about the axis)");
-    int m = static_cast<int>(patterns.front()->size());
-    for (const auto* p : patterns) m = std::min(m, static_cast<int>(p->size()));
-    bool equal = unevenSizes.empty();
-    for (int n : sizes) equal = equal && n % m == 0;
-    if (!equal)
-        throw inputError("unequal blade groups: faces of equal area occur " + joinSizes(sizes) +
-                         " times; with " + std::to_string(m) +
-                         " blades every blade face must occur a multiple of " + std::to_string(m) +
-                         " times, evenly spaced about the axis (a blade is missing or differs from the others)");
+        throw inputError("not an impeller: no rotational pattern (no faces repeat about the axis)");
     out.bladeCount = m;
 
     // 3. The hub: the single face tangent to every member of some pattern (the root fillets).
@@ -347,7 +268,7 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
     for (const auto& b : out.blades) largest = std::max(largest, g[b.shroud].area);
     int mains = 0;
     for (auto& b : out.blades) {
-        b.splitter = g[b.shroud].area < largest * (1 - kAreaTolerance);
+        b.splitter = g[b.shroud].area < largest * (1 - kSplitterShare);
         mains += !b.splitter;
     }
     out.splitterCount = static_cast<int>(out.blades.size()) - mains;
