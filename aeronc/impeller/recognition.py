@@ -20,6 +20,11 @@ def recognise(source):
     channelBlades, filletRadius, bladeHeight, splitterHeight, outerRadius, axialLength), in mm.
     """
     shape, label = shape_of(source)
+    if not shape.isNull() and len(shape.Solids) > 1:
+        raise RecognitionError(
+            "{}: holds {} solids (bodies exported separately, e.g. a hub and its blades); impeller "
+            "recognition needs one solid: fuse them first (Program impeller offers it; "
+            "aeronc.impeller.body_fusion.fuse_bodies)".format(label, len(shape.Solids)))
     check_solid(shape, label)
     core = _core()
     with from_core(RecognitionError, label):

@@ -9,13 +9,17 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepGProp.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
+#include <Poly_Triangulation.hxx>
+#include <TopLoc_Location.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <GProp_PrincipalProps.hxx>
 #include <Geom_Surface.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Trsf.hxx>
@@ -38,28 +42,34 @@ constexpr int kMaxOrder = 64;
 constexpr double kOrderShare = 0.9;   // share of turned samples that must land on the part
 constexpr double kOrbitShare = 0.25;  // share of a face's turned samples that links it to a face
 
-// The distance from p to the surface near uv, by Gauss-Newton steps from uv (no global search:
-// a point far from the guess is far from the face anyway). uv is updated to the foot point.
+// The distance from p to the surface near uv, by damped Gauss-Newton steps from uv (no global
+// search: a point far from the guess is far from the face anyway). uv becomes the foot point.
 double localDistance(const GeomAdaptor_Surface& s, gp_Pnt2d& uv, const gp_Pnt& p) {
-    double u = uv.X(), v = uv.Y(), d = 1e300;
-    const double u0 = s.FirstUParameter(), u1 = s.LastUParameter(), v0 = s.FirstVParameter(), v1 = s.LastVParameter();
-    for (int it = 0; it < 12; ++it) {
+    double u = uv.X(), v = uv.Y();
+    const double ulo = std::min(s.FirstUParameter(), s.LastUParameter()), uhi = std::max(s.FirstUParameter(), s.LastUParameter());
+    const double vlo = std::min(s.FirstVParameter(), s.LastVParameter()), vhi = std::max(s.FirstVParameter(), s.LastVParameter());
+    double d = s.Value(u, v).Distance(p);
+    for (int it = 0; it < 16 && d > 0; ++it) {
         gp_Pnt q;
         gp_Vec du, dv;
         s.D1(u, v, q, du, dv);
         const gp_Vec r(q, p);
-        d = r.Magnitude();
         const double a = du.Dot(du), b = du.Dot(dv), c = dv.Dot(dv), ru = du.Dot(r), rv = dv.Dot(r);
         const double det = a * c - b * b;
         if (det <= 1e-30 * (a * c + 1e-300)) break;
-        const double su = (c * ru - b * rv) / det, sv = (a * rv - b * ru) / det;
-        u = std::clamp(u + su, std::min(u0, u1), std::max(u0, u1));
-        v = std::clamp(v + sv, std::min(v0, v1), std::max(v0, v1));
-        if (std::abs(su) * std::sqrt(a) + std::abs(sv) * std::sqrt(c) < 1e-9 * (1 + d)) break;
+        double su = (c * ru - b * rv) / det, sv = (a * rv - b * ru) / det;
+        // Damped: a step that does not bring the foot point nearer is halved (B-spline surfaces
+        // of uneven parametrisation throw the plain step far off).
+        bool better = false;
+        for (int half = 0; half < 12 && !better; ++half, su *= 0.5, sv *= 0.5) {
+            const double un = std::clamp(u + su, ulo, uhi), vn = std::clamp(v + sv, vlo, vhi);
+            const double dn = s.Value(un, vn).Distance(p);
+            if (dn < d) u = un, v = vn, d = dn, better = true;
+        }
+        if (!better) break;
     }
-    gp_Pnt q = s.Value(u, v);
     uv.SetCoord(u, v);
-    return q.Distance(p);
+    return d;
 }
 
 struct Sample {
@@ -85,6 +95,14 @@ public:
         std::thread second(work);
         work();
         second.join();
+        // A face the grid found (almost) nothing inside, though it has area (a piece of a
+        // periodic surface across its seam, where the classifier and the parameter bounds do not
+        // agree): its mesh nodes instead. Meshing writes to edges that faces share: one at a time.
+        for (int f = 1; f <= g.size(); ++f)
+            if (found[f].size() < 0.125 * g[f].area / (spacing * spacing)) {
+                auto nodes = meshSamples(f);
+                if (nodes.size() > found[f].size()) found[f] = std::move(nodes);
+            }
         for (int f = 1; f <= g.size(); ++f)
             for (const Sample& x : found[f]) {
                 perFace_[f].push_back(static_cast<int>(samples_.size()));
@@ -96,8 +114,9 @@ public:
     const std::vector<Sample>& samples() const { return samples_; }
     const std::vector<int>& of(int face) const { return perFace_[face]; }
 
-    // The face p lies on (within tol), nearest sample's face first; 0 when none.
-    int faceAt(const gp_Pnt& p, double tol) const {
+    // The face p lies on (within tol), nearest sample's face first; 0 when none. thorough: also
+    // OCCT's global projection where the local one stalls (slow: for the orbits, not the order).
+    int faceAt(const gp_Pnt& p, double tol, bool thorough = false) const {
         std::vector<std::pair<double, int>> near;  // distance to the sample, sample
         const long long cx = cellOf(p.X()), cy = cellOf(p.Y()), cz = cellOf(p.Z());
         for (long long dx = -1; dx <= 1; ++dx)
@@ -122,6 +141,16 @@ public:
             // Near a sample of the face, the foot point is on the face; farther, on its surface
             // beyond the face perhaps.
             if (localDistance(surfaces_[f], uv, p) <= tol && (d < 0.5 * spacing_ || onFace(f, uv))) return f;
+            // The local search can stall on a B-spline of uneven parametrisation: OCCT's global
+            // projection, for the two nearest faces only.
+            if (thorough && tried.size() <= 2) {
+                GeomAPI_ProjectPointOnSurf proj(p, BRep_Tool::Surface(g_[f].face));
+                if (proj.NbPoints() > 0 && proj.LowerDistance() <= tol) {
+                    double pu, pv;
+                    proj.LowerDistanceParameters(pu, pv);
+                    if (onFace(f, gp_Pnt2d(pu, pv))) return f;
+                }
+            }
         }
         return 0;
     }
@@ -165,6 +194,19 @@ private:
             if (!inside || out.size() >= wanted) break;
             nu *= 2, nv *= 2;
         }
+        return out;
+    }
+
+    std::vector<Sample> meshSamples(int f) const {
+        std::vector<Sample> out;
+        const TopoDS_Face& face = g_[f].face;
+        BRepMesh_IncrementalMesh(face, 0.25 * spacing_, false, 0.5, false);
+        TopLoc_Location loc;
+        const Handle(Poly_Triangulation) t = BRep_Tool::Triangulation(face, loc);
+        if (t.IsNull() || !t->HasUVNodes()) return out;
+        const int step = std::max(1, static_cast<int>(t->NbNodes() * spacing_ * spacing_ / std::max(g_[f].area, 1e-12)));
+        for (int i = 1; i <= t->NbNodes(); i += step)
+            out.push_back({t->Node(i).Transformed(loc.Transformation()), t->UVNode(i), f});
         return out;
     }
 
@@ -312,7 +354,7 @@ RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceG
         std::map<int, int> landed;
         int count = 0, misses = 0;
         for (size_t k = 0; k < ids.size(); k += std::max<size_t>(1, ids.size() / 12)) {
-            const int to = cloud.faceAt(cloud.samples()[ids[k]].p.Transformed(t), tol);
+            const int to = cloud.faceAt(cloud.samples()[ids[k]].p.Transformed(t), tol, true);
             ++count;
             if (to) ++landed[to];
             else ++misses;
