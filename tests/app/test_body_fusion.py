@@ -43,8 +43,9 @@ class BodyFusionTest(unittest.TestCase):
         self.assertIn("4 bodies: 3 fused into one solid, 1 degenerate", summary)
         self.assertEqual(len(self.part.Shape.Solids), 4)  # the original is kept
         self.assertIsNotNone(self.doc.getObject(self.part.Name))
+        name = fused.Name
         self.doc.undo()
-        self.assertIsNone(self.doc.getObject(fused.Name))
+        self.assertIsNone(self.doc.getObject(name))
         self.assertIsNotNone(self.doc.getObject(self.part.Name))
 
 
