@@ -1,8 +1,8 @@
 """Task panel of AeroNC_SelectTools: workpiece material and machine, then the plan.
 
 "Select tools" plans from the stored tree (with a progress dialog), records the
-tools on the elements and makes the ToolControllers in one undo step, and lists the result
-here: per element its finishing and roughing tool, eta and any error, with the tool changes
+tools on the elements and the plan on the group in one undo step (the machining chain makes
+the ToolControllers in its Jobs), and lists the result here: per element its finishing and roughing tool, eta and any error, with the tool changes
 and roughing time before and after merging. Errors go to the report view and a message box;
 the document is then unchanged.
 """
@@ -86,9 +86,8 @@ class SelectToolsPanel:
             return not progress.wasCanceled()
 
         try:
-            self.plan, job, tcs = tool_planning.select_tools(self.group, self.material.currentText(),
-                                                             self.machine.currentText(), self.kb_path,
-                                                             progress=report)
+            self.plan = tool_planning.select_tools(self.group, self.material.currentText(),
+                                                   self.machine.currentText(), self.kb_path, progress=report)
         except AeroNCError as e:
             show_error(str(e))
             return False
@@ -98,10 +97,10 @@ class SelectToolsPanel:
             return False
         finally:
             progress.close()
-        self._show(self.plan, job, tcs)
+        self._show(self.plan)
         return True
 
-    def _show(self, plan, job, tcs):
+    def _show(self, plan):
         rows = [(e["id"], e["type"], e["finishingTool"], e["roughingTool"],
                  "" if e["eta"] is None else "{:.3f}".format(e["eta"]), e["narrowPassages"] or "",
                  e["error"] or "") for e in plan["elements"]]
@@ -120,6 +119,6 @@ class SelectToolsPanel:
         missing = sum(1 for e in plan["elements"] if e["error"]) + sum(1 for h in plan["holes"] if h["error"])
         self.summary.setText(
             "Roughing tool changes {} \u2192 {}; roughing time {:.1f} \u2192 {:.1f} min. "
-            "{} ToolControllers in {}. {}".format(
-                tc["before"], tc["after"], tm["before"] or 0, tm["after"] or 0, len(tcs), job.Label,
+            "{} tools and cutting operations planned. {}".format(
+                tc["before"], tc["after"], tm["before"] or 0, tm["after"] or 0, len(plan.get("toolSettings", [])),
                 "{} element(s) without a tool: see Problem.".format(missing) if missing else "Every element has its tools."))

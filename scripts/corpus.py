@@ -29,7 +29,7 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-STAGE_SHORT = {"read part": "read", "recognise": "recog", "machine": "mach", "select tools": "tools", "cutting data": "cut",
+STAGE_SHORT = {"read part": "read", "recognise": "recog", "machine": "mach", "select tools": "tools",
                "machining chain": "chain", "post": "post", "verify": "verify", "pictures": "pics", "save": "save"}
 
 

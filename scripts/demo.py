@@ -4,7 +4,7 @@
 
 (`scripts/run.sh demo` does this.) Runs aeronc.runs.main_job on resources/samples/sample_panel.step,
 an integral panel with pockets on both faces, islands, openings, lightening and bolt holes, a
-flange and a joggle: recognise -> select tools -> optimise cutting data -> machining chain ->
+flange and a joggle: recognise -> select tools -> machining chain (optimised cutting data) ->
 one Path Job per setup -> Sinumerik 840D and LinuxCNC programs -> the LinuxCNC programs re-read
 by LinuxCNC's interpreter and simulated against the blank -> pictures and report.html, all in
 AERONC_OUT (see aeronc/runs/main_job.py for the list). AERONC_PART=<file.step> runs the same on

@@ -13,7 +13,7 @@ kept, or could not be kept, is listed in the chain's Messages.
 """
 import json
 
-from aeronc.pipeline import chain_edits, knowledge_base, setup_job
+from aeronc.pipeline import chain_edits, cutting_optimisation, knowledge_base, setup_job
 from aeronc import operations, pathcompat
 from aeronc.errors import AeroNCError, MachiningChainError, from_core
 from aeronc.objects import machining_chain as chain_object
@@ -230,7 +230,9 @@ def _sync_jobs(obj, chain, part, blank, kb, progress):
         doc.recompute([job.Stock] + pathcompat.job_models(job))
         setup_units = [units[u] for u in order if u in units and int(units[u].get("setup", 0)) == int(setup["id"])]
         kept.append((job, setup_units))
-    tcs = [setup_job.tool_controllers(job, setup_units, part, kb) for job, setup_units in kept]
+    cutting_data = cutting_optimisation.ChainCuttingData(kb, obj.Material, obj.Machine)
+    tcs = [setup_job.tool_controllers(job, setup_units, kb, cutting_data) for job, setup_units in kept]
+    messages += cutting_data.messages
     for (job, setup_units), job_tcs in zip(kept, tcs):
         messages += _sync_operations(job, setup_units, job_tcs)
         for tc in setup_job.unused_tool_controllers(job, list(job_tcs.values())):
@@ -259,9 +261,8 @@ def _sync_operations(job, units, tcs):
         if op is not None and type(op.Proxy) is not cls:
             doc.removeObject(op.Name)  # the unit changed its operation type: a new operation
             op = None
-        if op is None:
+        if op is None:  # into the Job's Operations with the others below: adding one by one is quadratic
             op = operations.create(doc, unit, operation_label(unit))
-            pathcompat.add_operation(job, op)
         full = _unit_defaults(unit, job)
         for prop, kept, chains in op.Proxy.assign(op, full, tcs[setup_job.tag_of(unit)]):
             messages.append("{}: {} kept at {} (edited by hand; the chain has {})".format(op.Label, prop, kept, chains))

@@ -147,17 +147,14 @@ def apply(built, edits):
     disabled = set(e["disabled"])
     for uid in sorted(disabled - set(units)):
         notes.append("unit {} no longer exists: its disabling was dropped".format(uid))
+    built_units = units_by_id(built)  # once: a lookup per unit would be quadratic on a large panel
     for uid, u in units.items():
-        u["enabled"] = uid not in disabled and bool(built_enabled(built, uid))
+        was = built_units.get(uid)
+        u["enabled"] = uid not in disabled and bool(True if was is None else was.get("enabled", True))
     for i, uid in enumerate(int(u) for u in chain.get("order", [])):
         if uid in units:
             units[uid]["order"] = i
     return chain, notes
-
-
-def built_enabled(built, uid):
-    u = units_by_id(built).get(uid)
-    return True if u is None else u.get("enabled", True)
 
 
 def moved(chain, edits, unit_id, delta):

@@ -369,6 +369,44 @@ def propose(target, material="", machine="", kb_path=None, method="nlopt", ra_ma
     return out
 
 
+def write(proposal, tc):
+    """The proposal's speeds and feeds, and the optimiser's record, into a ToolController."""
+    tc.SpindleSpeed = float(proposal.spindle_rpm)
+    tc.HorizFeed = "{!r} mm/min".format(float(proposal.horiz_feed))
+    tc.VertFeed = "{!r} mm/min".format(float(proposal.vert_feed))
+    add_property(tc, "App::PropertyString", RESULT_PROPERTY, "AeroNC",
+                 "What the cutting-parameter optimiser chose, and why", proposal.summary(), True)
+
+
+class ChainCuttingData:
+    """Speeds and feeds for the ToolControllers the machining chain makes in its Jobs.
+
+    A controller is made before the operations that will use it, so the optimiser is asked at
+    the knowledge base's a_p and a_e for the tool and operation (as for a controller no
+    operation uses); the answer is computed once per tool and operation and written into every
+    new controller of that tag. A controller the optimiser cannot answer for (a drill, a bit
+    without teeth or material) keeps the knowledge base's speeds and feeds, and says why in
+    messages. Optimising a Job afterwards (Optimise cutting parameters) takes the cut from its
+    operations' paths instead."""
+
+    def __init__(self, kb, material, machine):
+        self.kb, self.material, self.machine = kb, material, machine
+        self.answers = {}  # tag -> Proposal
+        self.messages = []
+
+    def write(self, tc):
+        """Write the optimum into tc (tagged by the chain); True when it had one."""
+        tag = getattr(tc, TC_TAG)
+        proposal = self.answers.get(tag)
+        if proposal is None:
+            proposal = self.answers[tag] = propose_one(tc, [], self.kb, self.material, self.machine)
+            if proposal.error and not proposal.skipped:
+                self.messages.append("{}: the knowledge base's speeds and feeds kept ({})".format(tag, proposal.error))
+        if proposal.ok:
+            write(proposal, tc)
+        return proposal.ok
+
+
 def apply(proposals):
     """Write every proposal that has an answer into its ToolController, as one undo step, and
     recompute the operations that use them. Returns the ToolControllers written. Raises
@@ -383,12 +421,7 @@ def apply(proposals):
     def work():
         try:
             for p in good:
-                tc = p.tc
-                tc.SpindleSpeed = float(p.spindle_rpm)
-                tc.HorizFeed = "{!r} mm/min".format(float(p.horiz_feed))
-                tc.VertFeed = "{!r} mm/min".format(float(p.vert_feed))
-                add_property(tc, "App::PropertyString", RESULT_PROPERTY, "AeroNC",
-                             "What the cutting-parameter optimiser chose, and why", p.summary(), True)
+                write(p, p.tc)
             written = set(p.tc.Name for p in good)
             jobs = {job.Name: job for job in (pathcompat.job_of(p.tc) for p in good)}
             ops = [op for job in jobs.values() for op in pathcompat.tooled_operations(job)

@@ -4,10 +4,10 @@ Its Model is the part placed by the setup frame: the frame's u, v, w become the 
 so the setup's tool axis is the Job's +Z and the units' geometry (u, v, h) is in Job
 coordinates. For -Z that is a rotation of 180 degrees about X. Its Stock is the recognition
 blank box in the same frame. Its ToolControllers are the ones the setup's units need, one per
-knowledge-base tool and cutting operation, tagged like Select tools' ("<tool id>/<operation>"):
-a Job keeps the controllers it has (with an optimiser's speeds and feeds); a missing one is
-copied from a controller of the same tag in another Job of the part (Select tools' Job), or
-made from the unit's cutting data (the knowledge base's n and feeds).
+knowledge-base tool and cutting operation, tagged by the tool plan ("<tool id>/<operation>"):
+a Job keeps the controllers it has (with the speeds and feeds they were given or optimised
+to); a missing one is made from the unit's tool and cutting data (the knowledge base's n and
+feeds), then given the optimiser's speeds and feeds for its tool and operation.
 """
 import FreeCAD
 
@@ -57,7 +57,10 @@ def part_box(shape, deflection=1e-3, fine=1e-6):
     hi = [max(b[1][k] for b in boxes) for k in range(3)]
     for (edge, pts), (elo, ehi) in zip(edges, boxes):
         curved = len(pts) > 2  # a straight edge's ends are exact
-        if curved and any(elo[k] < lo[k] + deflection or ehi[k] > hi[k] - deflection for k in range(3)):
+        # Only an axis the edge curves in can gain from the fine walk: an arc in the plane of a
+        # side (a pocket's corner on the top face) keeps that coordinate exactly.
+        if curved and any(elo[k] != ehi[k] and (elo[k] < lo[k] + deflection or ehi[k] > hi[k] - deflection)
+                          for k in range(3)):
             flo, fhi = extent(edge.discretize(Deflection=fine))
             lo = [min(a, b) for a, b in zip(lo, flo)]
             hi = [max(a, b) for a, b in zip(hi, fhi)]
@@ -130,17 +133,11 @@ def place(job, part, setup, blank, machine=None):
         pathcompat.set_job_stock_box(job, box)
 
 
-def tool_controllers(job, units, part, kb):
-    """{tag: ToolController} for the units, made in the Job where missing (see module doc)."""
+def tool_controllers(job, units, kb, cutting_data=None):
+    """{tag: ToolController} for the units, made in the Job where missing (see module doc);
+    cutting_data (a ChainCuttingData) writes the optimiser's speeds and feeds into each new one."""
     doc = job.Document
     have = {getattr(tc, TC_TAG): tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, TC_TAG)}
-    elsewhere = {}
-    for other in pathcompat.jobs_of_part(doc, part):
-        if other is job:
-            continue
-        for tc in pathcompat.tool_controllers(other):
-            if hasattr(tc, TC_TAG):
-                elsewhere.setdefault(getattr(tc, TC_TAG), tc)
     used = [tc.ToolNumber for tc in pathcompat.tool_controllers(job)]
     out = {}
     for unit in units:
@@ -149,17 +146,14 @@ def tool_controllers(job, units, part, kb):
             continue
         tc = have.get(tag)
         if tc is None:
-            source = elsewhere.get(tag)
-            number = unit.get("toolNumber") or (source.ToolNumber if source is not None else None)
+            number = unit.get("toolNumber")
             if not number or number in used:
                 number = max(used + [0]) + 1
             s = unit.get("setting") or {}
-            rpm = float(source.SpindleSpeed) if source is not None else float(s.get("spindleRpm") or 0.0)
-            hfeed = _mm_min(source.HorizFeed) if source is not None else float(s.get("feedMmMin") or 0.0)
-            vfeed = _mm_min(source.VertFeed) if source is not None else float(s.get("plungeFeedMmMin") or 0.0)
-            tc = _make_tool_controller(doc, job, unit["tool"], tag, number, rpm, hfeed, vfeed, kb)
-            if source is not None:
-                _copy_optimum(source, tc)
+            tc = _make_tool_controller(doc, job, unit["tool"], tag, number, float(s.get("spindleRpm") or 0.0),
+                                       float(s.get("feedMmMin") or 0.0), float(s.get("plungeFeedMmMin") or 0.0), kb)
+            if cutting_data is not None:
+                cutting_data.write(tc)
             used.append(number)
         out[tag] = tc
     return out
@@ -181,16 +175,3 @@ def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb)
     tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan", 0, True)
     setattr(tc, TC_TAG, tag)
     return tc
-
-
-def _copy_optimum(source, tc):
-    """The optimiser's record travels with the speeds and feeds it chose."""
-    from aeronc.pipeline.cutting_optimisation import RESULT_PROPERTY
-    if RESULT_PROPERTY in source.PropertiesList:
-        tc.addProperty(source.getTypeIdOfProperty(RESULT_PROPERTY), RESULT_PROPERTY, "AeroNC",
-                       source.getDocumentationOfProperty(RESULT_PROPERTY), 0, True)
-        setattr(tc, RESULT_PROPERTY, getattr(source, RESULT_PROPERTY))
-
-
-def _mm_min(quantity):
-    return float(FreeCAD.Units.Quantity(quantity).getValueAs("mm/min"))

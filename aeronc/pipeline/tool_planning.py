@@ -4,23 +4,20 @@ The plan is made from the tree the group stored when its features were recognise
 tools belong to exactly the elements the document shows; the part is not recognised again.
 Each milled DomainElement gets its finishing tool, roughing tool and machinable ratio eta,
 each hole its drill, and the MachiningFeatures group the tool changes and roughing time
-before and after merging. A ToolController is made in the part's Path Job for every tool
-and operation the plan uses (spindle speed and feeds from the knowledge base); the part
-gets a Job if it has none. Everything is one undo step; a failure leaves the document as
-it was.
+before and after merging, and the plan itself (ToolPlan), which the machining chain takes as
+it is. No Path Job is made here: the chain's Jobs get the ToolControllers their units need,
+with the optimiser's speeds and feeds (chain_building). Everything is one undo step; a failure
+leaves the document as it was.
 """
 import json
 
-import FreeCAD
-
 from aeronc.pipeline import knowledge_base
-from aeronc import pathcompat
 from aeronc.objects import machining_features
 from aeronc.objects.base import descendants, proxy_type
 from aeronc.objects.transaction import in_transaction
 from aeronc.objects.domain_element import TYPE as ELEMENT_TYPE
 
-TC_TAG = "AeroNCTool"  # property on the ToolControllers this module made: "<tool id>/<operation>"
+TC_TAG = "AeroNCTool"  # property on the chain's ToolControllers: "<tool id>/<operation>" of the plan
 
 
 def _element_objects(group):
@@ -51,51 +48,13 @@ def _set_plan_properties(group, plan, material, machine):
         obj.Drill, obj.ToolError = h["drill"] or "", h["error"] or ""
 
 
-def _tool_controllers(doc, job, plan, kb):
-    """Make or update one ToolController per (tool, operation) of the plan; returns them."""
-    existing = {getattr(tc, TC_TAG): tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, TC_TAG)}
-    numbers = {}
-    for tc in existing.values():
-        numbers.setdefault(getattr(tc, TC_TAG).split("/")[0], tc.ToolNumber)
-    used = [tc.ToolNumber for tc in pathcompat.tool_controllers(job)]
-    next_number = max(used + [0]) + 1
-    made = []
-    wanted = set()
-    for s in plan.get("toolSettings", []):
-        tag = "{}/{}".format(s["tool"], s["operation"])
-        wanted.add(tag)
-        rpm, hfeed, vfeed = s["spindleRpm"], s["feedMmMin"], s["plungeFeedMmMin"]
-        tc = existing.get(tag)
-        if tc is None:
-            if s["tool"] not in numbers:
-                numbers[s["tool"]] = next_number
-                next_number += 1
-            _, document = kb.bit_document(s["tool"])
-            label = "TC: {} {}".format(s["tool"], s["operation"])
-            tc = pathcompat.create_tool_controller(doc, job, label, json.loads(document), numbers[s["tool"]],
-                                                   rpm, hfeed, vfeed)
-            tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan",
-                           0, True)
-            setattr(tc, TC_TAG, tag)
-        else:
-            tc.SpindleSpeed = float(rpm)
-            tc.HorizFeed = "{} mm/min".format(hfeed)
-            tc.VertFeed = "{} mm/min".format(vfeed)
-        made.append(tc)
-    # Controllers of an earlier plan that this one no longer uses, unless an operation does.
-    for tag, tc in existing.items():
-        if tag not in wanted and not pathcompat.tool_controller_in_use(tc):
-            pathcompat.remove_tool_controller(doc, tc)
-    return made
-
-
-def select_tools(group, material, machine="", kb_path=None, job=None, progress=None):
+def select_tools(group, material, machine="", kb_path=None, progress=None):
     """Plan the tools of a MachiningFeatures group from its stored tree and record them (one
     undo step).
 
     progress, if given, is called as progress(fraction, stage) when planning starts and when
     the plan is about to be recorded; returning False cancels, leaving the document as it was.
-    Returns (plan dict, Job, ToolControllers). Raises KnowledgeBaseError with a clear message
+    Returns the plan (dict). Raises KnowledgeBaseError with a clear message
     for a group without a source or a stored recognition, a source changed since recognition,
     a stored tree the core cannot read, an unknown material or machine, a knowledge base that
     cannot be opened, or a cancel."""
@@ -134,16 +93,7 @@ def select_tools(group, material, machine="", kb_path=None, job=None, progress=N
 
     def work():
         _set_plan_properties(group, plan, material, machine)
-        target = job
-        if target is None:
-            jobs = pathcompat.jobs_of_part(doc, part)
-            target = jobs[0] if jobs else pathcompat.create_job(doc, [part], "Job")
-        try:
-            tcs = _tool_controllers(doc, target, plan, kb)
-        except RuntimeError as e:
-            raise knowledge_base.KnowledgeBaseError(str(e))
         doc.recompute()
-        return target, tcs
 
-    target, tcs = in_transaction(doc, "Select tools", work)
-    return plan, target, tcs
+    in_transaction(doc, "Select tools", work)
+    return plan

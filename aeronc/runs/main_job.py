@@ -1,7 +1,8 @@
 """The main job, headless: from a STEP part to posted, verified programs and a report.
 
-    read part -> recognise -> choose the machine -> select tools -> optimise cutting data
-    -> machining chain -> Jobs -> post -> re-read and simulate -> pictures -> save and report
+    read part -> recognise -> choose the machine -> select tools -> machining chain (Jobs,
+    ToolControllers at the optimiser's cutting data, operations) -> post -> re-read and
+    simulate -> pictures -> save and report
 
 Each stage is a function of the one context, MainJob, that carries what the stages before it
 made; runs.stages times and reports them. run() writes into one output folder:
@@ -134,18 +135,9 @@ def check_machine_travel(job):
 
 def select_tools(job):
     from aeronc.pipeline import tool_planning
-    plan, _, tcs = tool_planning.select_tools(job.group, job.material, job.machine, job.kb_path)
-    return "{} ToolControllers; roughing tool changes {} -> {}".format(
-        len(tcs), plan["toolChanges"]["before"], plan["toolChanges"]["after"])
-
-
-def cutting_data(job):
-    from aeronc import pathcompat
-    from aeronc.pipeline import cutting_optimisation
-    jobs = pathcompat.jobs_of_part(job.doc, job.part)
-    proposals = cutting_optimisation.propose(jobs[0], kb_path=job.kb_path) if jobs else []
-    applied = cutting_optimisation.apply(proposals) if proposals else []
-    return "{} of {} ToolControllers optimised".format(len(applied), len(proposals))
+    plan = tool_planning.select_tools(job.group, job.material, job.machine, job.kb_path)
+    return "{} tools and cutting operations planned; roughing tool changes {} -> {}".format(
+        len(plan.get("toolSettings", [])), plan["toolChanges"]["before"], plan["toolChanges"]["after"])
 
 
 def machining_chain(job):
@@ -165,9 +157,19 @@ def machining_chain(job):
                                "cutLength": op.CutLength.Value,
                                "minutes": seconds / 60.0 if seconds is not None else None})
     job.data["operations"] = operations
-    return "{} units, {} elements not machined, rules {}; rapid travel -{:.0f} %".format(
+    return "{} units, {} elements not machined, rules {}; rapid travel -{:.0f} %; {}".format(
         len(chain.get("units", [])), chain_report.unmachined_text(chain),
-        "all pass" if not failed else "{} FAIL".format(len(failed)), float(travel.get("savedPercent") or 0))
+        "all pass" if not failed else "{} FAIL".format(len(failed)), float(travel.get("savedPercent") or 0),
+        _optimised_text(job.chain_obj))
+
+
+def _optimised_text(chain_obj):
+    """How many of the Jobs' ToolControllers carry the optimiser's cutting data."""
+    from aeronc import pathcompat
+    from aeronc.pipeline.cutting_optimisation import RESULT_PROPERTY
+    tcs = [tc for fc_job in chain_obj.Jobs for tc in pathcompat.tool_controllers(fc_job)]
+    done = sum(1 for tc in tcs if RESULT_PROPERTY in tc.PropertiesList)
+    return "cutting data optimised for {} of {} ToolControllers".format(done, len(tcs))
 
 
 def post(job):
@@ -399,7 +401,7 @@ def save(job):
 
 STAGES = (("read part", read_part), ("recognise", recognise), ("machine", choose_machine),
           ("select tools", select_tools),
-          ("cutting data", cutting_data), ("machining chain", machining_chain), ("post", post),
+          ("machining chain", machining_chain), ("post", post),
           ("verify", verify), ("pictures", pictures), ("save", save))
 
 

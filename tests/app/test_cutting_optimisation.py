@@ -1,6 +1,7 @@
 """Optimise cutting parameters on real Path Jobs, headless: the cut measured from a Pocket
 operation's path, the ToolController written as one undo step and restored by undo, the
 optimum checked against the plotted grid, and bad input leaving every ToolController as it was."""
+import math
 import os
 import shutil
 import tempfile
@@ -178,44 +179,71 @@ class PocketJobTest(unittest.TestCase):
                 self.assertAlmostEqual(a, b, places=6)
 
 
-class SelectedToolsTest(unittest.TestCase):
-    """The ToolControllers Select tools made for a generated panel (no operations yet): the
-    optimiser takes their knowledge-base operation and the knowledge base's a_p and a_e."""
+class ChainToolControllersTest(unittest.TestCase):
+    """The ToolControllers the machining chain makes in its Jobs carry the optimiser's speeds and
+    feeds for their tool and operation at the knowledge base's a_p and a_e, the same in every
+    Job; optimising a chain Job afterwards takes the cut from its operations' paths."""
 
-    def test_select_tools_then_optimise_the_job(self):
-        doc = new_document("AeroNCOptimiseJob")
+    def test_chain_jobs_carry_the_optimum_then_optimise_from_their_paths(self):
+        from aeronc.pipeline import chain_building
+        doc = new_document("AeroNCOptimiseChain")
         tmp = tempfile.mkdtemp(prefix="aeronc_opt_")
+        material, machine = "7050-T7451", "AC-5AX"
         try:
             kb_path = os.path.join(tmp, "kb.sqlite")
-            part, _ = make_panel_object(doc, {"pocketsX": 2, "pocketsY": 1})
-            group = makers.create_machining_features(doc, part, directions=[(0, 0, 1)])
-            _, job, tcs = tool_planning.select_tools(group, "7050-T7451", machine="AC-5AX", kb_path=kb_path)
-            # Material and machine come from what Select tools recorded.
-            proposals = co.propose(job, kb_path=kb_path)
-            ours = [p for p in proposals if p.tc in tcs]
-            milled = [p for p in ours if not p.tc.AeroNCTool.endswith("/drilling")]
-            self.assertTrue(milled)
+            part, _ = make_panel_object(doc, {"pocketsX": 2, "pocketsY": 1, "bottomPockets": True})
+            group = makers.create_machining_features(doc, part, directions=[(0, 0, 1), (0, 0, -1)])
+            tool_planning.select_tools(group, material, machine=machine, kb_path=kb_path)
+            chain = chain_building.build(group, "integral_panel", material, machine, kb_path)
+            self.assertGreaterEqual(len(chain.Jobs), 2)
             kb = knowledge_base.open_kb(kb_path)
             tools = {t["id"]: t for t in kb.tools()}
-            for p in milled:
-                self.assertTrue(p.ok, p.error)
-                tool_id, op = p.tc.AeroNCTool.split("/")
-                self.assertEqual(p.operation, op)
+            by_tag, moved = {}, set()
+            for job in chain.Jobs:
+                for tc in pathcompat.tool_controllers(job):
+                    by_tag.setdefault(tc.AeroNCTool, []).append(tc)
+            milled = [tag for tag in by_tag if not tag.endswith("/drilling")]
+            self.assertTrue(milled)
+            self.assertTrue(any(len(tcs) > 1 for tcs in by_tag.values()), "a tool used in both setups")
+            for tag, tcs in by_tag.items():
+                tool_id, op = tag.split("/")
                 t = tools[tool_id]
-                cc = kb.cutting_condition("7050-T7451", t["material"], op, t["diameter"])
-                self.assertAlmostEqual(p.result["parameters"]["cut"]["a_p_mm"], cc["ap"])
-                self.assertAlmostEqual(p.params["cut"]["a_e_mm"], cc["aeRatio"] * t["diameter"])
-                self.assertLessEqual(p.spindle_rpm, 18000 * (1 + 1e-9))
-                self.assertTrue(p.optimum["feasible"])
-            for p in ours:
-                if p.tc.AeroNCTool.endswith("/drilling"):
-                    self.assertTrue(p.skipped)
-            before = {p.tc.Name: feeds(p.tc) for p in ours}
+                if op == "drilling":  # the milling model does not describe a drill: the knowledge base's
+                    for tc in tcs:
+                        self.assertNotIn(co.RESULT_PROPERTY, tc.PropertiesList)
+                    continue
+                # By hand: the optimiser's answer for a controller no operation uses.
+                expected = co.propose_one(tcs[0], [], kb, material, machine)
+                self.assertTrue(expected.ok, expected.error)
+                cc = kb.cutting_condition(material, t["material"], op, t["diameter"])
+                self.assertAlmostEqual(expected.result["parameters"]["cut"]["a_p_mm"], cc["ap"])
+                self.assertAlmostEqual(expected.params["cut"]["a_e_mm"], cc["aeRatio"] * t["diameter"])
+                n = 1000 * cc["vc"] / (math.pi * t["diameter"])
+                for tc in tcs:
+                    self.assertIn(co.RESULT_PROPERTY, tc.PropertiesList)
+                    self.assertAlmostEqual(tc.SpindleSpeed, expected.spindle_rpm, places=6)
+                    self.assertAlmostEqual(feeds(tc)[1], expected.horiz_feed, places=3)
+                    self.assertLessEqual(tc.SpindleSpeed, 18000 * (1 + 1e-9))
+                    if abs(tc.SpindleSpeed - min(n, 18000)) > 1e-6:
+                        moved.add(tag)
+            self.assertTrue(moved, "the optimiser moved some spindle speed off the knowledge base's n")
+            # The paths were computed at those feeds: the first cutting move's F is the controller's.
+            job = chain.Jobs[0]
+            op = [o for o in pathcompat.tooled_operations(job) if not pathcompat.is_hole_operation(o)][0]
+            tc = pathcompat.tool_controller_of(op)
+            fs = [c.Parameters["F"] for c in op.Path.Commands if c.Name in ("G1", "G01") and "F" in c.Parameters]
+            self.assertTrue(fs)
+            self.assertAlmostEqual(max(fs) * 60.0, max(feeds(tc)[1:]), places=3)
+
+            # Optimised again from its operations: the cut comes from the paths.
+            proposals = co.propose(job, kb_path=kb_path)
+            used = [p for p in proposals if p.ok and p.cuts]
+            self.assertTrue(used)
+            before = {p.tc.Name: feeds(p.tc) for p in proposals}
             co.apply(proposals)
-            changed = [p for p in milled if abs(feeds(p.tc)[0] - before[p.tc.Name][0]) > 1e-6]
-            self.assertTrue(changed, "the optimiser changed at least one spindle speed")
+            self.assertTrue([p for p in used if abs(feeds(p.tc)[0] - before[p.tc.Name][0]) > 1e-6])
             doc.undo()
-            for p in ours:
+            for p in proposals:
                 self.assertEqual(feeds(p.tc), before[p.tc.Name])
         finally:
             FreeCAD.closeDocument(doc.Name)

@@ -1,5 +1,5 @@
-"""Select tools on a Machining Features tree, headless: element properties, ToolControllers
-in the part's Job with the knowledge base's speeds and feeds, one undo step, save/reopen,
+"""Select tools on a Machining Features tree, headless: element properties, the plan with the
+knowledge base's speeds and feeds on the group (no Path Job made), one undo step, save/reopen,
 bad input leaving the document as it was; planning from the stored tree, with the plan the
 command line makes from the part; and the FreeCAD tool library round trip."""
 import contextlib
@@ -18,7 +18,6 @@ import Part
 import aeronc
 from aeronc import _core, makers, pathcompat
 from aeronc.pipeline import knowledge_base, recognition, tool_planning
-from aeronc.objects import machining_features
 from aeronc.tests import pathcompat as test_pathcompat
 from aeronc.tests.app.support import make_panel_object, new_document, temp_fcstd
 
@@ -39,8 +38,8 @@ class SelectToolsTest(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
         shutil.rmtree(self.tmp, ignore_errors=True)
 
-    def test_tools_recorded_and_tool_controllers_made(self):
-        plan, job, tcs = tool_planning.select_tools(self.group, "7050-T7451", kb_path=self.kb_path)
+    def test_tools_and_plan_recorded_without_a_job(self):
+        plan = tool_planning.select_tools(self.group, "7050-T7451", kb_path=self.kb_path)
         kb = knowledge_base.open_kb(self.kb_path)
         pockets = [o for o in self.doc.Objects if getattr(o, "ElementType", "") == "closed_pocket"]
         self.assertEqual(len(pockets), 2)
@@ -52,35 +51,28 @@ class SelectToolsTest(unittest.TestCase):
             self.assertEqual(p.ToolError, "")
         self.assertEqual(self.group.Material, "7050-T7451")
         self.assertEqual(self.group.ToolChangesAfter, plan["toolChanges"]["after"])
+        self.assertEqual(json.loads(self.group.ToolPlan), plan)
 
-        # The part had no Job: one was made, holding a controller per tool and operation.
-        self.assertTrue(pathcompat.is_job(job))
-        self.assertEqual(pathcompat.jobs_of_part(self.doc, self.part), [job])
-        ours = [tc for tc in pathcompat.tool_controllers(job) if hasattr(tc, tool_planning.TC_TAG)]
-        self.assertEqual(sorted(tc.AeroNCTool for tc in ours),
-                         sorted("{}/{}".format(s["tool"], s["operation"]) for s in plan["toolSettings"]))
+        # The plan goes to the machining chain through the group: no Job, no ToolController here.
+        self.assertEqual(pathcompat.jobs_of_part(self.doc, self.part), [])
+        self.assertFalse([o for o in self.doc.Objects if hasattr(o, tool_planning.TC_TAG)])
         machine = kb.machine_names()[0]
-        for tc in ours:
-            tool_id, op = tc.AeroNCTool.split("/")
-            t = [x for x in kb.tools() if x["id"] == tool_id][0]
-            cc = kb.cutting_condition("7050-T7451", t["material"], op, t["diameter"])
+        self.assertTrue(plan["toolSettings"])
+        for s in plan["toolSettings"]:
+            t = [x for x in kb.tools() if x["id"] == s["tool"]][0]
+            cc = kb.cutting_condition("7050-T7451", t["material"], s["operation"], t["diameter"])
             # By hand: n = 1000 v_c / (pi D) capped by the machine, feed = f_z Z n.
             n = 1000 * cc["vc"] / (math.pi * t["diameter"])
             n = min(n, {"AC-5AX": 18000, "XA5032": 1800}[machine])
-            self.assertAlmostEqual(tc.SpindleSpeed, n, places=6)
-            self.assertAlmostEqual(tc.HorizFeed.getValueAs("mm/min").Value, cc["fz"] * t["flutes"] * n, places=3)
-            ratio = 1.0 if op == "drilling" else kb.threshold("plunge_feed_ratio")
-            self.assertAlmostEqual(tc.VertFeed.getValueAs("mm/min").Value, cc["fz"] * t["flutes"] * n * ratio,
-                                   places=3)
-            self.assertAlmostEqual(tc.Tool.Diameter.Value, t["diameter"], places=4)
-            # The bit's attributes are kept too (FreeCAD 0.20's factory drops them).
-            self.assertEqual(tc.Tool.Flutes, t["flutes"])
-            self.assertEqual(tc.Tool.Material.lower(), t["material"].lower())
+            self.assertAlmostEqual(s["spindleRpm"], n, places=6)
+            self.assertAlmostEqual(s["feedMmMin"], cc["fz"] * t["flutes"] * n, places=3)
+            ratio = 1.0 if s["operation"] == "drilling" else kb.threshold("plunge_feed_ratio")
+            self.assertAlmostEqual(s["plungeFeedMmMin"], cc["fz"] * t["flutes"] * n * ratio, places=3)
 
-        # Again: the same controllers, updated, not duplicated.
-        count = len(pathcompat.tool_controllers(job))
-        tool_planning.select_tools(self.group, "7050-T7451", kb_path=self.kb_path)
-        self.assertEqual(len(pathcompat.tool_controllers(job)), count)
+        # Again: the same plan, still no Job.
+        count = len(self.doc.Objects)
+        self.assertEqual(tool_planning.select_tools(self.group, "7050-T7451", kb_path=self.kb_path), plan)
+        self.assertEqual(len(self.doc.Objects), count)
 
         # Saved and reopened, the plan is still there.
         path = temp_fcstd("select_tools")
@@ -90,14 +82,18 @@ class SelectToolsTest(unittest.TestCase):
         self.doc = FreeCAD.openDocument(path)
         again = [o for o in self.doc.Objects if getattr(o, "ElementType", "") == "closed_pocket"]
         self.assertEqual(sorted(o.RoughingTool for o in again), tools)
-        self.assertEqual(len([o for o in self.doc.Objects if hasattr(o, tool_planning.TC_TAG)]), len(ours))
+        group = [o for o in self.doc.Objects if hasattr(o, "ToolPlan")][0]
+        self.assertEqual(json.loads(group.ToolPlan), plan)
 
     def test_one_undo_step(self):
         before = set(o.Name for o in self.doc.Objects)
         tool_planning.select_tools(self.group, "7050-T7451", kb_path=self.kb_path)
-        self.assertGreater(len(self.doc.Objects), len(before))
+        self.assertTrue(self.group.ToolPlan)
+        self.assertTrue(any(getattr(o, "RoughingTool", "") for o in self.doc.Objects))
         self.doc.undo()
         self.assertEqual(set(o.Name for o in self.doc.Objects), before)
+        self.assertEqual((self.group.Material, self.group.ToolPlan), ("", ""))
+        self.assertFalse(any(getattr(o, "RoughingTool", "") for o in self.doc.Objects))
 
     def test_bad_input_leaves_the_document_as_it_was(self):
         before = set(o.Name for o in self.doc.Objects)
@@ -167,13 +163,12 @@ class PlanFromStoredTreeTest(unittest.TestCase):
         self.doc.recompute()
         group = makers.create_machining_features(self.doc, part, directions=directions)
         with recognition_unavailable():
-            plan, job, tcs = tool_planning.select_tools(group, self.MATERIAL, machine=self.MACHINE,
-                                                        kb_path=self.kb_path)
-        # Not an empty plan: elements with tools, ToolControllers made.
+            plan = tool_planning.select_tools(group, self.MATERIAL, machine=self.MACHINE, kb_path=self.kb_path)
+        # Not an empty plan: elements with tools, a setting per tool and operation.
         self.assertGreaterEqual(len(plan["elements"]) + len(plan["holes"]), 10)
         self.assertGreater(sum(1 for e in plan["elements"] if e["roughingTool"]), 0)
         self.assertEqual(len(plan["elements"]) + len(plan["holes"]), group.ElementCount)
-        self.assertTrue(tcs)
+        self.assertTrue(plan["toolSettings"])
 
         # The command line's part form recognises the same shape itself and plans the same.
         brep = os.path.join(self.tmp, "part.brep")

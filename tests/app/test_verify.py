@@ -145,6 +145,15 @@ class PartBoxTest(unittest.TestCase):
         for got, want in zip(box, (-7, -6, 1, 13, 14, 6)):
             self.assertAlmostEqual(got, want, delta=2e-6)
 
+    def test_an_arc_on_a_side_plane_still_bounds_the_other_axes(self):
+        """A cylinder lying along X: its circles stand in the planes x = 0 and x = 5, sides of
+        the box, where x never varies; their y and z extremes still need the fine walk."""
+        from aeronc.pipeline import setup_job
+        shape = Part.makeCylinder(10, 5, FreeCAD.Vector(0, 2, 3), FreeCAD.Vector(1, 0, 0))
+        box = setup_job.part_box(shape)
+        for got, want in zip(box, (0, -8, -7, 5, 12, 13)):
+            self.assertAlmostEqual(got, want, delta=2e-6)
+
     @unittest.skipUnless(os.path.isfile(os.path.join(SHARED, "nist", "nist_ftc_10_asme1_rb.stp")),
                          "no NIST parts in AERONC_SHARED_DATA")
     def test_nist_ftc_10_gets_its_drawn_size(self):

@@ -4,7 +4,7 @@
 
 File > Import of NIST CTC-04 (FreeCAD's Import module, as the GUI's import does) gives one
 object whose shape is the solid plus free faces. Recognise it, Select tools on the new Machining
-Features, Optimise the Job's cutting parameters: no step refuses, and the faces of the result are
+Features, build its machining chain, Optimise a chain Job's cutting parameters: no step refuses, and the faces of the result are
 the object's own. Needs the NIST parts in env AERONC_SHARED_DATA. Prints "N passed, N failed";
 exits 0 when all checks pass.
 """
@@ -127,12 +127,16 @@ def run():
           panel.table.horizontalScrollBar().maximum())
     check("Close pressed", click_ok(QtGui.QDialogButtonBox.Close))
     pump()
-    jobs = pathcompat.jobs_of_part(doc, part)
-    check("a Job for the part", len(jobs) == 1, len(jobs))
+    check("Select tools makes no Job (the machining chain does)", not pathcompat.jobs_of_part(doc, part),
+          [j.Label for j in pathcompat.jobs_of_part(doc, part)])
+    from aeronc.pipeline import chain_building
+    chain = chain_building.build(group, "integral_panel", group.Material, group.Machine)
+    jobs = list(chain.Jobs)
+    check("the machining chain's Jobs", jobs, chain.Messages)
     if not jobs:
         return
 
-    # Optimise the Job's cutting parameters.
+    # Optimise a chain Job's cutting parameters from its operations.
     Gui.Selection.clearSelection()
     Gui.Selection.addSelection(jobs[0])
     pump()
