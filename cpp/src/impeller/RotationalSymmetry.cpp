@@ -320,8 +320,8 @@ RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceG
     if (g.size() == 0) return out;
     double total = 0;
     for (int f = 1; f <= g.size(); ++f) total += std::max(g[f].area, 0.0);
-    // About 2500 samples over the boundary.
-    const SampleCloud cloud(g, std::max(std::sqrt(total / 2500), tol));
+    // About 1200 samples over the boundary.
+    const SampleCloud cloud(g, std::max(std::sqrt(total / 1200), tol));
 
     // The axis with the largest order; on each, only the faces not of revolution about it tell.
     auto tryAxes = [&](const std::vector<gp_Ax1>& axes) {
