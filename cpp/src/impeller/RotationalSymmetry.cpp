@@ -297,8 +297,9 @@ int orderAbout(const SampleCloud& cloud, const std::vector<int>& samples, const 
         int misses = 0, tried = 0;
         for (int i : samples) {
             if (!cloud.faceAt(cloud.samples()[i].p.Transformed(t), tol)) ++misses;
-            // A wrong N misses most samples: settle it on the first 30 (a right one misses few).
-            if (misses > allowed || (++tried == 30 && misses > 6)) {
+            // A wrong N misses most samples: settle it on the first 30 (a right one misses few),
+            // and as soon as 7 of those have missed (the later ones would not change that).
+            if (misses > allowed || (++tried <= 30 && misses > 6)) {
                 misses = allowed + 1;
                 break;
             }
