@@ -198,7 +198,12 @@ def main(argv):
                    help="the machine for a part beyond the first one's travel ('none': no second run)")
     a.add_argument("--no-pictures", action="store_true", help="skip the main job's pictures (the ctest: time)")
     a.add_argument("--check", action="store_true", help="exit 1 on a gouge or colliding rapid in a delivered program")
+    a.add_argument("--crib", default="",
+                   help="the user's own tool crib in place of the shipped one: a knowledge-base file or a FreeCAD "
+                        ".fctl library (docs/tool-crib.md)")
     args = a.parse_args(argv)
+    if args.crib:
+        os.environ["AERONC_CRIB"] = os.path.abspath(args.crib)  # run_part passes the environment on
     parts = parts_of(args.data, args.mfcad, [p for p in args.parts.split(",") if p])
     if not parts:
         print("corpus: no STEP part under {}".format(args.data), file=sys.stderr)

@@ -10,7 +10,8 @@ by LinuxCNC's interpreter and simulated against the blank -> pictures and report
 AERONC_OUT (see aeronc/runs/main_job.py for the list). AERONC_PART=<file.step> runs the same on
 another part; AERONC_MATERIAL, AERONC_MACHINE, AERONC_FAMILY and AERONC_CELL (the verification's
 cell size, mm) change the defaults (7050-T7451, the smallest machine whose travel holds every setup,
-integral_panel, 0.5); AERONC_PICTURES=0 skips the pictures (the corpus test). Exit code 0 on success, 1 with the failed stage named.
+integral_panel, 0.5); AERONC_PICTURES=0 skips the pictures (the corpus test); AERONC_CRIB=<file> runs
+with the user's own tool crib (a knowledge-base file or a FreeCAD .fctl library, docs/tool-crib.md). Exit code 0 on success, 1 with the failed stage named.
 """
 import os
 
@@ -36,7 +37,8 @@ def main():
                      material=os.environ.get("AERONC_MATERIAL", "7050-T7451"),
                      machine=os.environ.get("AERONC_MACHINE") or None,
                      family=os.environ.get("AERONC_FAMILY", "integral_panel"),
-                     cell_size=cell, pictures=os.environ.get("AERONC_PICTURES", "1") != "0")
+                     cell_size=cell, pictures=os.environ.get("AERONC_PICTURES", "1") != "0",
+                     crib=os.environ.get("AERONC_CRIB") or None)
     except AeroNCError as e:  # a stage failed for a reason the user can act on: one line, no traceback
         print("main job failed: {}".format(e), file=sys.stderr)
         sys.stderr.flush()

@@ -213,6 +213,19 @@ def _tag(tc):
     return tag.split("/", 1) if "/" in tag else None
 
 
+def long_reach_fz_factor(kb, tool_id):
+    """The knowledge base's f_z reduction for a necked tool reaching more than long_reach_ratio
+    diameters (kb::LongReach, docs/tool-crib.md); 1 for any other tool or without the thresholds."""
+    tool = next((t for t in kb.tools() if t["id"] == tool_id), None)
+    if not tool or not tool.get("neckDiameter"):
+        return 1.0
+    try:
+        ratio, factor = kb.threshold("long_reach_ratio"), kb.threshold("long_reach_fz_factor")
+    except RuntimeError:  # a knowledge base without them reduces nothing
+        return 1.0
+    return factor if tool["reach"] > ratio * tool["diameter"] + 1e-9 else 1.0
+
+
 def _features_groups_of(job):
     """The AeroNC Machining Features groups whose part is a model of job."""
     from aeronc.objects import machining_features
@@ -285,6 +298,10 @@ def propose_one(tc, ops, kb, material, machine, method="nlopt", ra_max=None, eco
         if chip_load <= 0:
             chip_load = CHIP_LOAD_FACTOR * condition["fz"]
             chip_note = "{:g} x the knowledge base's f_z".format(CHIP_LOAD_FACTOR)
+            reduce = long_reach_fz_factor(kb, tag[0]) if tag else 1.0
+            if reduce != 1.0:
+                chip_load *= reduce
+                chip_note += ", x {:g} for the long reach".format(reduce)
         if ops:
             prop.cuts = [operation_cut(op, d, condition["aeRatio"]) for op in ops]
             # One set of speeds serves every operation: force and power grow with a_p and a_e,

@@ -38,6 +38,39 @@ def open_kb(kb_path=None):
         return _core.KnowledgeBase(path, sql_folder())
 
 
+def use_crib(kb_path, crib):
+    """Make kb_path (a file that does not exist yet) the knowledge base of the user's own tool crib
+    (docs/tool-crib.md), in place of the shipped one:
+      a knowledge-base file (.sqlite)   a copy of it, migrated if older; the user's file is not written;
+      a FreeCAD tool library (.fctl)    the shipped knowledge base (machines, materials, cutting data,
+                                        templates) with its tools replaced by the library's bits.
+    Returns the open KnowledgeBase. Raises KnowledgeBaseError naming the file when it is missing or
+    is no knowledge base or library."""
+    import shutil
+    if not crib or not os.path.isfile(crib):
+        raise KnowledgeBaseError("the tool crib {!r} is not a file (give a knowledge-base file or a FreeCAD "
+                                 "tool library, .fctl)".format(crib))
+    if os.path.exists(kb_path):
+        raise KnowledgeBaseError("the knowledge base {!r} exists already: a crib is only put in a new one"
+                                 .format(kb_path))
+    if crib.lower().endswith(".fctl"):
+        kb = open_kb(kb_path)
+        with from_core(KnowledgeBaseError, "the tool crib {!r}".format(crib)):
+            for table in ("tool", "edge_tool"):
+                rows = kb.table(table)["rowIds"]
+                if rows:
+                    kb.edit_table(table, deletes=rows)
+            kb.import_freecad_library(crib)
+        return kb
+    tmp = kb_path + ".copying"
+    shutil.copyfile(crib, tmp)
+    os.replace(tmp, kb_path)
+    try:
+        return open_kb(kb_path)
+    except KnowledgeBaseError as e:
+        raise KnowledgeBaseError("the tool crib {!r}: {}".format(crib, e)) from None
+
+
 def plan_tools(tree, material, machine="", kb_path=None):
     """Plan finishing and roughing tools, drills and merged tool groups for a recognised
     machining-domain tree from the knowledge base at kb_path (default: the user's).

@@ -136,8 +136,9 @@ def check_machine_travel(job):
 def select_tools(job):
     from aeronc.pipeline import tool_planning
     plan = tool_planning.select_tools(job.group, job.material, job.machine, job.kb_path)
-    return "{} tools and cutting operations planned; roughing tool changes {} -> {}".format(
-        len(plan.get("toolSettings", [])), plan["toolChanges"]["before"], plan["toolChanges"]["after"])
+    crib = " (the crib of {})".format(os.path.basename(job.data["crib"])) if job.data.get("crib") else ""
+    return "{} tools and cutting operations planned{}; roughing tool changes {} -> {}".format(
+        len(plan.get("toolSettings", [])), crib, plan["toolChanges"]["before"], plan["toolChanges"]["after"])
 
 
 def machining_chain(job):
@@ -406,20 +407,26 @@ STAGES = (("read part", read_part), ("recognise", recognise), ("machine", choose
 
 
 def run(part_path, out, material="7050-T7451", machine=None, family="integral_panel", cell_size=0.5,
-        say=None, pictures=True):
+        say=None, pictures=True, crib=None):
     """Run the main job on a STEP (or BREP) part; returns the report's data (dict), whose
     "verdict" says whether the programs are ready. Raises RunError (MainJobError) naming the
     stage that failed, or saying that no program could be delivered; report.html and run.json
     are written in either case, and no program is left that the gate did not pass.
     machine: a machine of the knowledge base, or None (or "auto") for the smallest whose travel
     holds every setup; report.html and run.json name it and say why. say(line) receives the progress lines; by default they go to the terminal while FreeCAD's
-    own output goes to freecad.log. pictures=False skips the pictures (a corpus run's time)."""
+    own output goes to freecad.log. pictures=False skips the pictures (a corpus run's time).
+    crib: the user's own tool crib in place of the shipped one, a knowledge-base file or a FreeCAD
+    tool library (.fctl; knowledge_base.use_crib); the run works on a copy in its folder."""
     import shutil
     import tempfile
     run_ = Run(out, say)
     job = MainJob(run_, part_path, material, machine, family, cell_size)
     if os.path.exists(job.kb_path):  # left by a failed run: this run starts from the shipped knowledge base
         os.unlink(job.kb_path)
+    if crib:
+        from aeronc.pipeline import knowledge_base
+        knowledge_base.use_crib(job.kb_path, crib)
+        job.data["crib"] = os.path.abspath(crib)
     (say or print)("AeroNC main job: {} ({} on {}, {}) -> {}".format(
         part_path, material, job.named or "the smallest machine that holds it", family, run_.out))
     job.work = tempfile.mkdtemp(prefix="aeronc_main_job_")
@@ -473,7 +480,7 @@ def run_summary(data):
     left = data.get("materialLeft") or []
     areas = [e["area"] for e in left if e.get("area") is not None]
     thick = [e["maxLeft"] for e in left if e.get("maxLeft") is not None]
-    return {"part": data.get("part"), "source": data.get("source"),
+    return {"part": data.get("part"), "source": data.get("source"), "crib": data.get("crib"),
             "machine": {k: v for k, v in (data.get("machine") or {}).items() if k in ("name", "why")},
             "verdict": data.get("verdict"), "failed": data.get("failed"),
             "elements": len(recognition.get("elements", [])),

@@ -22,6 +22,7 @@ py::dict toolDict(const toolselect::Tool& t) {
     d["cornerRadius"] = t.cornerRadius;
     d["fluteLength"] = t.fluteLength;
     d["reach"] = t.reach;
+    d["neckDiameter"] = t.neckDiameter;
     d["flutes"] = t.flutes;
     return d;
 }

@@ -15,7 +15,10 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <random>
+#include <set>
+#include <tuple>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -28,8 +31,20 @@ using aeronc::test::inputErrorOf;
 namespace {
 
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
-// 2 inch jobber drills.
-constexpr std::size_t kShippedTools = 60;
+// 2 inch jobber drills, and the 30 small, necked and long-reach end mills of the shop crib.
+constexpr std::size_t kShippedTools = 90;
+// The crib's tools added by schema version 6 (docs/tool-crib.md).
+constexpr std::size_t kCribTools = 30;
+
+// What schema version 6 added to a new file (docs/tool-crib.md), removed again: the layout and
+// rows of a version-5 file, from which a test makes the older ones.
+constexpr const char* kWithoutVersion6 = R"sql(
+        DELETE FROM tool WHERE neck_diameter IS NOT NULL OR id = 'EM-BALL16';
+        DELETE FROM cutting_condition WHERE d_min IN (0, 1);
+        DELETE FROM threshold WHERE name LIKE 'long_reach_%' OR name = 'allowance_max_ratio';
+        DROP TABLE edge_tool;
+        ALTER TABLE tool DROP COLUMN neck_diameter;
+)sql";
 
 const std::string& schemaSql() {
     static const std::string s = aeronc::readTextFile(AERONC_RESOURCES "/kb/schema.sql", "schema");
@@ -603,6 +618,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionTwoKeepingUserRows) {
 TEST_F(KnowledgeBaseTest, MigratesVersionThreeAddingTheImpellerTables) {
     const fs::path p = file();
     { openDefault(p); }
+    rawExec(p, kWithoutVersion6);
     rawExec(p, R"sql(
         DROP TABLE impeller_route_step;
         DROP TABLE tapered_ball_tool;
@@ -632,6 +648,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionThreeAddingTheImpellerTables) {
 TEST_F(KnowledgeBaseTest, MigratesVersionFourAddingTheGantry) {
     const fs::path p = file();
     { openDefault(p); }
+    rawExec(p, kWithoutVersion6);
     rawExec(p, R"sql(
         DELETE FROM machine WHERE name = 'AC-GANTRY';
         UPDATE schema_version SET version = 4;
@@ -656,4 +673,125 @@ TEST_F(KnowledgeBaseTest, MigratesVersionFourAddingTheGantry) {
     EXPECT_DOUBLE_EQ(gantry.maxSpindleRpm, made.maxSpindleRpm);
     EXPECT_EQ(gantry.aMin, made.aMin);
     EXPECT_EQ(gantry.cMax, made.cMax);
+}
+
+// Version 5 had no necks, no edge tools and no small or long-reach end mills: the migration adds
+// the crib as a new file has it to a file that carries the shipped crib, keeping the user's rows
+// (a tool and an edited cutting condition of theirs).
+TEST_F(KnowledgeBaseTest, MigratesVersionFiveAddingTheShopCrib) {
+    const fs::path p = file();
+    { openDefault(p); }
+    rawExec(p, kWithoutVersion6);
+    rawExec(p, R"sql(
+        UPDATE schema_version SET version = 5;
+        INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach)
+            VALUES ('SHOP-F5', 'flat', 'carbide', 5, 0, 3, 12, 30);
+        UPDATE cutting_condition SET vc_m_min = 700 WHERE workpiece_material = '7050-T7451'
+            AND tool_material = 'carbide' AND operation = 'finishing';
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    EXPECT_TRUE(fs::exists(p.string() + ".v5.bak"));
+    const auto tools = kb.tools();
+    EXPECT_EQ(tools.size(), kShippedTools + 1);
+    const auto shop = std::find_if(tools.begin(), tools.end(), [](const Tool& t) { return t.id == "SHOP-F5"; });
+    ASSERT_NE(shop, tools.end());
+    EXPECT_FALSE(shop->necked());
+    EXPECT_DOUBLE_EQ(shop->usableLength(), 12);  // no neck: its flutes limit it
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "finishing", 10.0).vc, 700);
+    KnowledgeBase shipped = openDefault(dir_ / "fresh.sqlite");
+    for (const char* table : {"edge_tool", "threshold"}) {
+        SCOPED_TRACE(table);
+        const auto migrated = kb.table(table), made = shipped.table(table);
+        EXPECT_FALSE(made.rows.empty());
+        EXPECT_EQ(migrated.rows, made.rows);
+    }
+    for (const Tool& t : shipped.tools()) {
+        const auto m = std::find_if(tools.begin(), tools.end(), [&](const Tool& x) { return x.id == t.id; });
+        ASSERT_NE(m, tools.end()) << t.id;
+        EXPECT_DOUBLE_EQ(m->neckDiameter, t.neckDiameter) << t.id;
+        EXPECT_DOUBLE_EQ(m->reach, t.reach) << t.id;
+        EXPECT_DOUBLE_EQ(m->fluteLength, t.fluteLength) << t.id;
+    }
+    for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+        for (const std::string op : {"roughing", "finishing"})
+            for (double d : {0.5, 1.5}) {
+                const auto a = kb.cuttingCondition(m, "carbide", op, d), b = shipped.cuttingCondition(m, "carbide", op, d);
+                EXPECT_DOUBLE_EQ(a.fz, b.fz) << m << " " << op << " " << d;
+                EXPECT_DOUBLE_EQ(a.ap, b.ap) << m << " " << op << " " << d;
+            }
+}
+
+// A user's own crib (a version-5 file holding none of the shipped end mills) stays theirs: the
+// migration adds the columns and tables but no tool and no cutting data of the shipped crib.
+TEST_F(KnowledgeBaseTest, MigratingAUsersOwnCribAddsNoShippedTools) {
+    const fs::path p = file();
+    { openDefault(p); }
+    rawExec(p, kWithoutVersion6);
+    rawExec(p, R"sql(
+        DELETE FROM tool;
+        UPDATE schema_version SET version = 5;
+        INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach)
+            VALUES ('MY-F10', 'flat', 'carbide', 10, 0, 3, 25, 40), ('MY-F4', 'flat', 'carbide', 4, 0, 3, 10, 20);
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    const auto tools = kb.tools();
+    ASSERT_EQ(tools.size(), 2u);
+    EXPECT_EQ(tools[0].id, "MY-F10");
+    EXPECT_EQ(tools[1].id, "MY-F4");
+    EXPECT_TRUE(kb.table("edge_tool").rows.empty());
+    // Its cutting data are its own: no small-tool row was added beside them.
+    EXPECT_DOUBLE_EQ(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 0.5).fz, 0.04);
+    EXPECT_TRUE(kb.findThreshold("long_reach_ratio").has_value());
+}
+
+// The shop crib as shipped: the catalogue sizes, necks below the cutter, reach beyond the flutes
+// on the necked tools, edge tools, and small-tool cutting data below the standard rows.
+TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
+    KnowledgeBase kb = openDefault(file());
+    std::map<std::string, Tool> byId;
+    for (const Tool& t : kb.tools()) byId[t.id] = t;
+    std::size_t necked = 0;
+    for (const auto& [id, t] : byId)
+        if (t.necked()) {
+            ++necked;
+            EXPECT_LT(t.neckDiameter, t.diameter) << id;
+            EXPECT_GT(t.reach, t.fluteLength) << id;
+            EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
+            EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
+        }
+    EXPECT_EQ(necked, kCribTools - 1);  // all but EM-BALL16
+    for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
+        EXPECT_TRUE(byId.count(id)) << id;
+    // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.
+    for (const auto& [flat, bull, d, reach] : std::vector<std::tuple<const char*, const char*, double, double>>{
+             {"EM-F6x30", "EM-B6R1x30", 6, 30}, {"EM-F8x40", "EM-B8R1x40", 8, 40},
+             {"EM-F10x50", "EM-B10R1x50", 10, 50}, {"EM-F12x60", "EM-B12R2x60", 12, 60}}) {
+        for (const char* id : {flat, bull}) {
+            ASSERT_TRUE(byId.count(id)) << id;
+            EXPECT_DOUBLE_EQ(byId[id].diameter, d) << id;
+            EXPECT_DOUBLE_EQ(byId[id].usableLength(), reach) << id;
+        }
+        EXPECT_EQ(byId[flat].type, "flat");
+        EXPECT_EQ(byId[bull].type, "bull");
+    }
+    const auto edge = kb.table("edge_tool");
+    std::set<double> angles, radii;
+    for (const auto& row : edge.rows) {
+        if (*row[1] == "chamfer") angles.insert(std::stod(*row[5]));
+        else radii.insert(std::stod(*row[6]));
+    }
+    EXPECT_EQ(angles, (std::set<double>{45, 90}));
+    EXPECT_EQ(radii, (std::set<double>{1, 2, 3, 4, 5}));
+    // Every material has small-tool data, thinner chips and layers than at 6 mm.
+    for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+        for (const std::string op : {"roughing", "finishing"}) {
+            const auto small = kb.cuttingCondition(m, "carbide", op, 0.5);
+            const auto one = kb.cuttingCondition(m, "carbide", op, 1.0);
+            const auto six = kb.cuttingCondition(m, "carbide", op, 6.0);
+            EXPECT_LT(small.fz, one.fz) << m << " " << op;
+            EXPECT_LT(one.fz, six.fz) << m << " " << op;
+            EXPECT_LT(one.ap, six.ap) << m << " " << op;
+        }
 }

@@ -275,3 +275,21 @@ TEST(ToolSelectionTest, MergeFollowsMuRule) {
         EXPECT_EQ(mergeGroups(groups, shortTools, 0.7, of).size(), 2u);
     }
 }
+
+// A necked tool's relieved neck clears the wall it finished: it cuts as deep as its reach. A tool
+// without a neck is as wide as the cutter behind its flutes: its flutes limit the depth.
+TEST(ToolSelectionTest, ANeckedToolReachesPastItsFlutes) {
+    Tool standard = endMill("F6", 6, 0, 13, 20);
+    Tool necked = endMill("F6x30", 6, 0, 9, 30);
+    necked.neckDiameter = 5.7;
+    EXPECT_NO_THROW(necked.validate());
+    EXPECT_DOUBLE_EQ(standard.usableLength(), 13);
+    EXPECT_DOUBLE_EQ(necked.usableLength(), 30);
+    EXPECT_DOUBLE_EQ(necked.passHeight(), 9);
+    PocketGeometry p = pocket(rect(0, 0, 50, 50), 28, "deep");
+    p.minCornerRadius = 3;
+    EXPECT_EQ(finishingTool(p, {standard, necked})->id, "F6x30");
+    EXPECT_THROW(finishingTool(p, {standard}), aeronc::Error);
+    necked.neckDiameter = 6;  // not below the cutter: no neck
+    EXPECT_THROW(necked.validate(), aeronc::Error);
+}

@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 5 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 6 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -14,6 +14,10 @@
 --     60 kW; the main job takes it for parts whose setups leave the table machines' travel.
 --   * Tool lengths follow the usual short/standard end-mill series (assumed), costs are
 --     indicative list prices (assumed).
+--   * The shop crib of schema version 6 (small, long-reach and necked end mills, ball mills,
+--     chamfer and corner-rounding mills, small-tool cutting data, long-reach reductions) follows
+--     the ranges of the usual carbide catalogues; docs/tool-crib.md gives them. The same rows are
+--     seeded by the migration from schema version 5 (migrations/v5_to_v6.sql).
 --   * The jobber drill series follows the diameter steps and the flute and overall lengths
 --     of DIN 338 / ISO 235 jobber drills up to 20 mm (22 mm: jobber length extrapolated,
 --     assumed); reach (the length out of the chuck) is assumed as the flute length plus a
@@ -88,6 +92,57 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('DR-8.5',    'drill', 'carbide', 8.5,   0,   2,  43, 103,  55,  60),
   ('DR-10.2',   'drill', 'carbide',10.2,   0,   2,  47, 118,  60,  75),
   ('FM-125',    'face',  'carbide', 125,   1,   4,   6,  63,  63, 450);
+
+-- The shop crib (docs/tool-crib.md): small, necked and long-reach end mills, ball mills.
+-- neck_diameter: the relieved neck behind the flutes; such a tool cuts down to its reach.
+INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost, neck_diameter) VALUES
+-- Small end mills (carbide, 2 flutes): a neck a little below the cutter behind short flutes,
+-- on a 3 or 4 mm shank (micro end mill series: flutes 1.5-2 x D, neck 5-10 x D).
+  ('EM-F0.5',    'flat', 'carbide', 0.5,   0,  2,  1.0,  38,   3,  28, 0.46),
+  ('EM-F0.8',    'flat', 'carbide', 0.8,   0,  2,  1.6,  38,   4,  28, 0.75),
+  ('EM-F1',      'flat', 'carbide',   1,   0,  2,  2.0,  38,   5,  24, 0.95),
+  ('EM-F1x10',   'flat', 'carbide',   1,   0,  2,  2.0,  50,  10,  32, 0.95),
+  ('EM-F1.5',    'flat', 'carbide', 1.5,   0,  2,  3.0,  38,   8,  24, 1.4),
+  ('EM-F2x12',   'flat', 'carbide',   2,   0,  2,  3.0,  50,  12,  30, 1.9),
+  ('EM-F2.5',    'flat', 'carbide', 2.5,   0,  2,  4.0,  50,  12,  26, 2.4),
+  ('EM-F3x15',   'flat', 'carbide',   3,   0,  3,  4.5,  57,  15,  34, 2.85),
+  ('EM-B1R0.2',  'bull', 'carbide',   1, 0.2,  2,  2.0,  38,   5,  28, 0.95),
+  ('EM-B2R0.5',  'bull', 'carbide',   2, 0.5,  2,  3.0,  50,  10,  30, 1.9),
+  ('EM-BALL0.5', 'ball', 'carbide', 0.5, 0.25, 2,  0.8,  38,   3,  32, 0.46),
+  ('EM-BALL1',   'ball', 'carbide',   1, 0.5,  2,  1.5,  38,   5,  26, 0.95),
+  ('EM-BALL3',   'ball', 'carbide',   3, 1.5,  2,  5.0,  57,  15,  30, 2.85),
+-- Long-reach (necked) end mills, flat and bull-nose: flutes 1.5 x D, reach 5 x D.
+  ('EM-F4x20',   'flat', 'carbide',   4,   0,  3,  6.0,  75,  20,  45, 3.8),
+  ('EM-F6x30',   'flat', 'carbide',   6,   0,  3,  9.0,  90,  30,  58, 5.7),
+  ('EM-F8x40',   'flat', 'carbide',   8,   0,  3, 12.0, 100,  40,  78, 7.6),
+  ('EM-F10x50',  'flat', 'carbide',  10,   0,  3, 15.0, 110,  50, 105, 9.5),
+  ('EM-F12x60',  'flat', 'carbide',  12,   0,  3, 18.0, 125,  60, 135, 11.5),
+  ('EM-B6R0.5x30','bull','carbide',   6, 0.5,  4,  9.0,  90,  30,  62, 5.7),
+  ('EM-B6R1x30', 'bull', 'carbide',   6,   1,  4,  9.0,  90,  30,  62, 5.7),
+  ('EM-B8R1x40', 'bull', 'carbide',   8,   1,  4, 12.0, 100,  40,  84, 7.6),
+  ('EM-B10R1x50','bull', 'carbide',  10,   1,  4, 15.0, 110,  50, 112, 9.5),
+  ('EM-B10R2x50','bull', 'carbide',  10,   2,  4, 15.0, 110,  50, 112, 9.5),
+  ('EM-B12R2x60','bull', 'carbide',  12,   2,  4, 18.0, 125,  60, 145, 11.5),
+  ('EM-B12R3x60','bull', 'carbide',  12,   3,  4, 18.0, 125,  60, 145, 11.5),
+-- Ball end mills for 3-D faces: a larger standard one and long-reach ones.
+  ('EM-BALL16',  'ball', 'carbide',  16,   8,  2, 32.0,  92,  45,  95, NULL),
+  ('EM-BALL4x20','ball', 'carbide',   4,   2,  2,  6.0,  75,  20,  48, 3.8),
+  ('EM-BALL6x30','ball', 'carbide',   6,   3,  2,  9.0,  90,  30,  60, 5.7),
+  ('EM-BALL8x40','ball', 'carbide',   8,   4,  2, 12.0, 100,  40,  80, 7.6),
+  ('EM-BALL10x50','ball','carbide',  10,   5,  2, 15.0, 110,  50, 108, 9.5);
+
+-- Chamfer and corner-rounding mills (docs/tool-crib.md).
+INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach, cost) VALUES
+  ('CM-90-D6',   'chamfer',         'carbide',  6, 0.5,   90, NULL, 3, 20, 32),
+  ('CM-90-D10',  'chamfer',         'carbide', 10, 1.0,   90, NULL, 4, 25, 45),
+  ('CM-90-D16',  'chamfer',         'carbide', 16, 2.0,   90, NULL, 4, 30, 70),
+  ('CM-45-D6',   'chamfer',         'carbide',  6, 0.5,   45, NULL, 3, 20, 34),
+  ('CM-45-D10',  'chamfer',         'carbide', 10, 1.0,   45, NULL, 4, 25, 48),
+  ('CR-R1',      'corner_rounding', 'carbide',  6, 4.0, NULL,    1, 4, 20, 38),
+  ('CR-R2',      'corner_rounding', 'carbide',  8, 4.0, NULL,    2, 4, 22, 44),
+  ('CR-R3',      'corner_rounding', 'carbide', 10, 4.0, NULL,    3, 4, 25, 52),
+  ('CR-R4',      'corner_rounding', 'carbide', 12, 4.0, NULL,    4, 4, 28, 60),
+  ('CR-R5',      'corner_rounding', 'carbide', 16, 6.0, NULL,    5, 4, 32, 72);
 
 -- Jobber drills (DIN 338 / ISO 235 lengths), HSS. 5, 6.8, 8.5 and 10.2 mm are above.
 INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost) VALUES
@@ -172,6 +227,31 @@ INSERT INTO cutting_condition (workpiece_material, tool_material, operation, vc_
   ('45 steel',   'HSS',     'finishing',  35, 0.06, 0.5, 0.10,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125, NULL, NULL),
   ('45 steel',   'HSS',     'drilling',   20, 0.12, 3.0, 1.00,  68.2, 0.86,0.72, 1.0, 0.86,0.0, 1.0,   70, 0.125, NULL, NULL);
 
+-- Small end mills (below 2 mm; docs/tool-crib.md): catalogue data for micro end mills, a much
+-- lower f_z and a_p than the rows above; v_c is what the spindle's speed limit leaves anyway.
+INSERT INTO cutting_condition (workpiece_material, tool_material, operation, vc_m_min, fz_mm, ap_mm, ae_ratio,
+                               c_f, x_f, y_f, u_f, q_f, w_f, k_fc, taylor_c, taylor_m, d_min, d_max) VALUES
+  -- 7050-T7451
+  ('7050-T7451', 'carbide', 'roughing',  250, 0.005, 0.10, 0.30, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 0, 1),
+  ('7050-T7451', 'carbide', 'roughing',  350, 0.015, 0.40, 0.40, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 1, 2),
+  ('7050-T7451', 'carbide', 'finishing', 300, 0.004, 0.10, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 0, 1),
+  ('7050-T7451', 'carbide', 'finishing', 450, 0.012, 0.40, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1500, 0.30, 1, 2),
+  -- 2024-T351
+  ('2024-T351',  'carbide', 'roughing',  230, 0.005, 0.10, 0.30, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 0, 1),
+  ('2024-T351',  'carbide', 'roughing',  320, 0.015, 0.40, 0.40, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 1, 2),
+  ('2024-T351',  'carbide', 'finishing', 280, 0.004, 0.10, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 0, 1),
+  ('2024-T351',  'carbide', 'finishing', 420, 0.012, 0.40, 0.10, 206, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0, 1400, 0.30, 1, 2),
+  -- Ti-6Al-4V
+  ('Ti-6Al-4V',  'carbide', 'roughing',   35, 0.003, 0.05, 0.20, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, 0, 1),
+  ('Ti-6Al-4V',  'carbide', 'roughing',   45, 0.008, 0.20, 0.25, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, 1, 2),
+  ('Ti-6Al-4V',  'carbide', 'finishing',  45, 0.003, 0.05, 0.05, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, 0, 1),
+  ('Ti-6Al-4V',  'carbide', 'finishing',  55, 0.006, 0.20, 0.08, 908, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  120, 0.20, 1, 2),
+  -- 45 steel
+  ('45 steel',   'carbide', 'roughing',   80, 0.005, 0.10, 0.30, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, 0, 1),
+  ('45 steel',   'carbide', 'roughing',  100, 0.012, 0.30, 0.40, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, 1, 2),
+  ('45 steel',   'carbide', 'finishing', 100, 0.004, 0.10, 0.10, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, 0, 1),
+  ('45 steel',   'carbide', 'finishing', 130, 0.010, 0.30, 0.10, 825, 1.0, 0.75, 1.1, 1.3, 0.2, 1.0,  300, 0.25, 1, 2);
+
 -- Rule knowledge -----------------------------------------------------------------------
 INSERT INTO threshold (name, value, description) VALUES
   ('eta_min',        0.85, 'least machinable ratio A_m/A for a roughing tool'),
@@ -180,7 +260,11 @@ INSERT INTO threshold (name, value, description) VALUES
   ('ra_max_um',      3.20, 'default roughness limit R_a for finishing'),
   ('plunge_feed_ratio', 0.30, 'vertical (plunge and ramp) feed as a fraction of the horizontal feed'),
   ('breakthrough_mm',   1.00, 'openings and through holes are cut this far past the part'),
-  ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area');
+  ('rest_min_area_mm2', 0.50, 'corners get rest machining when the roughing tool leaves more than this area'),
+  ('long_reach_ratio',     4.00, 'a necked tool reaching more than this many diameters gets reduced cutting data'),
+  ('long_reach_ap_factor', 0.50, 'a_p of a long-reach tool as a fraction of the handbook value'),
+  ('long_reach_fz_factor', 0.80, 'f_z of a long-reach tool as a fraction of the handbook value'),
+  ('allowance_max_ratio',  0.25, 'a unit leaves at most this times its tool diameter as radial allowance');
 
 -- Process planning (docs/machining-chain.md) --------------------------------------------
 -- The same rows are seeded by the migration from schema version 2 (migrations/v2_to_v3.sql).

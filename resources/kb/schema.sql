@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 5.
+-- AeroNC machining knowledge base, schema version 6.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
@@ -13,7 +13,7 @@ PRAGMA foreign_keys = ON;
 CREATE TABLE schema_version (
     version INTEGER NOT NULL
 );
-INSERT INTO schema_version (version) VALUES (5);
+INSERT INTO schema_version (version) VALUES (6);
 
 -- Resource facts -----------------------------------------------------------------------
 
@@ -55,6 +55,10 @@ CREATE TABLE tool_material (
 -- A tool the selector may choose. Impossible dimensions are refused by the database too,
 -- not only by toolselect::Tool::validate(), so a hand edit cannot store them.
 -- 'other' is a tool kept for FreeCAD (chamfer, v-bit, probe, ...) that the selector never picks.
+-- reach is the length below the holder that is no wider than the cutter. A necked (long-reach)
+-- tool has a relieved neck of neck_diameter behind its flutes: it cuts as deep as its reach, one
+-- layer of at most its flute length at a time; a tool without a neck (NULL) is as wide as the
+-- cutter behind its flutes and cuts only as deep as its flutes (docs/tool-crib.md).
 CREATE TABLE tool (
     id             TEXT PRIMARY KEY NOT NULL,
     type           TEXT NOT NULL CHECK (type IN ('flat', 'bull', 'ball', 'drill', 'face', 'other')),
@@ -65,7 +69,27 @@ CREATE TABLE tool (
     flute_length   REAL NOT NULL CHECK (flute_length > 0),
     overall_length REAL CHECK (overall_length IS NULL OR overall_length >= reach),
     reach          REAL NOT NULL CHECK (reach >= flute_length),
-    cost           REAL CHECK (cost IS NULL OR cost >= 0)
+    cost           REAL CHECK (cost IS NULL OR cost >= 0),
+    neck_diameter  REAL CHECK (neck_diameter IS NULL OR (neck_diameter > 0 AND neck_diameter < diameter))
+);
+
+-- Edge tools: chamfer mills (a cone of included_angle from tip_diameter up to diameter) and
+-- corner-rounding mills (a concave quarter circle of profile_radius between tip_diameter and
+-- diameter). Kept for edge chamfers and outer rounds; the selector does not pick them yet.
+CREATE TABLE edge_tool (
+    id             TEXT PRIMARY KEY NOT NULL,
+    kind           TEXT NOT NULL CHECK (kind IN ('chamfer', 'corner_rounding')),
+    tool_material  TEXT NOT NULL REFERENCES tool_material (name) ON UPDATE CASCADE,
+    diameter       REAL NOT NULL CHECK (diameter > 0),
+    tip_diameter   REAL NOT NULL CHECK (tip_diameter >= 0 AND tip_diameter < diameter),
+    included_angle REAL CHECK (included_angle IS NULL OR (included_angle > 0 AND included_angle < 180)),
+    profile_radius REAL CHECK (profile_radius IS NULL OR profile_radius > 0),
+    flutes         INTEGER NOT NULL CHECK (flutes > 0),
+    reach          REAL NOT NULL CHECK (reach > 0),
+    cost           REAL CHECK (cost IS NULL OR cost >= 0),
+    CHECK ((kind = 'chamfer' AND included_angle IS NOT NULL AND profile_radius IS NULL) OR
+           (kind = 'corner_rounding' AND profile_radius IS NOT NULL AND included_angle IS NULL AND
+            2 * profile_radius <= diameter - tip_diameter + 1e-9))
 );
 
 -- Material x tool material x operation [x tool diameter range] -> cutting data and the

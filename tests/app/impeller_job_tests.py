@@ -48,8 +48,16 @@ class ImpellerJobTest(unittest.TestCase):
             page = f.read()
         for text in ("Dimensions against the generator's truth", "Process route", "Cutting data from the "
                      "cutting-parameter optimiser", "Gouge, holder and link checks", "features.png", "toolpaths.png",
-                     "EM-BALL12", "TB-4-3"):
+                     "TB-4-3"):
             self.assertIn(text, page)
+        # The channels are roughed with a ball of the knowledge base that fits the narrowest
+        # channel, and the report's tools table names it.
+        rough = [o for o in self.data["operations"] if o["operation"] == "rough_channels"]
+        self.assertEqual(len(rough), 1, [o["operation"] for o in self.data["operations"]])
+        tool = [t for t in self.data["tools"] if t["id"] == rough[0]["tool"]][0]
+        self.assertEqual(tool["type"], "ball")
+        self.assertLess(tool["diameter"], self.data["truth"]["minChannelWidth"])
+        self.assertIn("<td>{}</td><td>ball</td>".format(tool["id"]), page)
         # Every dimension within 1e-3 mm of the truth, features exact, both checks pass.
         self.assertNotIn("FAIL", page)
         # 5 dimensions, the features verdict, 6 blades, hub, bore, planes, 4 checks (5-axis, their

@@ -2,8 +2,9 @@
 
     HOME=<temp home> QTWEBENGINE_DISABLE_SANDBOX=1 xvfb-run -a freecad tests/gui/test_gate_gui.py
 
-A plate with a pocket and a 3.5 mm slot no cutter of the knowledge base fits with its roughing
-allowance: recognise, Machining chain, Build. Before OK the panel marks the slot's roughing unit
+A plate with a pocket and a 3.5 mm slot: recognise, Machining chain, Build (nothing refused), then
+the slot's roughing unit given the pocket's roughing tool by script, which does not fit the slot.
+Before OK the panel marks that unit
 "not ready" in red and lists it with the core's reason; after OK its operation carries Check "No
 toolpath" and the reason in Note (the property editor shows them), and AeroNC's 840D post refuses
 the Job, or with --skip-failed leaves the operation out with a comment, and never posts it as a
@@ -79,6 +80,15 @@ def run():
     panel.build_button.click()
     pump()
     check("built without error", not errors and panel.chain is not None, errors)
+
+    # The knowledge base's small tools finish the slot now; a tool set on its roughing unit by
+    # script (the panel's list offers only smaller ones) that does not fit is what the core refuses.
+    check("nothing refused as built", not panel.not_ready_units(), panel.not_ready_units())
+    rough = [u for u in panel.chain["units"] if u.get("step") == "r"]
+    slot_unit = min(rough, key=lambda u: float((u.get("cutter") or {}).get("diameter") or 0.0))
+    big = max(rough, key=lambda u: float((u.get("cutter") or {}).get("diameter") or 0.0))["tool"]
+    panel.set_tool(int(slot_unit["id"]), big)
+    pump(0.5)
 
     # Before OK: the unit the core refuses is marked in the tree and listed with the reason.
     refused = panel.not_ready_units()

@@ -311,7 +311,7 @@ std::string toJson(const MachiningChain& c, int indent) {
         j["tools"][t.id] = {{"number", t.number},         {"type", t.type},         {"material", t.material},
                             {"diameter", t.diameter},     {"cornerRadius", t.cornerRadius},
                             {"fluteLength", t.fluteLength}, {"reach", t.reach}, {"flutes", t.flutes},
-                            {"settings", settings}};
+                            {"neckDiameter", t.neckDiameter}, {"settings", settings}};
     }
     return j.dump(indent);
 }
@@ -428,6 +428,7 @@ MachiningChain fromJson(const std::string& text) {
         ct.cornerRadius = t["cornerRadius"].number();
         ct.fluteLength = t["fluteLength"].number();
         ct.reach = t["reach"].number();
+        if (t.has("neckDiameter")) ct.neckDiameter = t["neckDiameter"].number();  // absent in older chains
         ct.flutes = t["flutes"].integer();
         const In settings = t["settings"];
         if (!settings.raw().is_object()) settings.bad("is not an object keyed by operation");

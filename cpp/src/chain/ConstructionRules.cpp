@@ -317,7 +317,7 @@ MachiningChain checkChain(MachiningChain c) {
         const auto s = t->settings.find(op);
         if (s == t->settings.end()) continue;
         u.setting = {s->second.spindleRpm, s->second.feedMmMin, s->second.plungeFeedMmMin};
-        u.stepDown = s->second.ap;
+        u.stepDown = std::min(s->second.ap, t->fluteLength);  // as Fusing: a layer no higher than the flutes
         u.stepOver = u.operation == Operation::Drill ? 0 : s->second.ae;
         if (u.step == StepCode::Web) {
             const auto r = t->settings.find("roughing");

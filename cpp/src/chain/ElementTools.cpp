@@ -104,7 +104,9 @@ int ElementTools::roughingToolWithAllowance(const DomainElement& e, int r, doubl
     const auto d = directions_.find(e.setup);
     if (d == directions_.end()) return r;
     const toolselect::PocketGeometry g = toolselect::pocketGeometry(e, d->second);
-    auto reaches = [&](const Tool& t) { return toolselect::machinableRatio(g, t.radius() + ar).eta > 0.0; };
+    auto reaches = [&](const Tool& t) {
+        return toolselect::machinableRatio(g, t.radius() + std::min(ar, opt_.allowanceRatio * t.diameter)).eta > 0.0;
+    };
     if (reaches(tool(r))) return r;
     int best = -1;
     for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
@@ -152,7 +154,7 @@ std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const 
     const double need = top - bottom;
     if (t.usableLength() + kTol < need)
         return who + " reaches " + fmt(t.usableLength()) + " mm; " + elementName(e) + " needs " + fmt(need) + " mm";
-    const double ar = step.radialAllowance;
+    const double ar = allowanceOf(step, t);
     if (op == Operation::Profile || op == Operation::Rest) {
         // Side fillet: the tool follows the concave corners.
         if (e.minCornerRadius >= 0 && t.radius() > e.minCornerRadius + kTol)

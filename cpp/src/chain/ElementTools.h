@@ -6,6 +6,7 @@
 #include <aeronc/chain/Fusing.h>
 #include <aeronc/recognition/SetupFrame.h>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <string>
@@ -23,6 +24,10 @@ std::string elementName(const recognition::DomainElement& e);
 
 class ElementTools {
 public:
+    // The radial allowance a unit of `step` with tool `t` leaves (ChainOptions::allowanceRatio).
+    double allowanceOf(const TemplateStep& step, const toolselect::Tool& t) const {
+        return std::min(step.radialAllowance, opt_.allowanceRatio * t.diameter);
+    }
     // settingOf: the cutting data of a tool; empty: the plan's own settings.
     ElementTools(const recognition::DomainTree& tree, const toolselect::ToolPlan& plan, const ProcessTemplate& t,
                  const ChainOptions& o, ToolSettingOf settingOf);

@@ -36,6 +36,7 @@ ChainTool chainTool(const Tool& t) {
     c.cornerRadius = t.cornerRadius;
     c.fluteLength = t.fluteLength;
     c.reach = t.reach;
+    c.neckDiameter = t.neckDiameter;
     c.flutes = t.flutes;
     return c;
 }
@@ -94,9 +95,9 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     // the corner's profile on the wall: the finishing passes go that much deeper, as far as
     // the tool reaches.
     if (e.type == ElementType::Opening && op == Operation::Profile)
-        u.bottom = std::max(bottom - t.cornerRadius, std::min(u.bottom, top - std::min(t.fluteLength, t.reach)));
+        u.bottom = std::max(bottom - t.cornerRadius, std::min(u.bottom, top - t.usableLength()));
     const bool floorless = e.type == ElementType::Opening || e.type == ElementType::Hole;
-    u.radialAllowance = step.radialAllowance;
+    u.radialAllowance = tools_.allowanceOf(step, t);
     u.axialAllowance = floorless ? 0.0 : step.axialAllowance;
     u.floorFilletRadius = floorless ? 0.0 : std::max(0.0, e.floorFilletRadius);
 
@@ -106,7 +107,8 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
         s = tools_.setting(static_cast<std::size_t>(toolIndex), std::string(op0) == "roughing" ? "finishing" : "roughing");
     if (s) {
         u.setting = {s->spindleRpm, s->feedMmMin, s->plungeFeedMmMin};
-        u.stepDown = s->ap;
+        // A layer no higher than the flutes: a necked tool's neck cuts nothing.
+        u.stepDown = std::min(s->ap, t.passHeight());
         u.stepOver = s->ae;
     } else {
         u.note = "no cutting data for tool " + t.id + " in " + opt_.material;
@@ -255,7 +257,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 // The finishing tool fits the corners; only passages narrower than it leave
                 // some of that to the wall steps.
                 if (passages) {
-                    const auto thin = toolselect::machinableRatio(g, ct.radius() + ar);
+                    const auto thin = toolselect::machinableRatio(g, ct.radius() + tools_.allowanceOf(step, ct));
                     rest -= thin.area - thin.machinableArea;
                     eta = thin.eta;
                 }

@@ -200,13 +200,14 @@ void KnowledgeBase::insertTools(const std::vector<Tool>& tools, const std::vecto
     sqlite3* db = db_.get();
     Transaction tx(db, path_, tools.size() == 1 ? "adding tool " + quoted(tools[0].id) : "importing tools");
     Statement s(db, path_,
-                "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach, cost) "
-                "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+                "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach, cost, "
+                "neck_diameter) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t i = 0; i < tools.size(); ++i) {
         const Tool& t = tools[i];
         s.reset();
         s.bind(1, t.id).bind(2, t.type).bind(3, t.material).bind(4, t.diameter).bind(5, t.cornerRadius);
         s.bind(6, t.flutes).bind(7, t.fluteLength).bind(8, t.reach).bind(9, costs[i]);
+        s.bind(10, t.necked() ? std::optional<double>(t.neckDiameter) : std::nullopt);
         const int rc = s.tryStep();
         if (rc == SQLITE_DONE) continue;
         const int ext = sqlite3_extended_errcode(db);

@@ -35,8 +35,8 @@ StoredTool storedTool(sqlite3* db, const std::string& path, const std::string& i
     if (!s.step("reading a tool")) notFound(db, path, "knowledge base " + quoted(path) + ": unknown tool " + quoted(id));
     StoredTool out;
     out.tool = toolFromRow(s, path);
-    out.overallLength = s.optReal(8);
-    if (!s.isNull(9)) out.bitFile = s.text(9), out.bitDocument = s.text(10);
+    out.overallLength = s.optReal(9);
+    if (!s.isNull(10)) out.bitFile = s.text(10), out.bitDocument = s.text(11);
     return out;
 }
 

@@ -66,7 +66,7 @@ const std::vector<std::string>& KnowledgeBase::editableTables() {
     static const std::vector<std::string> t = {"tool", "cutting_condition", "machine", "workpiece_material",
                                                "tool_material", "threshold", "part_family", "step_order",
                                                "process_template", "template_step", "sequencing_rule",
-                                               "tapered_ball_tool", "impeller_route_step"};
+                                               "tapered_ball_tool", "impeller_route_step", "edge_tool"};
     return t;
 }
 

@@ -1,5 +1,6 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/core/SpindleSpeed.h>
+#include <aeronc/kb/LongReach.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/toolselect/PlanJson.h>
@@ -140,10 +141,11 @@ chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<too
     const std::string m = machineOf(kb, machine);
     const double maxRpm = m.empty() ? 0 : kb.machine(m).maxSpindleRpm;
     const double plungeRatio = thresholdOr(kb, "plunge_feed_ratio", 0.3);
+    const LongReach longReach = LongReach::of(kb);
     // Shared so copies of the function share what they have looked up.
     using Key = std::tuple<std::string, std::string, double>;
     auto cache = std::make_shared<std::map<Key, std::optional<CuttingCondition>>>();
-    return [&kb, tools, material, maxRpm, plungeRatio, cache](
+    return [&kb, tools, material, maxRpm, plungeRatio, longReach, cache](
                std::size_t i, const std::string& op) -> std::optional<toolselect::ToolSetting> {
         if (i >= tools.size()) return std::nullopt;
         const toolselect::Tool& t = tools[i];
@@ -159,7 +161,7 @@ chain::ToolSettingOf toolSettings(const KnowledgeBase& kb, const std::vector<too
             it = cache->emplace(key, c).first;
         }
         if (!it->second) return std::nullopt;
-        const CuttingCondition& c = *it->second;
+        const CuttingCondition c = longReach.applied(t, *it->second);
         toolselect::ToolSetting s;
         s.tool = static_cast<int>(i);
         s.operation = op;
@@ -181,6 +183,7 @@ chain::ChainOptions chainOptions(const KnowledgeBase& kb, const std::string& mat
     o.machine = machineOf(kb, machine);
     o.breakthrough = thresholdOr(kb, "breakthrough_mm", o.breakthrough);
     o.restMinArea = thresholdOr(kb, "rest_min_area_mm2", o.restMinArea);
+    o.allowanceRatio = thresholdOr(kb, "allowance_max_ratio", o.allowanceRatio);
     return o;
 }
 

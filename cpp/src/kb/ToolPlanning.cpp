@@ -2,6 +2,7 @@
 
 #include <aeronc/core/Error.h>
 #include <aeronc/core/SpindleSpeed.h>
+#include <aeronc/kb/LongReach.h>
 
 #include <algorithm>
 #include <map>
@@ -55,17 +56,20 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
         }
         return it->second;
     };
+    const LongReach longReach = LongReach::of(kb);
+    auto reduced = [&](const Tool& t, const CuttingCondition& c) { return longReach.applied(t, c); };
     const std::vector<Tool> tools = kb.tools();
     s.mayFinish = [&](const Tool& t) { return t.isEndMill() && condition(t, "finishing").has_value(); };
     s.mayRough = [&](const Tool& t) { return t.isEndMill() && condition(t, "roughing").has_value(); };
     s.mayDrill = [&](const Tool& t) { return t.type == "drill" && condition(t, "drilling").has_value(); };
     s.roughingData = [&](std::size_t i) {
         const Tool& t = tools.at(i);
-        const auto& c = condition(t, "roughing");
-        if (!c)
+        const auto& found = condition(t, "roughing");
+        if (!found)
             throw inputError("tool " + t.id + ": no roughing cutting data for '" + material + "' with '" +
                              t.material + "'");
-        return toolselect::roughingCuttingData(t, c->vc, c->fz, c->ap, c->aeRatio, delta, maxRpm);
+        const CuttingCondition c = reduced(t, *found);
+        return toolselect::roughingCuttingData(t, c.vc, c.fz, c.ap, c.aeRatio, delta, maxRpm);
     };
     ToolPlan plan = toolselect::planTools(tree, tools, s);
 
@@ -80,8 +84,9 @@ ToolPlan planTools(const recognition::DomainTree& tree, const KnowledgeBase& kb,
         if (h.drill >= 0) used.insert({h.drill, "drilling"});
     for (const auto& [index, op] : used) {
         const Tool& t = tools.at(static_cast<std::size_t>(index));
-        const auto& c = condition(t, op);
-        if (!c) continue;  // the filters above only let tools with data through
+        const auto& found = condition(t, op);
+        if (!found) continue;  // the filters above only let tools with data through
+        const std::optional<CuttingCondition> c = reduced(t, *found);
         ToolSetting ts;
         ts.tool = index;
         ts.operation = op;

@@ -8,7 +8,7 @@
 namespace aeronc::kb::detail {
 
 // The columns a query selects first, in this order, for toolFromRow.
-constexpr const char* kToolColumns = "id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach";
+constexpr const char* kToolColumns = "id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach, neck_diameter";
 
 // Every cell is checked (Statement::real, integer) and the tool validated: a file another
 // program wrote may hold anything.
@@ -23,6 +23,7 @@ inline toolselect::Tool toolFromRow(Statement& s, const std::string& path) {
     t.flutes = s.integer(5);
     t.fluteLength = s.real(6);
     t.reach = s.real(7);
+    t.neckDiameter = s.optReal(8).value_or(0.0);
     try {
         t.validate();
     } catch (const Error& e) {

@@ -130,7 +130,7 @@ std::string toJson(const ToolPlan& plan, const std::string& material, int indent
         const Tool& t = plan.tools[static_cast<std::size_t>(i)];
         j["tools"][t.id] = {{"type", t.type},         {"material", t.material},  {"diameter", t.diameter},
                             {"cornerRadius", t.cornerRadius}, {"fluteLength", t.fluteLength}, {"reach", t.reach},
-                            {"flutes", t.flutes}};
+                            {"flutes", t.flutes}, {"neckDiameter", t.neckDiameter}};
     }
     j["merges"] = json::array();
     for (const MergeReport::Step& s : plan.merge.merges)
@@ -167,7 +167,8 @@ ToolPlan planFromJson(const std::string& text, const std::string& material, cons
         const bool same = t["type"].text() == have.type && t["diameter"].number() == have.diameter &&
                           t["cornerRadius"].number() == have.cornerRadius &&
                           t["fluteLength"].number() == have.fluteLength && t["reach"].number() == have.reach &&
-                          t["flutes"].integer() == have.flutes;
+                          t["flutes"].integer() == have.flutes &&
+                          (given.contains("neckDiameter") ? t["neckDiameter"].number() : 0.0) == have.neckDiameter;
         if (!same)
             throw inputError("tool " + id + " changed since the tool plan was made (now " + have.type + " D" +
                              fmt(have.diameter) + "); select tools again");

@@ -11,7 +11,7 @@ void Tool::validate() const {
     auto fail = [&](const std::string& what) { throw inputError(who + what); };
     if (!isEndMill() && type != "drill" && type != "face" && type != "other")
         fail("unknown type '" + type + "' (expected flat, bull, ball, drill, face or other)");
-    const double dims[] = {diameter, cornerRadius, fluteLength, reach};
+    const double dims[] = {diameter, cornerRadius, fluteLength, reach, neckDiameter};
     for (double d : dims)
         if (!std::isfinite(d)) fail("dimensions must be finite numbers");
     std::ostringstream m;
@@ -27,6 +27,8 @@ void Tool::validate() const {
     else if (reach < fluteLength)
         m << "reach " << reach << " mm is shorter than the flute length " << fluteLength << " mm";
     else if (flutes < 1) m << "flute count " << flutes << " must be at least 1";
+    else if (neckDiameter < 0 || (neckDiameter > 0 && neckDiameter >= diameter))
+        m << "neck diameter " << neckDiameter << " mm must be positive and below the diameter " << diameter << " mm";
     if (!m.str().empty()) fail(m.str());
 }
 

@@ -61,11 +61,11 @@ TEST(ChainBadInput, ATemplateMissingMustStepsOrWithABrokenRuleStopsThePlan) {
 }
 
 TEST(ChainBadInput, AnElementNoToolCanMachineIsListedNotFatal) {
-    // Pocket corners of radius 0.5 mm: no shipped end mill (the smallest is 2 mm) finishes them.
+    // Pocket corners of radius 0.2 mm: no shipped end mill (the smallest is 0.5 mm) finishes them.
     testparts::PanelSpec s;
     s.pocketsX = 2;
     s.pocketsY = 1;
-    s.cornerRadius = 0.5;
+    s.cornerRadius = 0.2;
     s.lowerRibs = s.islands = s.openings = s.lighteningHoles = s.boltHoles = false;
     s.joggles = s.flange = s.bottomPockets = false;
     recognition::RecogniseOptions o;
@@ -82,7 +82,7 @@ TEST(ChainBadInput, AnElementNoToolCanMachineIsListedNotFatal) {
         for (const Unmachined& m : c.unmachined)
             if (m.element == e.id && m.step == StepCode::FinishWall) {
                 listed = true;
-                EXPECT_NE(m.reason.find("radius <= 0.5 mm"), std::string::npos) << m.reason;
+                EXPECT_NE(m.reason.find("radius <= 0.2 mm"), std::string::npos) << m.reason;
             }
         for (const MachiningUnit& u : c.units) roughed |= u.element == e.id && u.step == StepCode::Rough;
         EXPECT_TRUE(listed) << "element " << e.id;

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <limits>
 #include <string>
 
 namespace aeronc::chain {
@@ -29,6 +30,9 @@ struct ChainOptions {
     double helixMinRatio = 0.5;  // helical interpolation: end-mill diameter / hole diameter from ...
     double helixMaxRatio = 0.8;  // ... to (below half the hole a core would stand in the middle)
     double floorScallop = 0.01;  // a floor (web) pass leaves scallops at most this high, mm
+    // A unit's radial allowance is at most this times its tool's diameter: a 1 mm end mill cannot
+    // leave the 1 mm a roughing step asks for in a groove it just fits (engraving).
+    double allowanceRatio = std::numeric_limits<double>::infinity();
     bool optimiseTravel = true;
     bool listCandidateTools = true;  // also list the tools the chain could use instead (for editing)
 };

@@ -119,10 +119,12 @@ struct ToolData {
 struct ChainTool {
     std::string id, type, material;
     double diameter = 0, cornerRadius = 0, fluteLength = 0, reach = 0;
+    double neckDiameter = 0;  // 0: no neck (toolselect::Tool)
     int flutes = 0;
     int number = 0;  // T number in the chain's order of first use; 0: not used
     std::map<std::string, ToolData> settings;  // by operation: roughing, finishing, drilling
-    double usableLength() const { return fluteLength < reach ? fluteLength : reach; }
+    // As toolselect::Tool::usableLength: a necked tool reaches its reach, another its flutes.
+    double usableLength() const { return neckDiameter > 0 || fluteLength >= reach ? reach : fluteLength; }
 };
 
 struct RuleCheck {

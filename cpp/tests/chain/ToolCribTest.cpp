@@ -1,0 +1,168 @@
+// The shipped crib (docs/tool-crib.md) on generated panels whose pockets are known by
+// construction: a pocket deeper than any standard end mill's flutes with small corners is
+// finished with a necked long-reach end mill, reaching the floor in layers no higher than its
+// flutes; a 1 mm deep pocket with 0.5 mm corners (engraving size) with the 1 mm end mill.
+#include "Fixtures.h"
+
+#include <aeronc/brep/PartIO.h>
+#include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace aeronc;
+using namespace aeronc::chain;
+
+namespace {
+
+testparts::PanelSpec pocketsOnly(double thickness, double webZ, double cornerRadius) {
+    testparts::PanelSpec s;
+    s.pocketsX = 2;
+    s.pocketsY = 1;
+    s.pitch = 40;
+    s.thickness = thickness;
+    s.webZ = webZ;
+    s.cornerRadius = cornerRadius;
+    s.floorFillet = 0;
+    s.lowerRibs = s.islands = s.openings = s.lighteningHoles = s.boltHoles = false;
+    s.joggles = s.flange = s.bottomPockets = false;
+    return s;
+}
+
+recognition::DomainTree recogniseUp(const testparts::PanelSpec& s) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    return recognition::recognise(validatedSolid(testparts::makePanel(s).shape, "panel"), o);
+}
+
+// The closed pockets' finishing-wall units: tool id -> the units.
+std::vector<const MachiningUnit*> finishWalls(const MachiningChain& c, int element) {
+    std::vector<const MachiningUnit*> out;
+    for (const MachiningUnit& u : c.units)
+        if (u.element == element && u.step == StepCode::FinishWall) out.push_back(&u);
+    return out;
+}
+
+}  // namespace
+
+// 28 mm deep, R3 corners, flat floor: the reach of every standard end mill of radius <= 3 mm
+// is its flutes (13 mm for the D6); the necked D6 x 30 reaches 30 mm with 9 mm flutes.
+TEST(ToolCrib, DeepPocketWithR3CornersIsFinishedByTheLongReachEndMill) {
+    const auto tree = recogniseUp(pocketsOnly(34, 6, 3));
+    const test::KbDir dir("crib_deep");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.top - e.level, 28, 1e-6);
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        const auto walls = finishWalls(c, e.id);
+        ASSERT_FALSE(walls.empty()) << "element " << e.id;
+        for (const MachiningUnit* u : walls) {
+            EXPECT_EQ(u->tool, "EM-F6x30") << "element " << e.id;
+            EXPECT_NEAR(u->bottom, e.level, 1e-6);       // down to the floor
+            // The handbook's finishing a_p (1 mm) halved for a reach of 5 diameters.
+            EXPECT_NEAR(u->stepDown, 0.5, 1e-9);
+        }
+        // The floor and the roughing reach 28 mm too.
+        std::set<StepCode> steps;
+        for (const MachiningUnit& u : c.units)
+            if (u.element == e.id) {
+                steps.insert(u.step);
+                const ChainTool* t = c.tool(u.tool);
+                ASSERT_TRUE(t) << u.tool;
+                EXPECT_GE(t->usableLength() + 1e-9, e.top - u.bottom) << u.tool;
+            }
+        EXPECT_TRUE(steps.count(StepCode::Rough));
+        EXPECT_TRUE(steps.count(StepCode::Web));
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+// Cutting data whose a_p is higher than the flutes (here the finishing rows raised to 30 mm, 15
+// after the long-reach reduction): the layers stay at the flute length, the neck cuts nothing.
+TEST(ToolCrib, LayersAreNoHigherThanTheFlutes) {
+    const auto tree = recogniseUp(pocketsOnly(34, 6, 3));
+    const test::KbDir dir("crib_layers");
+    auto kb = dir.open();
+    const kb::Table cc = kb.table("cutting_condition");
+    std::vector<kb::CellEdit> edits;
+    for (std::size_t i = 0; i < cc.rows.size(); ++i)
+        if (cc.rows[i][1] == "7050-T7451" && cc.rows[i][3] == "finishing" && !cc.rows[i][4])
+            edits.push_back({cc.rowIds[i], "ap_mm", "30"});
+    ASSERT_EQ(edits.size(), 2u);  // carbide and HSS
+    kb.editTable("cutting_condition", edits, {}, {});
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int walls = 0;
+    for (const MachiningUnit& u : c.units) {
+        if (u.step != StepCode::FinishWall) continue;
+        ++walls;
+        EXPECT_EQ(u.tool, "EM-F6x30");
+        EXPECT_NEAR(u.stepDown, 9.0, 1e-9);
+    }
+    EXPECT_EQ(walls, 2);
+}
+
+// 1 mm deep, R0.5 corners: engraving size, below every standard end mill (the smallest is 2 mm).
+TEST(ToolCrib, OneMillimetreDeepPocketIsFinishedWithTheOneMillimetreEndMill) {
+    const auto tree = recogniseUp(pocketsOnly(9, 8, 0.5));
+    const test::KbDir dir("crib_engrave");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        const auto walls = finishWalls(c, e.id);
+        ASSERT_FALSE(walls.empty()) << "element " << e.id;
+        for (const MachiningUnit* u : walls) {
+            const ChainTool* t = c.tool(u->tool);
+            ASSERT_TRUE(t);
+            EXPECT_DOUBLE_EQ(t->diameter, 1.0) << u->tool;
+            EXPECT_NEAR(u->bottom, e.level, 1e-6);
+            // The small tools' own cutting data: a thin layer and a slow feed.
+            EXPECT_LE(u->stepDown, 0.4 + 1e-9);
+            EXPECT_LT(u->setting.feedMmMin, 1000.0);
+        }
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+// Grooves 2 mm wide and 1 mm deep (engraving): the roughing step's 1 mm allowance leaves no room
+// for any cutter (0.5 + 2 x 1 > 2); capped at a quarter of the tool's diameter, the 1 mm end
+// mill roughs them with 0.25 mm and every step fits the groove.
+TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
+    testparts::PanelSpec s = pocketsOnly(9, 8, 0.5);
+    s.pitch = 3.5;  // grooves 3.5 - 1.5 = 2 mm wide
+    s.ribThickness = 1.5;
+    const auto tree = recogniseUp(s);
+    const test::KbDir dir("crib_grooves");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.minWidth, 2.0, 1e-2);  // measured on the faceted outline
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        std::set<StepCode> steps;
+        for (const MachiningUnit& u : c.units) {
+            if (u.element != e.id) continue;
+            steps.insert(u.step);
+            EXPECT_LE(u.radialAllowance, 0.25 * u.cutter.diameter + 1e-9) << toString(u.step);
+            EXPECT_LE(u.cutter.diameter + 2 * u.radialAllowance, e.minWidth + 1e-6) << toString(u.step) << " " << u.tool;
+        }
+        EXPECT_TRUE(steps.count(StepCode::Rough));
+        EXPECT_TRUE(steps.count(StepCode::FinishWall));
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
