@@ -3,13 +3,13 @@ one solid, so that recognition can run on it.
 
 A plain multi-argument fuse of the shared 11-body impeller gives two solids and an invalid
 B-rep in 17 s: its blades touch the hub only to the exporter's tolerance. Here each body is
-fused to the growing solid alone with a fuzzy value, the faces of one surface merged again
+fused to the growing solid alone (a copy) with a fuzzy value, the faces of one surface merged again
 (Part's removeSplitter), and the step kept only when it leaves one valid solid. Bodies of almost
 no volume (slivers an exporter leaves) are dropped.
 """
 from aeronc.errors import RecognitionError
 
-FUZZY_VALUES = (1e-3, 1e-2)  # mm: the first that gives one valid solid
+FUZZY_VALUES = (1e-3, 1e-2, 5e-2)  # mm: the first that gives one valid solid
 SLIVER_SHARE = 1e-4          # of the largest body's volume
 
 
@@ -22,26 +22,32 @@ def fuse_bodies(shape, label="shape", progress=None):
     if not bodies:
         raise RecognitionError("{}: holds no solid to fuse".format(label))
     largest = abs(bodies[0].Volume)
-    solid, fused, dropped, fuzzy_used = bodies[0], 1, 0, 0.0
-    for i, body in enumerate(bodies[1:], start=2):
-        if abs(body.Volume) < SLIVER_SHARE * largest:
-            dropped += 1
-            continue
+    # Copies: a fuse raises the tolerances of its arguments' edges and vertices in place, which
+    # would change the caller's shape and the next attempt.
+    solid, fused, fuzzy_used = bodies[0].copy(), 1, 0.0
+    pending = [(i, b) for i, b in enumerate(bodies[1:], start=2) if abs(b.Volume) >= SLIVER_SHARE * largest]
+    dropped = len(bodies) - 1 - len(pending)
+    while pending:
         if progress:
-            progress(i, len(bodies))
-        step = None
-        for fuzzy in FUZZY_VALUES:
-            result = solid.fuse(body, fuzzy).removeSplitter()
-            if len(result.Solids) == 1 and result.Solids[0].isValid():
-                step = result.Solids[0]
-                fuzzy_used = max(fuzzy_used, fuzzy)
+            progress(fused + dropped + 1, len(bodies))
+        # A body that does not fuse yet may once its neighbours have (they bridge the gap).
+        for k, (i, body) in enumerate(pending):
+            step = None
+            for fuzzy in FUZZY_VALUES:
+                result = solid.fuse(body.copy(), fuzzy).removeSplitter()
+                if len(result.Solids) == 1 and result.Solids[0].isValid():
+                    step = result.Solids[0]
+                    fuzzy_used = max(fuzzy_used, fuzzy)
+                    break
+            if step is not None:
+                solid = step
+                fused += 1
+                del pending[k]
                 break
-        if step is None:
+        else:
             raise RecognitionError(
                 "{}: body {} of {} (by volume) does not fuse with the others into one valid solid; "
-                "it may not touch them".format(label, i, len(bodies)))
-        solid = step
-        fused += 1
+                "it may not touch them".format(label, pending[0][0], len(bodies)))
     summary = "{} bodies: {} fused into one solid".format(len(bodies), fused)
     if dropped:
         summary += ", {} degenerate (no volume) left out".format(dropped)

@@ -16,7 +16,13 @@
 
 #include <aeronc/core/Error.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <NCollection_IndexedDataMap.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
+#include <TopoDS.hxx>
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -39,7 +45,9 @@ namespace aeronc::impeller {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kSplitterShare = 0.1;   // a splitter's shroud is this much smaller than a main blade's at least (exported copies differ by 1 %)
+constexpr double kSplitterShare = 0.1;
+constexpr double kHubShare = 0.25;  // a hub face carries at least this share of the longest blade root a face carries
+constexpr double kMeridianSine = 0.05;  // the normal of a face of revolution leaves its meridian plane by this much at most (an exporter's B-spline)   // a splitter's shroud is this much smaller than a main blade's at least (exported copies differ by 1 %)
 
 struct Axis {
     gp_Pnt point;
@@ -98,6 +106,143 @@ double shapeDistance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
     return d.Value();
 }
 
+
+// How far a face's normal turns round the axis: the largest and the mean |n . theta| over a grid
+// of its points (theta the direction round the axis). 0 on a face of revolution about the axis
+// (a hub, a turned tip, a plane across the axis), whatever its surface type (an exporter writes
+// such faces as B-splines); near 1 on a blade's side wall.
+struct NormalTurn {
+    double largest = 0, mean = 0;
+    bool known = false;
+};
+
+NormalTurn normalTurn(const FaceGraph& g, int f, const Axis& axis) {
+    BRepAdaptor_Surface s(g[f].face);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(g[f].face, u0, u1, v0, v1);
+    NormalTurn out;
+    int tried = 0;
+    for (int i = 1; i <= 5; ++i)
+        for (int j = 1; j <= 5; ++j) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            s.D1(u0 + (u1 - u0) * i / 6.0, v0 + (v1 - v0) * j / 6.0, p, du, dv);
+            const gp_Vec n = du.Crossed(dv), r = axis.radial(p);
+            if (n.Magnitude() < 1e-12 || r.Magnitude() < 1e-6) continue;
+            const double t = std::abs(n.Normalized().Dot(gp_Vec(axis.dir).Crossed(r).Normalized()));
+            out.largest = std::max(out.largest, t);
+            out.mean += t;
+            ++tried;
+        }
+    if (tried) out.mean /= tried, out.known = true;
+    return out;
+}
+
+// The angle about the axis a face's boundary spans, radians (2π for a face all round).
+double angularSpan(const FaceGraph& g, int f, const Axis& axis) {
+    std::vector<double> t;
+    for (TopExp_Explorer e(g[f].face, TopAbs_EDGE); e.More(); e.Next()) {
+        if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current()))) continue;
+        BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+        for (int k = 0; k <= 16; ++k) {
+            const gp_Pnt p = c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / 16.0);
+            if (axis.radial(p).Magnitude() > 1e-6) t.push_back(angleAbout(axis, p));
+        }
+    }
+    if (t.size() < 2) return 0;
+    std::sort(t.begin(), t.end());
+    double gap = t.front() + 2 * kPi - t.back();
+    for (size_t k = 1; k < t.size(); ++k) gap = std::max(gap, t[k] - t[k - 1]);
+    return 2 * kPi - gap;
+}
+
+bool coaxialCylinder(const FaceGraph& g, int f, const Axis& axis, double tol) {
+    if (g[f].type != GeomAbs_Cylinder) return false;
+    const gp_Cylinder c = BRepAdaptor_Surface(g[f].face).Cylinder();
+    return c.Axis().Direction().IsParallel(axis.dir, 1e-3) && axis.radial(c.Location()).Magnitude() < tol;
+}
+
+// Blades standing straight on the hub, without root fillets, or on a hub of several faces (a
+// piece per channel, as exporters write it): the hub is the faces of revolution about the axis
+// that span at least half a blade pitch and meet the blade walls; a blade is a connected set of
+// the faces left (faces of revolution spanning a whole channel, the rim and the back, are not
+// blade faces). In a blade, faces not of revolution tangent to the hub are root fillets; faces whose normals run round the axis are walls, and so are coaxial cylinders (the
+// blade's end turned with the rim); the others are its shroud (tip), flat or following the casing.
+void bladesOnHub(const FaceGraph& g, const Axis& axis, int m, const std::set<int>& holeSet, double scale, double tol,
+                 ImpellerFeatures& out) {
+    const double pitch = 2 * kPi / m, minArea = 1e-4 * scale * scale;
+    const int n = g.size();
+    std::vector<char> usable(n + 1, 0), rev(n + 1, 0), wide(n + 1, 0), round(n + 1, 0);
+    for (int f = 1; f <= n; ++f) {
+        usable[f] = !holeSet.count(f) && g[f].area >= minArea;  // slivers along exported intersections do not count
+        if (!usable[f]) continue;
+        const NormalTurn t = normalTurn(g, f, axis);
+        rev[f] = t.known && t.largest <= kMeridianSine;
+        round[f] = t.known && t.mean >= 0.5;
+        wide[f] = rev[f] && angularSpan(g, f, axis) > 0.5 * pitch;
+    }
+    // The length of boundary each wide face shares with blade faces (not of revolution): the hub
+    // carries the blades' roots; the back, the rim and a nose meet at most a blade's end.
+    NCollection_IndexedDataMap<TopoDS_Shape, std::vector<int>, TopTools_ShapeMapHasher> edgeFaces;
+    for (int f = 1; f <= n; ++f)
+        for (TopExp_Explorer e(g[f].face, TopAbs_EDGE); e.More(); e.Next()) {
+            const int i = edgeFaces.FindIndex(e.Current());
+            if (i) edgeFaces(i).push_back(f);
+            else edgeFaces.Add(e.Current(), {f});
+        }
+    std::vector<double> rootLength(n + 1, 0);
+    for (int i = 1; i <= edgeFaces.Extent(); ++i) {
+        const auto& fs = edgeFaces(i);
+        const bool byBlade = std::any_of(fs.begin(), fs.end(), [&](int f) { return usable[f] && !rev[f]; });
+        if (!byBlade || BRep_Tool::Degenerated(TopoDS::Edge(edgeFaces.FindKey(i)))) continue;
+        const double len = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(TopoDS::Edge(edgeFaces.FindKey(i))));
+        for (int f : std::set<int>(fs.begin(), fs.end()))
+            if (wide[f]) rootLength[f] += len;
+    }
+    const double longest = *std::max_element(rootLength.begin(), rootLength.end());
+    std::set<int> hub;
+    for (int f = 1; f <= n; ++f)
+        if (wide[f] && longest > 0 && rootLength[f] >= kHubShare * longest) hub.insert(f);
+    out.hubFaces.assign(hub.begin(), hub.end());
+    out.hub = *std::max_element(hub.begin(), hub.end(), [&](int a, int b) { return rootLength[a] < rootLength[b]; });
+
+    std::vector<char> seen(n + 1, 0);
+    for (int start = 1; start <= n; ++start) {
+        if (seen[start] || !usable[start] || wide[start]) continue;
+        std::vector<int> comp, stack{start};
+        seen[start] = 1;
+        while (!stack.empty()) {
+            const int f = stack.back();
+            stack.pop_back();
+            comp.push_back(f);
+            for (const auto& nb : g.neighbours(f))
+                if (!seen[nb.face] && usable[nb.face] && !wide[nb.face]) seen[nb.face] = 1, stack.push_back(nb.face);
+        }
+        if (std::all_of(comp.begin(), comp.end(), [&](int f) { return rev[f]; })) continue;  // no wall: not a blade
+        Blade b;
+        for (int f : comp) {
+            const bool onHub = !rev[f] && std::any_of(g.neighbours(f).begin(), g.neighbours(f).end(), [&](const Neighbour& nb) {
+                return nb.tangent && hub.count(nb.face);
+            });
+            if (onHub) b.fillets.push_back(f);
+            else if (round[f] || coaxialCylinder(g, f, axis, tol)) b.walls.push_back(f);
+            else b.shroudFaces.push_back(f);
+        }
+        if (b.shroudFaces.empty())
+            throw inputError("not an impeller: the blade with wall " + std::to_string(b.walls.empty() ? comp.front() : b.walls.front()) +
+                             " has no shroud (tip) face");
+        std::sort(b.walls.begin(), b.walls.end());
+        std::sort(b.fillets.begin(), b.fillets.end());
+        std::sort(b.shroudFaces.begin(), b.shroudFaces.end());
+        b.shroud = *std::max_element(b.shroudFaces.begin(), b.shroudFaces.end(),
+                                     [&](int x, int y) { return g[x].area < g[y].area; });
+        out.blades.push_back(b);
+    }
+    if (out.blades.empty()) throw inputError("not an impeller: no blade walls stand on the hub");
+    // The other faces of revolution round a channel (the rim between the blades): turned.
+    for (int f = 1; f <= n; ++f)
+        if (wide[f] && !hub.count(f) && g[f].type != GeomAbs_Plane) out.turned.push_back(f);
+}
 }  // namespace
 
 ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
@@ -122,7 +267,7 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
 
     // 2. The axis and the blade count from the part's rotational symmetry; the orbits of faces
     // under it (a blade face and its copies on the other blades) are the patterns.
-    const RotationalSymmetry sym = findRotationalSymmetry(shape, g, std::max(5e-3 * scale, 1e-3));
+    const RotationalSymmetry sym = findRotationalSymmetry(shape, g, std::max(5e-3 * scale, 1e-3), 1e-4 * scale * scale);
     if (sym.order < 3)
         throw inputError("not an impeller: no rotational pattern (no axis about which a turn of 360/N degrees, "
                          "N >= 3, takes the part onto itself, other than faces of revolution)");
@@ -190,85 +335,99 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         for (const auto* p : patterns) n += tangentToAll(s, *p);
         if (n > bestCount) bestCount = n, out.hub = s;
     }
-    if (out.hub == 0)
-        throw inputError("missing hub: no single face is tangent to a group of " + std::to_string(m) +
-                         " root fillets (an impeller has a hub of revolution with its blades standing on it, "
-                         "joined by root fillets)");
-
-    // 4. Fillets, walls and shroud faces.
+    // No single face tangent to fillets, or no walls and shroud round them: blades standing
+    // straight on the hub, or a hub of pieces (bladesOnHub).
+    bool onFillets = out.hub != 0;
     std::set<int> fillets, walls, shrouds;
-    std::vector<const std::vector<int>*> others;
-    for (const auto* p : patterns) {
-        if (tangentToAll(out.hub, *p)) fillets.insert(p->begin(), p->end());
-        else others.push_back(p);
-    }
-    auto everyMember = [&](const std::vector<int>& grp, const std::set<int>& set, bool tangentOnly) {
-        return std::all_of(grp.begin(), grp.end(), [&](int f) {
-            for (const auto& n : g.neighbours(f))
-                if (set.count(n.face) && (n.tangent || !tangentOnly)) return true;
-            return false;
-        });
-    };
-    std::vector<const std::vector<int>*> remaining;
-    for (const auto* p : others) {
-        if (everyMember(*p, fillets, true)) walls.insert(p->begin(), p->end());
-        else remaining.push_back(p);
-    }
-    // Walls also run tangentially into one another (side walls into edge rounds).
-    for (bool grew = true; grew;) {
-        grew = false;
-        for (auto it = remaining.begin(); it != remaining.end();) {
-            const bool touchesHub = std::any_of((*it)->begin(), (*it)->end(), [&](int f) { return g.adjacent(f, out.hub); });
-            if (!touchesHub && everyMember(**it, walls, true)) {
-                walls.insert((*it)->begin(), (*it)->end());
-                it = remaining.erase(it);
-                grew = true;
-            } else {
-                ++it;
-            }
-        }
-    }
-    for (const auto* p : remaining)
-        if (everyMember(*p, walls, false)) shrouds.insert(p->begin(), p->end());
-    if (walls.empty()) throw inputError("not an impeller: no blade walls run into the root fillets");
-    if (shrouds.empty()) throw inputError("not an impeller: the blades have no shroud (tip) faces");
+    if (onFillets) {
+        out.hubFaces = {out.hub};
 
-    // 5. Blades: connected sets of walls, fillets and shroud faces.
-    std::set<int> bladeFaces = fillets;
-    bladeFaces.insert(walls.begin(), walls.end());
-    bladeFaces.insert(shrouds.begin(), shrouds.end());
-    std::set<int> seen;
-    for (int start : shrouds) {
-        if (seen.count(start)) continue;
-        Blade b;
-        std::vector<int> stack{start};
-        seen.insert(start);
-        while (!stack.empty()) {
-            const int f = stack.back();
-            stack.pop_back();
-            if (shrouds.count(f)) {
-                if (b.shroud) throw inputError("unequal blade groups: a blade has two shroud faces (" +
-                                               std::to_string(b.shroud) + " and " + std::to_string(f) + ")");
-                b.shroud = f;
-            } else if (walls.count(f)) {
-                b.walls.push_back(f);
-            } else {
-                b.fillets.push_back(f);
-            }
-            for (const auto& n : g.neighbours(f))
-                if (bladeFaces.count(n.face) && !seen.count(n.face)) seen.insert(n.face), stack.push_back(n.face);
+        // 4. Fillets, walls and shroud faces.
+        std::vector<const std::vector<int>*> others;
+        for (const auto* p : patterns) {
+            if (tangentToAll(out.hub, *p)) fillets.insert(p->begin(), p->end());
+            else others.push_back(p);
         }
-        std::sort(b.walls.begin(), b.walls.end());
-        std::sort(b.fillets.begin(), b.fillets.end());
-        b.angleDeg = angleAbout(axis, g[b.shroud].centroid) * 180 / kPi;
-        out.blades.push_back(b);
+        auto everyMember = [&](const std::vector<int>& grp, const std::set<int>& set, bool tangentOnly) {
+            return std::all_of(grp.begin(), grp.end(), [&](int f) {
+                for (const auto& n : g.neighbours(f))
+                    if (set.count(n.face) && (n.tangent || !tangentOnly)) return true;
+                return false;
+            });
+        };
+        std::vector<const std::vector<int>*> remaining;
+        for (const auto* p : others) {
+            if (everyMember(*p, fillets, true)) walls.insert(p->begin(), p->end());
+            else remaining.push_back(p);
+        }
+        // Walls also run tangentially into one another (side walls into edge rounds).
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (auto it = remaining.begin(); it != remaining.end();) {
+                const bool touchesHub = std::any_of((*it)->begin(), (*it)->end(), [&](int f) { return g.adjacent(f, out.hub); });
+                if (!touchesHub && everyMember(**it, walls, true)) {
+                    walls.insert((*it)->begin(), (*it)->end());
+                    it = remaining.erase(it);
+                    grew = true;
+                } else {
+                    ++it;
+                }
+            }
+        }
+        for (const auto* p : remaining)
+            if (everyMember(*p, walls, false)) shrouds.insert(p->begin(), p->end());
+        onFillets = !walls.empty() && !shrouds.empty();
     }
+    if (onFillets) {
+
+        // 5. Blades: connected sets of walls, fillets and shroud faces.
+        std::set<int> bladeFaces = fillets;
+        bladeFaces.insert(walls.begin(), walls.end());
+        bladeFaces.insert(shrouds.begin(), shrouds.end());
+        std::set<int> seen;
+        for (int start : shrouds) {
+            if (seen.count(start)) continue;
+            Blade b;
+            std::vector<int> stack{start};
+            seen.insert(start);
+            while (!stack.empty()) {
+                const int f = stack.back();
+                stack.pop_back();
+                if (shrouds.count(f)) {
+                    if (b.shroud) throw inputError("unequal blade groups: a blade has two shroud faces (" +
+                                                   std::to_string(b.shroud) + " and " + std::to_string(f) + ")");
+                    b.shroud = f;
+                } else if (walls.count(f)) {
+                    b.walls.push_back(f);
+                } else {
+                    b.fillets.push_back(f);
+                }
+                for (const auto& n : g.neighbours(f))
+                    if (bladeFaces.count(n.face) && !seen.count(n.face)) seen.insert(n.face), stack.push_back(n.face);
+            }
+            std::sort(b.walls.begin(), b.walls.end());
+            std::sort(b.fillets.begin(), b.fillets.end());
+            b.angleDeg = angleAbout(axis, g[b.shroud].centroid) * 180 / kPi;
+            out.blades.push_back(b);
+        }
+        for (auto& b : out.blades) b.shroudFaces = {b.shroud};
+    } else {
+        out.hub = 0;
+        out.hubFaces.clear();
+        bladesOnHub(g, axis, m, holeSet, scale, tol, out);
+    }
+
     // Main blades have the larger shroud.
+    auto shroudArea = [&](const Blade& b) {
+        double a = 0;
+        for (int f : b.shroudFaces) a += g[f].area;
+        return a;
+    };
     double largest = 0;
-    for (const auto& b : out.blades) largest = std::max(largest, g[b.shroud].area);
+    for (const auto& b : out.blades) largest = std::max(largest, shroudArea(b));
     int mains = 0;
     for (auto& b : out.blades) {
-        b.splitter = g[b.shroud].area < largest * (1 - kSplitterShare);
+        b.splitter = shroudArea(b) < largest * (1 - kSplitterShare);
         mains += !b.splitter;
     }
     out.splitterCount = static_cast<int>(out.blades.size()) - mains;
@@ -327,8 +486,16 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
             out.holes.push_back(h);
         }
     }
+    std::set<int> claimed(out.hubFaces.begin(), out.hubFaces.end());
+    for (const auto& b : out.blades) {
+        claimed.insert(b.walls.begin(), b.walls.end());
+        claimed.insert(b.fillets.begin(), b.fillets.end());
+        claimed.insert(b.shroudFaces.begin(), b.shroudFaces.end());
+    }
     for (int s : singles)
-        if (s != out.hub) out.turned.push_back(s);
+        if (!claimed.count(s) && std::find(out.turned.begin(), out.turned.end(), s) == out.turned.end()) out.turned.push_back(s);
+    out.planes.erase(std::remove_if(out.planes.begin(), out.planes.end(), [&](int f) { return claimed.count(f) > 0; }),
+                     out.planes.end());
 
     // The closest pair of shroud faces: blade 0 and its nearest neighbour.
     const int n = static_cast<int>(out.blades.size());

@@ -316,7 +316,7 @@ int findRoot(std::vector<int>& parent, int x) {
 
 }  // namespace
 
-RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceGraph& g, double tol) {
+RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceGraph& g, double tol, double sliverArea) {
     RotationalSymmetry out;
     if (g.size() == 0) return out;
     double total = 0;
@@ -346,27 +346,51 @@ RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceG
     if (out.order < 3) return out;
 
     // Orbits: each face linked to the faces that a good share of its turned samples land on.
-    std::vector<int> parent(g.size() + 1);
-    std::iota(parent.begin(), parent.end(), 0);
-    const gp_Trsf t = turn(out.axis, 2 * kPi / out.order);
-    for (int f = 1; f <= g.size(); ++f) {
-        const auto& ids = cloud.of(f);
-        if (ids.empty()) continue;  // too small to sample: an orbit of its own
-        std::map<int, int> landed;
-        int count = 0, misses = 0;
-        for (size_t k = 0; k < ids.size(); k += std::max<size_t>(1, ids.size() / 12)) {
-            const int to = cloud.faceAt(cloud.samples()[ids[k]].p.Transformed(t), tol, true);
-            ++count;
-            if (to) ++landed[to];
-            else ++misses;
+    auto orbitsFor = [&](int order, std::vector<std::vector<int>>& orbits, std::vector<int>& unmatched) {
+        orbits.clear();
+        unmatched.clear();
+        std::vector<int> parent(g.size() + 1);
+        std::iota(parent.begin(), parent.end(), 0);
+        const gp_Trsf t = turn(out.axis, 2 * kPi / order);
+        for (int f = 1; f <= g.size(); ++f) {
+            const auto& ids = cloud.of(f);
+            if (ids.empty()) continue;  // too small to sample: an orbit of its own
+            std::map<int, int> landed;
+            int count = 0, misses = 0;
+            for (size_t k = 0; k < ids.size(); k += std::max<size_t>(1, ids.size() / 12)) {
+                const int to = cloud.faceAt(cloud.samples()[ids[k]].p.Transformed(t), tol, true);
+                ++count;
+                if (to) ++landed[to];
+                else ++misses;
+            }
+            if (misses > count / 2) unmatched.push_back(f);
+            for (const auto& [to, n] : landed)
+                if (n >= kOrbitShare * count) parent[findRoot(parent, f)] = findRoot(parent, to);
         }
-        if (misses > count / 2) out.unmatched.push_back(f);
-        for (const auto& [to, n] : landed)
-            if (n >= kOrbitShare * count) parent[findRoot(parent, f)] = findRoot(parent, to);
-    }
-    std::map<int, std::vector<int>> byRoot;
-    for (int f = 1; f <= g.size(); ++f) byRoot[findRoot(parent, f)].push_back(f);
-    for (auto& [root, faces] : byRoot) out.orbits.push_back(std::move(faces));
+        std::map<int, std::vector<int>> byRoot;
+        for (int f = 1; f <= g.size(); ++f) byRoot[findRoot(parent, f)].push_back(f);
+        for (auto& [root, faces] : byRoot) orbits.push_back(std::move(faces));
+    };
+    auto significant = [&](const std::vector<int>& faces) {
+        return std::count_if(faces.begin(), faces.end(), [&](int f) { return g[f].area > sliverArea; });
+    };
+    orbitsFor(out.order, out.orbits, out.unmatched);
+    // Most samples landing is not all: main blades turned onto splitters that are their outer
+    // part pass the order's test. A divisor of N (3 of 6) under which every face has its copy is
+    // the part's order; if none, N stands and its unmatched faces say where the blades differ.
+    if (significant(out.unmatched))
+        for (int k = 2; out.order / k >= 3; ++k) {
+            if (out.order % k) continue;
+            std::vector<std::vector<int>> orbits;
+            std::vector<int> unmatched;
+            orbitsFor(out.order / k, orbits, unmatched);
+            if (!significant(unmatched)) {
+                out.order /= k;
+                out.orbits = std::move(orbits);
+                out.unmatched = std::move(unmatched);
+                break;
+            }
+        }
     return out;
 }
 

@@ -21,7 +21,8 @@ struct RotationalSymmetry {
     std::vector<int> unmatched;
 };
 
-// tol: how far a turned sample may lie from the part's boundary, mm.
-RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceGraph& g, double tol);
+// tol: how far a turned sample may lie from the part's boundary, mm. Faces of sliverArea or less
+// (slivers an exporter leaves along intersections) do not decide the order.
+RotationalSymmetry findRotationalSymmetry(const TopoDS_Shape& shape, const FaceGraph& g, double tol, double sliverArea = 0);
 
 }  // namespace aeronc::impeller
