@@ -10,7 +10,7 @@ import FreeCAD
 import Part
 
 from aeronc.impeller import recognition
-from aeronc.impeller.body_fusion import fuse_bodies
+from aeronc.objects.fused_part import add_fused_part
 
 
 def _shared_impeller():
@@ -24,10 +24,11 @@ class SharedImpellerTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.doc = FreeCAD.newDocument("SharedImpeller")
-        solid, cls.summary = fuse_bodies(Part.read(_shared_impeller()), "Impeller")
-        cls.fused = cls.doc.addObject("Part::Feature", "Fused")
-        cls.fused.Shape = solid
+        cls.doc.UndoMode = 1
+        part = cls.doc.addObject("Part::Feature", "Impeller")
+        part.Shape = Part.read(_shared_impeller())
         cls.doc.recompute()
+        cls.fused, cls.summary = add_fused_part(part)  # as Program impeller offers it
         cls.result = recognition.recognise(cls.fused)
 
     @classmethod

@@ -166,6 +166,25 @@ TEST(ImpellerRecognition, ThreeAndThreeWithoutFillets) {
     checkSpec(s);
 }
 
+// The wider families: 5 to 13 blades, with and without splitters and root fillets.
+TEST(ImpellerRecognition, Families) {
+    struct Family {
+        int blades;
+        bool splitters;
+        double fillet, thickness;
+    };
+    for (const Family& fam : {Family{5, false, 0.0, 2.0}, Family{13, false, 1.0, 2.0}, Family{11, true, 0.0, 2.0}}) {
+        SCOPED_TRACE(std::to_string(fam.blades) + (fam.splitters ? " + splitters" : "") + ", fillet " +
+                     std::to_string(fam.fillet));
+        ImpellerSpec s;
+        s.bladeCount = fam.blades;
+        s.splitters = fam.splitters;
+        s.filletRadius = fam.fillet;
+        s.bladeThickness = fam.thickness;
+        checkSpec(s);
+    }
+}
+
 TEST(ImpellerRecognition, NotAnImpeller) {
     // A panel: many faces of equal area, none repeated about an axis.
     const auto panel = testparts::makePanel(testparts::PanelSpec{});
