@@ -22,14 +22,42 @@ def selected_program():
     return None
 
 
+def selected_bodies():
+    """The selected object if exactly one object holding several solids (a part exported as
+    separate bodies) is selected, else None."""
+    sel = FreeCADGui.Selection.getSelection()
+    if len(sel) != 1:
+        return None
+    shape = getattr(sel[0], "Shape", None)
+    try:
+        return sel[0] if shape is not None and not shape.isNull() and len(shape.Solids) > 1 else None
+    except Exception:
+        return None
+
+
 def selected_target():
-    """("program", obj) or ("part", solid) for the selection, else None."""
+    """("program", obj), ("part", solid) or ("bodies", obj of several solids) for the selection,
+    else None."""
     prog = selected_program()
     if prog is not None:
         return "program", prog
     from aeronc.commands.recognise_features import selected_solid
     part = selected_solid()
-    return ("part", part) if part is not None else None
+    if part is not None:
+        return "part", part
+    bodies = selected_bodies()
+    return ("bodies", bodies) if bodies is not None else None
+
+
+def ask_fuse(obj):
+    """Whether the user wants obj's bodies fused into one solid (tests may replace this)."""
+    from PySide import QtGui
+    text = ("{} holds {} solids (bodies exported separately, e.g. a hub and its blades); impeller "
+            "recognition needs one solid.\n\nFuse them into a new solid? The original is kept, hidden; "
+            "one undo step removes the fused copy.").format(obj.Label, len(obj.Shape.Solids))
+    answer = QtGui.QMessageBox.question(FreeCADGui.getMainWindow(), "AeroNC: Program impeller", text,
+                                        QtGui.QMessageBox.Yes | QtGui.QMessageBox.No)
+    return answer == QtGui.QMessageBox.Yes
 
 
 class ProgramImpeller(Command):
@@ -45,5 +73,11 @@ class ProgramImpeller(Command):
     def run(self, found):
         from aeronc.panels.impeller_panel import ImpellerPanel
         kind, obj = found
+        if kind == "bodies":
+            if not ask_fuse(obj):
+                return
+            from aeronc.objects.fused_part import add_fused_part
+            obj, _ = add_fused_part(obj)
+            kind = "part"
         panel = ImpellerPanel(program=obj) if kind == "program" else ImpellerPanel(part=obj)
         FreeCADGui.Control.showDialog(panel)

@@ -77,9 +77,9 @@ def add_features(doc, part, result):
         kind = b["kind"]
         nodes.append(_node(doc, part, kind + "_blade", "Blade {} ({})".format(i, kind),
                            recognition.blade_wall_faces(b), b, i))
-    nodes.append(_node(doc, part, "hub", "Hub", [result["hub"]]))
+    nodes.append(_node(doc, part, "hub", "Hub", recognition.hub_faces(result)))
     nodes.append(_node(doc, part, "root_fillets", "Root fillets", [f for b in result["blades"] for f in b["fillets"]]))
-    nodes.append(_node(doc, part, "shroud", "Shroud", [b["shroud"] for b in result["blades"]]))
+    nodes.append(_node(doc, part, "shroud", "Shroud", [f for b in result["blades"] for f in recognition.shroud_faces(b)]))
     if result.get("bore"):
         nodes.append(_node(doc, part, "bore", "Bore \u00d8{:g}".format(round(result["dimensions"]["boreDiameter"], 3)),
                            [result["bore"]]))

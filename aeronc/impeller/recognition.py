@@ -20,6 +20,11 @@ def recognise(source):
     channelBlades, filletRadius, bladeHeight, splitterHeight, outerRadius, axialLength), in mm.
     """
     shape, label = shape_of(source)
+    if not shape.isNull() and len(shape.Solids) > 1:
+        raise RecognitionError(
+            "{}: holds {} solids (bodies exported separately, e.g. a hub and its blades); impeller "
+            "recognition needs one solid: fuse them first (Program impeller offers it; "
+            "aeronc.impeller.body_fusion.fuse_bodies)".format(label, len(shape.Solids)))
     check_solid(shape, label)
     core = _core()
     with from_core(RecognitionError, label):
@@ -55,7 +60,7 @@ def program_data(source, allowance=2.0, kb_path=None, route="impeller"):
 def face_roles(result):
     """{FaceN: role} of a recognition result: hub, bore, hole, plane, turned, and per blade
     "main 3 pressure", "splitter 3 fillet", ... (blade numbers from 0 in angular order)."""
-    roles = {result["hub"]: "hub"}
+    roles = {f: "hub" for f in hub_faces(result)}
     if result.get("bore"):
         roles[result["bore"]] = "bore"
     for key, name in (("holes", "hole"), ("planes", "plane"), ("turned", "turned")):
@@ -65,6 +70,8 @@ def face_roles(result):
         tag = "{} {}".format(b["kind"], i)
         for f in b["walls"]:
             roles[f] = tag + " wall"
+        for f in shroud_faces(b):
+            roles[f] = tag + " shroud"
         for key in ("pressure", "suction", "leading", "trailing", "shroud"):
             if b.get(key):
                 roles[b[key]] = "{} {}".format(tag, key)
@@ -83,7 +90,7 @@ def face_role_names(result):
             if 1 <= f <= len(roles):
                 roles[f - 1] = role
 
-    put([result["hub"]], "hub")
+    put(hub_faces(result), "hub")
     if result.get("bore"):
         put([result["bore"]], "bore")
     put(result.get("holes", []), "hole_wall")
@@ -92,7 +99,7 @@ def face_role_names(result):
     for b in result["blades"]:
         put(blade_wall_faces(b), b["kind"] + "_blade")
         put(b["fillets"], "root_fillet")
-        put([b["shroud"]], "shroud")
+        put(shroud_faces(b), "shroud")
     return roles
 
 
@@ -101,3 +108,14 @@ def blade_wall_faces(blade):
     any other walls (edge rounds), each once."""
     faces = [blade[k] for k in ("pressure", "suction", "leading", "trailing") if blade.get(k)]
     return faces + [f for f in blade.get("walls", []) if f not in faces]
+
+
+def hub_faces(result):
+    """Every hub face of the result: one face of revolution, or a piece per channel as exporters
+    write it (results stored before the hub had several faces name only "hub")."""
+    return list(result.get("hubFaces") or [result["hub"]])
+
+
+def shroud_faces(blade):
+    """Every shroud (tip) face of one blade of the result."""
+    return list(blade.get("shroudFaces") or [blade["shroud"]])

@@ -48,8 +48,10 @@ def reread(program_path, tools, arc_step=0.5):
         with open(table, "w") as f:
             for number, diameter in sorted(tools.items()):
                 f.write("T{0} P{0} D{1:.4f} Z0.0\n".format(int(number), float(diameter)))
+        # rs274 keeps its tool table in $HOME/.tool.mmap: a HOME of its own, so that no other rs274
+        # (another program of this job, another job) reads or truncates this one's tools.
         run = subprocess.run([rs274_path(), "-t", table, "-g", program_path], capture_output=True, text=True,
-                             timeout=600)
+                             timeout=600, env=dict(os.environ, HOME=work))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     errors = [l for l in run.stderr.splitlines() if l.strip() and l.strip() != "executing"]
@@ -111,6 +113,26 @@ def _arc_points(start, end, centre, rotation, step):
     return pts
 
 
+def _reread_all(paths, tools, cache=None, workers=2):
+    """[(key, reread(path))] in the order of paths, the rs274 processes two at a time (each with
+    its own tool table file, see reread); key: the program's text and tools, under which cache (a
+    dict, or None) keeps what was read."""
+    import hashlib
+    from concurrent.futures import ThreadPoolExecutor
+    keys = []
+    for path in paths:
+        with open(path, "rb") as f:
+            keys.append((hashlib.sha1(f.read()).hexdigest(), tuple(sorted(tools.items()))))
+    todo = {k: p for k, p in zip(keys, paths) if cache is None or k not in cache}
+    with ThreadPoolExecutor(max_workers=max(1, min(workers, len(todo)))) as pool:
+        done = [(k, pool.submit(reread, p, tools)) for k, p in todo.items()]
+        read = {k: f.result() for k, f in done}  # the first failure, in program order, is raised
+    if cache is not None:
+        cache.update(read)
+        read = cache
+    return [(k, read[k]) for k in keys]
+
+
 def machine_tips(ops, machine_json):
     """[(tool tips, last tool axis)] per operation: the forward kinematics of every move, in the
     Job's frame (the machine read once per operation)."""
@@ -157,7 +179,7 @@ def plunges_marked(moves):
     return out
 
 
-def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, blank, cell_size=0.5):
+def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, blank, cell_size=0.5, cache=None):
     """Re-read each posted LinuxCNC program and simulate them all against the blank: (the core's
     report, the number of operations simulated). programs: [{"path", "setup", "partZero", "job",
     "frame"}] in machining order; ops_by_label: {label: (Job, operation)} of the chain's Jobs;
@@ -176,12 +198,21 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
             if cutter:
                 tools[tc.ToolNumber] = cutter["diameter"]
     sim_ops, setups = [], []
-    for p in programs:
-        read = reread(p["path"], tools)
+    reads = _reread_all([p["path"] for p in programs], tools, cache)
+    for p, (key, read) in zip(programs, reads):
         to_part = setup_job.frame_placement(p["frame"]).inverse()
-        tips = machine_tips(read, json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"]))))
-        in_part = placed(read, tips, to_part)
-        in_job = placed(read, tips, FreeCAD.Placement())
+        machine_zero = json.dumps(dict(json.loads(machine_json), partZero=list(p["partZero"])))
+        key = (key, machine_zero, tuple(to_part.toMatrix().A))
+        if cache is not None and key in cache:
+            in_part, in_job = cache[key]
+        else:
+            tips = machine_tips(read, machine_zero)
+            in_part = placed(read, tips, to_part)
+            in_job = placed(read, tips, FreeCAD.Placement())
+            if cache is not None:
+                cache[key] = (in_part, in_job)
+        # Copies: the cutter and allowances are set on them below.
+        in_part, in_job = [dict(o) for o in in_part], [dict(o) for o in in_job]
         for op, op_job in zip(in_part, in_job):
             job, fc_op = ops_by_label.get(op["label"], (None, None))
             if fc_op is None:

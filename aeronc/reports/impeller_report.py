@@ -63,10 +63,11 @@ def _features(run):
         same = bool(tb) and all(b.get(k) == tb.get(k) for k in ("pressure", "suction", "leading", "trailing")) \
             and sorted(b["fillets"]) == sorted(tb.get("fillets", [])) and (b["kind"] == "splitter") == tb.get("splitter")
         exact &= same
+        shroud = ", ".join(str(f) for f in (b.get("shroudFaces") or [b["shroud"]]))
         rows.append((i, esc(b["kind"]), num(b.get("angleDeg"), 2), b.get("pressure"), b.get("suction"),
-                     b.get("leading"), b.get("trailing"), b["shroud"], ", ".join(str(f) for f in b["fillets"]),
+                     b.get("leading"), b.get("trailing"), shroud, ", ".join(str(f) for f in b["fillets"]),
                      verdict(same)))
-    singles = [("hub", [r["hub"]], [t.get("hub")]), ("bore", [r.get("bore")], [t.get("bore")]),
+    singles = [("hub", list(r.get("hubFaces") or [r["hub"]]), [t.get("hub")]), ("bore", [r.get("bore")], [t.get("bore")]),
                ("planes", sorted(r.get("planes", [])), sorted(t.get("planes", [])))]
     other = []
     for name, got, want in singles:

@@ -46,6 +46,7 @@ class MainJob:
         self.no_program = []   # the setups every operation of which is left out
         self.simulated = 0     # operations in the last simulation
         self.work = None       # a private folder for the programs the verification re-reads
+        self.reread = {}       # what the verification read of each program, kept across the gate's rounds
 
 
 def _counts(result):
@@ -281,7 +282,7 @@ def _simulate(job):
         return None
     report, job.simulated = verification.verify_programs(
         programs, job.ops_by_label, job.machine, job.chain, job.result, job.part.Shape,
-        setup_job.blank_box(job.group), job.cell_size)
+        setup_job.blank_box(job.group), job.cell_size, cache=job.reread)
     return report
 
 

@@ -6,6 +6,7 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/impeller/Blank.h>
+#include <aeronc/impeller/BodyFusion.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/AxialOperations.h>
@@ -116,6 +117,28 @@ void onPart(const std::string& path, const std::function<void(const TopoDS_Shape
             std::vector<std::string>* faceNames = nullptr) {
     aeronc::runCatchingOcctFaults(
         [&] { work(faceNames ? aeronc::loadStepWithFaceNames(path, *faceNames) : aeronc::loadPart(path)); }, path);
+}
+
+// The impeller of a part file as one solid. A file of several bodies (exported hub and blades)
+// is refused with the reason unless `fuse` is set; then its bodies are fused (BodyFusion.h).
+void onImpeller(const std::string& path, bool fuse, const std::function<void(const TopoDS_Shape&)>& work) {
+    aeronc::runCatchingOcctFaults(
+        [&] {
+            const TopoDS_Shape shape = aeronc::loadShape(path);
+            const int solids = aeronc::impeller::solidCount(shape);
+            if (solids > 1 && !fuse)
+                throw aeronc::inputError(path + ": holds " + std::to_string(solids) +
+                                         " solids (bodies exported separately, e.g. a hub and its blades); "
+                                         "recognition needs one part: add --fuse to fuse the bodies into one solid");
+            if (solids > 1) {
+                const auto f = aeronc::impeller::fuseBodies(shape);
+                std::cerr << path << ": " << f.summary << "\n";
+                work(aeronc::validatedSolid(f.solid, path + " (bodies fused)"));
+            } else {
+                work(aeronc::validatedSolid(shape, path));
+            }
+        },
+        path);
 }
 
 fs::path executableDir(const char* argv0) {
@@ -369,14 +392,16 @@ int impellerCmd(int argc, char** argv) {
     if (argc < 3) throw aeronc::inputError("impeller needs a part file");
     const std::string part = argv[2];
     std::string jsonOut;
+    bool fuse = false;
     forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
         if (a == "--json") jsonOut = next();
+        else if (a == "--fuse") fuse = true;
         else return false;
         return true;
     });
     aeronc::impeller::ImpellerFeatures f;
     aeronc::impeller::ImpellerDimensions d;
-    onPart(part, [&](const TopoDS_Shape& solid) {
+    onImpeller(part, fuse, [&](const TopoDS_Shape& solid) {
         f = aeronc::impeller::recogniseImpeller(solid);
         d = aeronc::impeller::measureImpeller(solid, f);
     });
@@ -420,9 +445,11 @@ int impellerProgramCmd(int argc, char** argv) {
     if (argc < 3) throw inputError("impeller-program needs a part file");
     const std::string part = argv[2];
     std::string kbPath, out, resources;
+    bool fuse = false;
     kb::ImpellerProgramOptions opt;
     forEachOption(argc, argv, [&](const std::string& a, const Next& next) {
         if (a == "--kb") kbPath = next();
+        else if (a == "--fuse") fuse = true;
         else if (a == "--out") out = next();
         else if (a == "--resources") resources = next();
         else if (a == "--material") opt.material = next();
@@ -453,7 +480,7 @@ int impellerProgramCmd(int argc, char** argv) {
     impellerpath::CheckResult again, rapids;
     double tRecognise = 0, tPaths = 0, tCheck = 0;
     std::string apt, axialApt;
-    onPart(part, [&](const TopoDS_Shape& solid) {
+    onImpeller(part, fuse, [&](const TopoDS_Shape& solid) {
         auto t0 = Clock::now();
         f = impeller::recogniseImpeller(solid);
         d = impeller::measureImpeller(solid, f);
@@ -565,13 +592,14 @@ const Command kCommands[] = {
      "      (the NC machining chain: units, order, travel, rule checks; family default integral_panel;\n"
      "       --tool-plan: the tools select-tools planned (its --json), else the tools are planned here)\n"},
     {"impeller", nullptr, true, impellerCmd,
-     "  aeronc impeller PART [--json OUT] [--time-limit S]\n"
-     "      (impeller recognition by rules and its dimensions, docs/impeller.md)\n"},
+     "  aeronc impeller PART [--fuse] [--json OUT] [--time-limit S]\n"
+     "      (impeller recognition by rules and its dimensions, docs/impeller.md; --fuse: a part of\n"
+     "       several bodies, e.g. hub and blades exported apart, is fused into one solid first)\n"},
     {"impeller-part", nullptr, false, impellerPartCmd,
      "  aeronc impeller-part OUT.step|OUT.brep [--spec JSON] [--truth TRUTH.json]\n"
      "      (a generated impeller; JSON keys as ImpellerSpec, e.g. '{\"bladeCount\": 7}')\n"},
     {"impeller-program", nullptr, true, impellerProgramCmd,
-     "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--material NAME] [--machine NAME] [--stations N]\n"
+     "  aeronc impeller-program PART --kb KB.sqlite --out DIR [--fuse] [--material NAME] [--machine NAME] [--stations N]\n"
      "                          [--channels N] [--resources DIR] [--time-limit S]\n"
      "      (recognition, route, 5-axis toolpaths checked for gouges and holder collisions, cutting data,\n"
      "       APT and the 840D program under TRAORI for the machine (default AC-5AX), in DIR; docs/impeller.md)\n"},

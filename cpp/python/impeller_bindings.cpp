@@ -7,6 +7,7 @@
 #include <aeronc/brep/OcctFaults.h>
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/impeller/Blank.h>
+#include <aeronc/impeller/BodyFusion.h>
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impeller/ProcessRoute.h>
@@ -155,6 +156,28 @@ void bindImpeller(py::module_& m) {
         "Recognise and measure the impeller, build its blank (the outer profile grown by the allowance, "
         "revolved) and plan its route from the knowledge base at kb_path (built from sql_folder when "
         "missing): (json_text with \"route\" and \"blank\" added to recognise_impeller's, blank_brep_text).");
+
+    m.def(
+        "fuse_bodies",
+        [](const std::string& brep) {
+            return python::guarded([&] {
+                impeller::FusedBodies fused;
+                {
+                    py::gil_scoped_release nogil;
+                    runCatchingOcctFaults([&] { fused = impeller::fuseBodies(shapeFromBrepText(brep)); },
+                                          "fusing the bodies");
+                }
+                std::ostringstream os;
+                BRepTools::Write(fused.solid, os);
+                const nlohmann::json j{{"bodies", fused.bodies}, {"fused", fused.fused}, {"dropped", fused.dropped},
+                                       {"fuzzyValue", fused.fuzzyValue}, {"summary", fused.summary}};
+                return py::make_tuple(os.str(), j.dump());
+            });
+        },
+        py::arg("brep_text"),
+        "Fuse the solids of a shape given as BREP text (a part exported as several bodies) into one "
+        "valid solid, one body at a time with a fuzzy value: (brep_text, summary_json with bodies, fused, "
+        "dropped, fuzzyValue, summary).");
 
     m.def(
         "make_impeller",

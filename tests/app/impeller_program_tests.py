@@ -340,8 +340,21 @@ class BadPartsTest(unittest.TestCase):
     def test_unequal_blade_groups(self):
         self.refused(lambda doc: _part(doc, dict(SPEC, omitSplitter=1))[0], "^Impeller: unequal blade groups")
 
-    def test_missing_hub(self):
-        self.refused(lambda doc: _part(doc, dict(SPEC, filletRadius=0.0))[0], "^Impeller: missing hub")
+    def test_blades_without_root_fillets_are_recognised(self):
+        # Once refused as "missing hub"; exported impellers often have sharp blade roots.
+        doc = new_document("ImpellerNoFillets")
+        try:
+            part, truth = _part(doc, dict(SPEC, filletRadius=0.0))
+            result = recognition.recognise(part)
+            self.assertEqual(result["bladeCount"], truth["bladeCount"])
+            self.assertEqual(result["splitterCount"], truth["bladeCount"])
+            self.assertEqual(recognition.hub_faces(result), [truth["hub"]])
+            self.assertEqual(result["bore"], truth["bore"])
+            self.assertEqual(sorted(b["shroud"] for b in result["blades"]),
+                             sorted(b["shroud"] for b in truth["blades"]))
+            self.assertTrue(all(not b["fillets"] for b in result["blades"]))
+        finally:
+            FreeCAD.closeDocument(doc.Name)
 
     def test_a_real_part_is_refused(self):
         data = os.environ.get("AERONC_SHARED_DATA", "")

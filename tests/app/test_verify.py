@@ -190,3 +190,60 @@ class MachineTipsTest(unittest.TestCase):
         last = turn.Rotation.multVec(FreeCAD.Vector(*axis))
         self.assertLess((FreeCAD.Vector(*got["axis"]) - last).Length, 1e-8)
         self.assertGreater(abs(got["axis"][2] - 1.0), 0.1)  # a tilted axis: the rotaries count
+
+
+class RereadRoundsTest(unittest.TestCase):
+    """The gate posts and verifies again after leaving operations out: the programs whose text is
+    unchanged are not re-read by rs274 again, a changed one is, and the reads come back in the
+    programs' order."""
+
+    def _program(self, folder, name, depth):
+        path = os.path.join(folder, name)
+        with open(path, "w") as f:
+            f.write("(operation: Pocket {0})\nG21 G90\nT1 M6\nG0 X0 Y0 Z10\nG1 Z{1} F100\nG1 X{2} F300\n"
+                    "G0 Z10\nM2\n".format(name, -depth, 10 + depth))
+        return path
+
+    def test_an_unchanged_program_is_not_read_again(self):
+        import tempfile
+        from unittest import mock
+        from aeronc.pipeline import verification
+        folder = tempfile.mkdtemp(prefix="aeronc_reread_test_")
+        paths = [self._program(folder, "p{}.ngc".format(k), k + 1) for k in range(3)]
+        tools = {1: 10.0}
+        calls = []
+        real = verification.reread
+
+        def counted(path, t):
+            calls.append(os.path.basename(path))
+            return real(path, t)
+
+        cache = {}
+        with mock.patch.object(verification, "reread", counted):
+            first = verification._reread_all(paths, tools, cache)
+            self.assertEqual(sorted(calls), ["p0.ngc", "p1.ngc", "p2.ngc"])
+            for path, (_, read) in zip(paths, first):
+                self.assertEqual(read, real(path, tools))
+            del calls[:]
+            again = verification._reread_all(paths, tools, cache)
+            self.assertEqual(calls, [])
+            self.assertEqual([r for _, r in again], [r for _, r in first])
+            self._program(folder, "p1.ngc", 5)  # the gate left something out of this one
+            changed = verification._reread_all(paths, tools, cache)
+            self.assertEqual(calls, ["p1.ngc"])
+        self.assertEqual(changed[1][1][0]["label"], "Pocket p1.ngc")
+        self.assertEqual(changed[1][1][0]["moves"][-2][3], -5.0)  # the new depth, read
+        self.assertEqual(changed[0][1], first[0][1])
+
+    def test_rs274_keeps_its_tool_table_out_of_the_users_home(self):
+        # rs274 writes its tool table to $HOME/.tool.mmap: two under one HOME (two programs read
+        # at once, two jobs) read each other's tools. Each re-read has a HOME of its own.
+        import tempfile
+        from unittest import mock
+        from aeronc.pipeline import verification
+        home = tempfile.mkdtemp(prefix="aeronc_reread_home_")
+        path = self._program(home, "p.ngc", 2)
+        with mock.patch.dict(os.environ, {"HOME": home}):
+            read = verification.reread(path, {1: 10.0})
+        self.assertEqual(read[0]["tool"], 1)
+        self.assertFalse(os.path.exists(os.path.join(home, ".tool.mmap")))

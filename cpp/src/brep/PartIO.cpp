@@ -89,7 +89,9 @@ TopoDS_Shape shapeFromBrepText(const std::string& text) {
     return shape;
 }
 
-TopoDS_Shape loadPart(const std::string& path) {
+TopoDS_Shape loadPart(const std::string& path) { return validatedSolid(loadShape(path), path); }
+
+TopoDS_Shape loadShape(const std::string& path) {
     namespace fs = std::filesystem;
     std::error_code ec;
     if (!fs::exists(path, ec)) throw inputError(path + ": no such file");
@@ -114,7 +116,8 @@ TopoDS_Shape loadPart(const std::string& path) {
     } catch (const Standard_Failure& f) {
         throw inputError(path + ": reading failed: " + f.GetMessageString());
     }
-    return validatedSolid(shape, path);
+    if (shape.IsNull()) throw inputError(path + ": holds no shape");
+    return shape;
 }
 
 TopoDS_Shape loadStepWithFaceNames(const std::string& path, std::vector<std::string>& faceNames) {

@@ -87,6 +87,11 @@ AreaAndCentroid integrate(const Handle(Geom_BSplineSurface)& bs, const Rectangle
 
 }  // namespace
 
+bool isParameterRectangle(const TopoDS_Face& face) {
+    Rectangle r;
+    return rectangleDomain(face, r);
+}
+
 AreaAndCentroid areaAndCentroid(const TopoDS_Face& face) {
     const Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
     Rectangle r;

@@ -16,4 +16,8 @@ struct AreaAndCentroid {
 // area (the grouping tolerance). Any other face goes through BRepGProp.
 AreaAndCentroid areaAndCentroid(const TopoDS_Face& face);
 
+// Whether the face is its surface's parameter rectangle (every point of its parameter bounds is
+// on the face): one wire whose every edge runs along a side of the bounds.
+bool isParameterRectangle(const TopoDS_Face& face);
+
 }  // namespace aeronc::impeller

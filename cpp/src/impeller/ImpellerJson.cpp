@@ -16,7 +16,8 @@ std::string impellerToJson(const ImpellerFeatures& f, const ImpellerDimensions& 
                           {"trailing", b.trailing},
                           {"walls", b.walls},
                           {"fillets", b.fillets},
-                          {"shroud", b.shroud}});
+                          {"shroud", b.shroud},
+                          {"shroudFaces", b.shroudFaces}});
     json doc = {
         {"units", "mm"},
         {"faceCount", f.faceCount},
@@ -24,6 +25,7 @@ std::string impellerToJson(const ImpellerFeatures& f, const ImpellerDimensions& 
         {"bladeCount", f.bladeCount},
         {"splitterCount", f.splitterCount},
         {"hub", f.hub},
+        {"hubFaces", f.hubFaces},
         {"bore", f.bore},
         {"holes", f.holes},
         {"planes", f.planes},

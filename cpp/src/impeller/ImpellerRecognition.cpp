@@ -1,10 +1,9 @@
 // Rule-based impeller recognition (impeller paper §1):
 //   1. planes and holes (concave cylinders) are classified directly;
-//   2. the other faces are grouped by equal area; a group whose members are copies of one
-//      another about one axis is a pattern, and the axis is fitted to the largest group's
-//      centroids. Every blade face repeats once per blade, so the smallest pattern is m, the
-//      blade count; a group of 2m holds faces that main and splitter blades share (congruent
-//      trailing edges). A group of any other size, or not evenly spaced, means unequal blades;
+//   2. the axis and the blade count m come from the part's rotational symmetry: the turn by
+//      2π/m about the axis takes points sampled on the faces back onto the part
+//      (RotationalSymmetry.h); the faces it takes onto one another are the patterns. A face
+//      without a copy a turn on means unequal blades;
 //   3. the hub is the single face tangent to the root fillets: every member of some pattern;
 //   4. the blade walls are the patterns tangent to the fillets, the shroud faces the patterns
 //      that meet the walls;
@@ -13,10 +12,17 @@
 #include <aeronc/impeller/ImpellerFeatures.h>
 
 #include "FaceGraph.h"
+#include "RotationalSymmetry.h"
 
 #include <aeronc/core/Error.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <NCollection_IndexedDataMap.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
+#include <TopoDS.hxx>
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -29,6 +35,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -38,8 +45,9 @@ namespace aeronc::impeller {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kAreaTolerance = 2e-3;     // relative: copies differ by OCCT's approximations only
-constexpr double kAngleTolerance = 0.01;    // rad, spacing of pattern members
+constexpr double kSplitterShare = 0.1;
+constexpr double kHubShare = 0.25;  // a hub face carries at least this share of the longest blade root a face carries
+constexpr double kMeridianSine = 0.05;  // the normal of a face of revolution leaves its meridian plane by this much at most (an exporter's B-spline)   // a splitter's shroud is this much smaller than a main blade's at least (exported copies differ by 1 %)
 
 struct Axis {
     gp_Pnt point;
@@ -50,13 +58,6 @@ struct Axis {
         return v - gp_Vec(dir) * v.Dot(gp_Vec(dir));
     }
 };
-
-std::string joinSizes(const std::set<int>& sizes) {
-    std::ostringstream s;
-    int k = 0;
-    for (int n : sizes) s << (k++ ? ", " : "") << n;
-    return s.str();
-}
 
 // A concave cylinder: its outward normal points towards its own axis.
 bool isHole(const FaceGraph& g, int f) {
@@ -76,67 +77,6 @@ bool isHole(const FaceGraph& g, int f) {
     return r.Magnitude() > 1e-9 && n.Dot(r) < 0;
 }
 
-// Splits `faces` (sorted by key) where two neighbours' keys differ by more than tol.
-template <class Key>
-std::vector<std::vector<int>> splitSorted(std::vector<int> faces, Key key, double tol) {
-    std::sort(faces.begin(), faces.end(), [&](int a, int b) { return key(a) < key(b); });
-    std::vector<std::vector<int>> out;
-    for (int f : faces) {
-        if (out.empty() || key(f) - key(out.back().back()) > tol) out.push_back({});
-        out.back().push_back(f);
-    }
-    return out;
-}
-
-// Groups of faces of the same surface type and equal area, largest first. Copies of a face
-// differ in area by OCCT's approximations (a fillet up to 0.1 %), while distinct faces of a blade
-// can come as close (edge rounds of equal height); so a group is also split by the distance of
-// its faces' centroids from the centroid of the whole boundary, which lies on the axis of any
-// rotational pattern and is the same for every copy.
-std::vector<std::vector<int>> groupByArea(const FaceGraph& g, const std::vector<int>& faces, double distTol) {
-    gp_XYZ c(0, 0, 0);
-    double total = 0;
-    for (int f = 1; f <= g.size(); ++f) c += g[f].centroid.XYZ() * g[f].area, total += g[f].area;
-    const gp_Pnt centre(total > 0 ? c / total : c);
-    std::vector<std::vector<int>> groups;
-    for (const auto& byType : splitSorted(faces, [&](int f) { return static_cast<double>(g[f].type); }, 0.5)) {
-        double largest = 0;
-        for (int f : byType) largest = std::max(largest, g[f].area);
-        auto logArea = [&](int f) { return std::log(std::max(g[f].area, 1e-12)); };
-        for (const auto& byArea : splitSorted(byType, logArea, kAreaTolerance))
-            for (auto& grp : splitSorted(byArea, [&](int f) { return g[f].centroid.Distance(centre); }, distTol))
-                groups.push_back(std::move(grp));
-    }
-    std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
-    return groups;
-}
-
-// The axis through the centroids of a group, when they lie on one circle (the circle through
-// three of them far apart).
-bool fitAxis(const FaceGraph& g, const std::vector<int>& group, double tol, Axis& out) {
-    const gp_Pnt p0 = g[group[0]].centroid;
-    gp_Pnt p1 = p0, p2 = p0;
-    for (int f : group)
-        if (g[f].centroid.Distance(p0) > p1.Distance(p0)) p1 = g[f].centroid;
-    double bestArea = 0;
-    for (int f : group) {
-        const double a = gp_Vec(p0, p1).Crossed(gp_Vec(p0, g[f].centroid)).Magnitude();
-        if (a > bestArea) bestArea = a, p2 = g[f].centroid;
-    }
-    if (p1.Distance(p0) < tol || bestArea < tol * p1.Distance(p0)) return false;
-    // Circumcentre of p0, p1, p2.
-    const gp_Vec a(p0, p1), b(p0, p2), n = a.Crossed(b);
-    const gp_Vec toCentre = (n.Crossed(a) * b.SquareMagnitude() + b.Crossed(n) * a.SquareMagnitude()) /
-                            (2 * n.SquareMagnitude());
-    out = Axis{p0.Translated(toCentre), gp_Dir(n)};
-    const double r0 = toCentre.Magnitude();
-    for (int f : group) {
-        if (std::abs(out.axial(g[f].centroid)) > tol) return false;
-        if (std::abs(out.radial(g[f].centroid).Magnitude() - r0) > tol) return false;
-    }
-    return true;
-}
-
 // Angle of p about the axis from a fixed reference direction, in [0, 2π).
 double angleAbout(const Axis& a, const gp_Pnt& p) {
     gp_Dir ref = std::abs(a.dir.X()) < 0.9 ? gp_Dir(1, 0, 0) : gp_Dir(0, 1, 0);
@@ -145,26 +85,6 @@ double angleAbout(const Axis& a, const gp_Pnt& p) {
     const gp_Vec r = a.radial(p);
     double t = std::atan2(r.Dot(yn), r.Dot(xn));
     return t < 0 ? t + 2 * kPi : t;
-}
-
-// Whether the group's centroids are on the axis circle, evenly spaced.
-bool evenlySpaced(const FaceGraph& g, const Axis& a, const std::vector<int>& group, double tol) {
-    const double r0 = a.radial(g[group[0]].centroid).Magnitude();
-    const double z0 = a.axial(g[group[0]].centroid);
-    if (r0 < tol) return false;
-    std::vector<double> angles;
-    for (int f : group) {
-        if (std::abs(a.radial(g[f].centroid).Magnitude() - r0) > tol || std::abs(a.axial(g[f].centroid) - z0) > tol)
-            return false;
-        angles.push_back(angleAbout(a, g[f].centroid));
-    }
-    std::sort(angles.begin(), angles.end());
-    const double step = 2 * kPi / group.size();
-    for (size_t i = 0; i < angles.size(); ++i) {
-        const double next = i + 1 < angles.size() ? angles[i + 1] : angles[0] + 2 * kPi;
-        if (std::abs(next - angles[i] - step) > kAngleTolerance) return false;
-    }
-    return true;
 }
 
 // The exact axis of a face of revolution (cylinder, cone, torus, sphere, swept), if it has one.
@@ -186,6 +106,143 @@ double shapeDistance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
     return d.Value();
 }
 
+
+// How far a face's normal turns round the axis: the largest and the mean |n . theta| over a grid
+// of its points (theta the direction round the axis). 0 on a face of revolution about the axis
+// (a hub, a turned tip, a plane across the axis), whatever its surface type (an exporter writes
+// such faces as B-splines); near 1 on a blade's side wall.
+struct NormalTurn {
+    double largest = 0, mean = 0;
+    bool known = false;
+};
+
+NormalTurn normalTurn(const FaceGraph& g, int f, const Axis& axis) {
+    BRepAdaptor_Surface s(g[f].face);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(g[f].face, u0, u1, v0, v1);
+    NormalTurn out;
+    int tried = 0;
+    for (int i = 1; i <= 5; ++i)
+        for (int j = 1; j <= 5; ++j) {
+            gp_Pnt p;
+            gp_Vec du, dv;
+            s.D1(u0 + (u1 - u0) * i / 6.0, v0 + (v1 - v0) * j / 6.0, p, du, dv);
+            const gp_Vec n = du.Crossed(dv), r = axis.radial(p);
+            if (n.Magnitude() < 1e-12 || r.Magnitude() < 1e-6) continue;
+            const double t = std::abs(n.Normalized().Dot(gp_Vec(axis.dir).Crossed(r).Normalized()));
+            out.largest = std::max(out.largest, t);
+            out.mean += t;
+            ++tried;
+        }
+    if (tried) out.mean /= tried, out.known = true;
+    return out;
+}
+
+// The angle about the axis a face's boundary spans, radians (2π for a face all round).
+double angularSpan(const FaceGraph& g, int f, const Axis& axis) {
+    std::vector<double> t;
+    for (TopExp_Explorer e(g[f].face, TopAbs_EDGE); e.More(); e.Next()) {
+        if (BRep_Tool::Degenerated(TopoDS::Edge(e.Current()))) continue;
+        BRepAdaptor_Curve c(TopoDS::Edge(e.Current()));
+        for (int k = 0; k <= 16; ++k) {
+            const gp_Pnt p = c.Value(c.FirstParameter() + (c.LastParameter() - c.FirstParameter()) * k / 16.0);
+            if (axis.radial(p).Magnitude() > 1e-6) t.push_back(angleAbout(axis, p));
+        }
+    }
+    if (t.size() < 2) return 0;
+    std::sort(t.begin(), t.end());
+    double gap = t.front() + 2 * kPi - t.back();
+    for (size_t k = 1; k < t.size(); ++k) gap = std::max(gap, t[k] - t[k - 1]);
+    return 2 * kPi - gap;
+}
+
+bool coaxialCylinder(const FaceGraph& g, int f, const Axis& axis, double tol) {
+    if (g[f].type != GeomAbs_Cylinder) return false;
+    const gp_Cylinder c = BRepAdaptor_Surface(g[f].face).Cylinder();
+    return c.Axis().Direction().IsParallel(axis.dir, 1e-3) && axis.radial(c.Location()).Magnitude() < tol;
+}
+
+// Blades standing straight on the hub, without root fillets, or on a hub of several faces (a
+// piece per channel, as exporters write it): the hub is the faces of revolution about the axis
+// that span at least half a blade pitch and meet the blade walls; a blade is a connected set of
+// the faces left (faces of revolution spanning a whole channel, the rim and the back, are not
+// blade faces). In a blade, faces not of revolution tangent to the hub are root fillets; faces whose normals run round the axis are walls, and so are coaxial cylinders (the
+// blade's end turned with the rim); the others are its shroud (tip), flat or following the casing.
+void bladesOnHub(const FaceGraph& g, const Axis& axis, int m, const std::set<int>& holeSet, double scale, double tol,
+                 ImpellerFeatures& out) {
+    const double pitch = 2 * kPi / m, minArea = 1e-4 * scale * scale;
+    const int n = g.size();
+    std::vector<char> usable(n + 1, 0), rev(n + 1, 0), wide(n + 1, 0), round(n + 1, 0);
+    for (int f = 1; f <= n; ++f) {
+        usable[f] = !holeSet.count(f) && g[f].area >= minArea;  // slivers along exported intersections do not count
+        if (!usable[f]) continue;
+        const NormalTurn t = normalTurn(g, f, axis);
+        rev[f] = t.known && t.largest <= kMeridianSine;
+        round[f] = t.known && t.mean >= 0.5;
+        wide[f] = rev[f] && angularSpan(g, f, axis) > 0.5 * pitch;
+    }
+    // The length of boundary each wide face shares with blade faces (not of revolution): the hub
+    // carries the blades' roots; the back, the rim and a nose meet at most a blade's end.
+    NCollection_IndexedDataMap<TopoDS_Shape, std::vector<int>, TopTools_ShapeMapHasher> edgeFaces;
+    for (int f = 1; f <= n; ++f)
+        for (TopExp_Explorer e(g[f].face, TopAbs_EDGE); e.More(); e.Next()) {
+            const int i = edgeFaces.FindIndex(e.Current());
+            if (i) edgeFaces(i).push_back(f);
+            else edgeFaces.Add(e.Current(), {f});
+        }
+    std::vector<double> rootLength(n + 1, 0);
+    for (int i = 1; i <= edgeFaces.Extent(); ++i) {
+        const auto& fs = edgeFaces(i);
+        const bool byBlade = std::any_of(fs.begin(), fs.end(), [&](int f) { return usable[f] && !rev[f]; });
+        if (!byBlade || BRep_Tool::Degenerated(TopoDS::Edge(edgeFaces.FindKey(i)))) continue;
+        const double len = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(TopoDS::Edge(edgeFaces.FindKey(i))));
+        for (int f : std::set<int>(fs.begin(), fs.end()))
+            if (wide[f]) rootLength[f] += len;
+    }
+    const double longest = *std::max_element(rootLength.begin(), rootLength.end());
+    std::set<int> hub;
+    for (int f = 1; f <= n; ++f)
+        if (wide[f] && longest > 0 && rootLength[f] >= kHubShare * longest) hub.insert(f);
+    out.hubFaces.assign(hub.begin(), hub.end());
+    out.hub = *std::max_element(hub.begin(), hub.end(), [&](int a, int b) { return rootLength[a] < rootLength[b]; });
+
+    std::vector<char> seen(n + 1, 0);
+    for (int start = 1; start <= n; ++start) {
+        if (seen[start] || !usable[start] || wide[start]) continue;
+        std::vector<int> comp, stack{start};
+        seen[start] = 1;
+        while (!stack.empty()) {
+            const int f = stack.back();
+            stack.pop_back();
+            comp.push_back(f);
+            for (const auto& nb : g.neighbours(f))
+                if (!seen[nb.face] && usable[nb.face] && !wide[nb.face]) seen[nb.face] = 1, stack.push_back(nb.face);
+        }
+        if (std::all_of(comp.begin(), comp.end(), [&](int f) { return rev[f]; })) continue;  // no wall: not a blade
+        Blade b;
+        for (int f : comp) {
+            const bool onHub = !rev[f] && std::any_of(g.neighbours(f).begin(), g.neighbours(f).end(), [&](const Neighbour& nb) {
+                return nb.tangent && hub.count(nb.face);
+            });
+            if (onHub) b.fillets.push_back(f);
+            else if (round[f] || coaxialCylinder(g, f, axis, tol)) b.walls.push_back(f);
+            else b.shroudFaces.push_back(f);
+        }
+        if (b.shroudFaces.empty())
+            throw inputError("not an impeller: the blade with wall " + std::to_string(b.walls.empty() ? comp.front() : b.walls.front()) +
+                             " has no shroud (tip) face");
+        std::sort(b.walls.begin(), b.walls.end());
+        std::sort(b.fillets.begin(), b.fillets.end());
+        std::sort(b.shroudFaces.begin(), b.shroudFaces.end());
+        b.shroud = *std::max_element(b.shroudFaces.begin(), b.shroudFaces.end(),
+                                     [&](int x, int y) { return g[x].area < g[y].area; });
+        out.blades.push_back(b);
+    }
+    if (out.blades.empty()) throw inputError("not an impeller: no blade walls stand on the hub");
+    // The other faces of revolution round a channel (the rim between the blades): turned.
+    for (int f = 1; f <= n; ++f)
+        if (wide[f] && !hub.count(f) && g[f].type != GeomAbs_Plane) out.turned.push_back(f);
+}
 }  // namespace
 
 ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
@@ -208,21 +265,44 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         else rest.push_back(f);
     }
 
-    // 2. Groups of equal area, the axis and the blade count.
-    const auto groups = groupByArea(g, rest, 0.02 * scale);
-    if (groups.empty() || groups.front().size() < 3)
-        throw inputError("not an impeller: no rotational pattern (no face area occurs three or more times)");
-    Axis axis;
-    bool found = false;
-    for (const auto& grp : groups) {  // the largest groups (a blade face on every blade)
-        if (grp.size() < groups.front().size()) break;
-        if ((found = fitAxis(g, grp, tol, axis))) break;
+    // 2. The axis and the blade count from the part's rotational symmetry; the orbits of faces
+    // under it (a blade face and its copies on the other blades) are the patterns.
+    const RotationalSymmetry sym = findRotationalSymmetry(shape, g, std::max(5e-3 * scale, 1e-3), 1e-4 * scale * scale);
+    if (sym.order < 3)
+        throw inputError("not an impeller: no rotational pattern (no axis about which a turn of 360/N degrees, "
+                         "N >= 3, takes the part onto itself, other than faces of revolution)");
+    const int m = sym.order;
+    Axis axis{sym.axis.Location(), sym.axis.Direction()};
+    {
+        // Faces without a copy a turn on: a blade missing or different. Slivers an exporter
+        // leaves along intersections do not count.
+        std::vector<int> differ;
+        for (int f : sym.unmatched)
+            if (g[f].area > 1e-4 * scale * scale) differ.push_back(f);
+        if (!differ.empty()) {
+            std::ostringstream s;
+            s << "unequal blade groups: the part repeats " << m << " times about its axis, but face";
+            s << (differ.size() > 1 ? "s " : " ");
+            for (size_t k = 0; k < differ.size() && k < 12; ++k)
+                s << (k ? ", " : "") << differ[k] << " (at " << std::lround(angleAbout(axis, g[differ[k]].centroid) * 180 / kPi)
+                  << " deg)";
+            if (differ.size() > 12) s << " and " << differ.size() - 12 << " more";
+            s << " have no copy " << std::setprecision(4) << 360.0 / m
+              << " degrees on (a blade is missing or differs from the others)";
+            throw inputError(s.str());
+        }
     }
-    if (!found)
-        throw inputError("not an impeller: no rotational pattern (the " + std::to_string(groups.front().size()) +
-                         " faces of equal area that occur most often are not copies of one another about an axis)");
-    // The centroids give the axis to OCCT's approximation; a bore or a single face of revolution
-    // on it gives it exactly.
+    std::set<int> holeSet(holes.begin(), holes.end()), planeSet(out.planes.begin(), out.planes.end());
+    std::vector<std::vector<int>> groups;
+    for (const auto& orbit : sym.orbits) {
+        std::vector<int> grp;
+        for (int f : orbit)
+            if (!holeSet.count(f) && !planeSet.count(f)) grp.push_back(f);
+        if (!grp.empty()) groups.push_back(std::move(grp));
+    }
+    std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    // The symmetry's axis is exact when a face of revolution gave it; a bore or a single face of
+    // revolution on it gives it exactly when the axes of inertia did.
     std::vector<int> revolved = holes;
     for (const auto& grp : groups)
         if (grp.size() == 1) revolved.push_back(grp.front());
@@ -236,24 +316,10 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         break;
     }
     std::vector<const std::vector<int>*> patterns;
-    std::set<int> sizes, unevenSizes;
-    for (const auto& grp : groups) {
-        if (grp.size() < 2) continue;
-        sizes.insert(static_cast<int>(grp.size()));
-        if (grp.size() >= 3 && evenlySpaced(g, axis, grp, tol)) patterns.push_back(&grp);
-        else unevenSizes.insert(static_cast<int>(grp.size()));
-    }
+    for (const auto& grp : groups)
+        if (static_cast<int>(grp.size()) >= m) patterns.push_back(&grp);
     if (patterns.empty())
-        throw inputError("not an impeller: no rotational pattern (no faces of equal area evenly spaced about the axis)");
-    int m = static_cast<int>(patterns.front()->size());
-    for (const auto* p : patterns) m = std::min(m, static_cast<int>(p->size()));
-    bool equal = unevenSizes.empty();
-    for (int n : sizes) equal = equal && n % m == 0;
-    if (!equal)
-        throw inputError("unequal blade groups: faces of equal area occur " + joinSizes(sizes) +
-                         " times; with " + std::to_string(m) +
-                         " blades every blade face must occur a multiple of " + std::to_string(m) +
-                         " times, evenly spaced about the axis (a blade is missing or differs from the others)");
+        throw inputError("not an impeller: no rotational pattern (no faces repeat about the axis)");
     out.bladeCount = m;
 
     // 3. The hub: the single face tangent to every member of some pattern (the root fillets).
@@ -269,85 +335,99 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
         for (const auto* p : patterns) n += tangentToAll(s, *p);
         if (n > bestCount) bestCount = n, out.hub = s;
     }
-    if (out.hub == 0)
-        throw inputError("missing hub: no single face is tangent to a group of " + std::to_string(m) +
-                         " root fillets (an impeller has a hub of revolution with its blades standing on it, "
-                         "joined by root fillets)");
-
-    // 4. Fillets, walls and shroud faces.
+    // No single face tangent to fillets, or no walls and shroud round them: blades standing
+    // straight on the hub, or a hub of pieces (bladesOnHub).
+    bool onFillets = out.hub != 0;
     std::set<int> fillets, walls, shrouds;
-    std::vector<const std::vector<int>*> others;
-    for (const auto* p : patterns) {
-        if (tangentToAll(out.hub, *p)) fillets.insert(p->begin(), p->end());
-        else others.push_back(p);
-    }
-    auto everyMember = [&](const std::vector<int>& grp, const std::set<int>& set, bool tangentOnly) {
-        return std::all_of(grp.begin(), grp.end(), [&](int f) {
-            for (const auto& n : g.neighbours(f))
-                if (set.count(n.face) && (n.tangent || !tangentOnly)) return true;
-            return false;
-        });
-    };
-    std::vector<const std::vector<int>*> remaining;
-    for (const auto* p : others) {
-        if (everyMember(*p, fillets, true)) walls.insert(p->begin(), p->end());
-        else remaining.push_back(p);
-    }
-    // Walls also run tangentially into one another (side walls into edge rounds).
-    for (bool grew = true; grew;) {
-        grew = false;
-        for (auto it = remaining.begin(); it != remaining.end();) {
-            const bool touchesHub = std::any_of((*it)->begin(), (*it)->end(), [&](int f) { return g.adjacent(f, out.hub); });
-            if (!touchesHub && everyMember(**it, walls, true)) {
-                walls.insert((*it)->begin(), (*it)->end());
-                it = remaining.erase(it);
-                grew = true;
-            } else {
-                ++it;
-            }
-        }
-    }
-    for (const auto* p : remaining)
-        if (everyMember(*p, walls, false)) shrouds.insert(p->begin(), p->end());
-    if (walls.empty()) throw inputError("not an impeller: no blade walls run into the root fillets");
-    if (shrouds.empty()) throw inputError("not an impeller: the blades have no shroud (tip) faces");
+    if (onFillets) {
+        out.hubFaces = {out.hub};
 
-    // 5. Blades: connected sets of walls, fillets and shroud faces.
-    std::set<int> bladeFaces = fillets;
-    bladeFaces.insert(walls.begin(), walls.end());
-    bladeFaces.insert(shrouds.begin(), shrouds.end());
-    std::set<int> seen;
-    for (int start : shrouds) {
-        if (seen.count(start)) continue;
-        Blade b;
-        std::vector<int> stack{start};
-        seen.insert(start);
-        while (!stack.empty()) {
-            const int f = stack.back();
-            stack.pop_back();
-            if (shrouds.count(f)) {
-                if (b.shroud) throw inputError("unequal blade groups: a blade has two shroud faces (" +
-                                               std::to_string(b.shroud) + " and " + std::to_string(f) + ")");
-                b.shroud = f;
-            } else if (walls.count(f)) {
-                b.walls.push_back(f);
-            } else {
-                b.fillets.push_back(f);
-            }
-            for (const auto& n : g.neighbours(f))
-                if (bladeFaces.count(n.face) && !seen.count(n.face)) seen.insert(n.face), stack.push_back(n.face);
+        // 4. Fillets, walls and shroud faces.
+        std::vector<const std::vector<int>*> others;
+        for (const auto* p : patterns) {
+            if (tangentToAll(out.hub, *p)) fillets.insert(p->begin(), p->end());
+            else others.push_back(p);
         }
-        std::sort(b.walls.begin(), b.walls.end());
-        std::sort(b.fillets.begin(), b.fillets.end());
-        b.angleDeg = angleAbout(axis, g[b.shroud].centroid) * 180 / kPi;
-        out.blades.push_back(b);
+        auto everyMember = [&](const std::vector<int>& grp, const std::set<int>& set, bool tangentOnly) {
+            return std::all_of(grp.begin(), grp.end(), [&](int f) {
+                for (const auto& n : g.neighbours(f))
+                    if (set.count(n.face) && (n.tangent || !tangentOnly)) return true;
+                return false;
+            });
+        };
+        std::vector<const std::vector<int>*> remaining;
+        for (const auto* p : others) {
+            if (everyMember(*p, fillets, true)) walls.insert(p->begin(), p->end());
+            else remaining.push_back(p);
+        }
+        // Walls also run tangentially into one another (side walls into edge rounds).
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (auto it = remaining.begin(); it != remaining.end();) {
+                const bool touchesHub = std::any_of((*it)->begin(), (*it)->end(), [&](int f) { return g.adjacent(f, out.hub); });
+                if (!touchesHub && everyMember(**it, walls, true)) {
+                    walls.insert((*it)->begin(), (*it)->end());
+                    it = remaining.erase(it);
+                    grew = true;
+                } else {
+                    ++it;
+                }
+            }
+        }
+        for (const auto* p : remaining)
+            if (everyMember(*p, walls, false)) shrouds.insert(p->begin(), p->end());
+        onFillets = !walls.empty() && !shrouds.empty();
     }
+    if (onFillets) {
+
+        // 5. Blades: connected sets of walls, fillets and shroud faces.
+        std::set<int> bladeFaces = fillets;
+        bladeFaces.insert(walls.begin(), walls.end());
+        bladeFaces.insert(shrouds.begin(), shrouds.end());
+        std::set<int> seen;
+        for (int start : shrouds) {
+            if (seen.count(start)) continue;
+            Blade b;
+            std::vector<int> stack{start};
+            seen.insert(start);
+            while (!stack.empty()) {
+                const int f = stack.back();
+                stack.pop_back();
+                if (shrouds.count(f)) {
+                    if (b.shroud) throw inputError("unequal blade groups: a blade has two shroud faces (" +
+                                                   std::to_string(b.shroud) + " and " + std::to_string(f) + ")");
+                    b.shroud = f;
+                } else if (walls.count(f)) {
+                    b.walls.push_back(f);
+                } else {
+                    b.fillets.push_back(f);
+                }
+                for (const auto& n : g.neighbours(f))
+                    if (bladeFaces.count(n.face) && !seen.count(n.face)) seen.insert(n.face), stack.push_back(n.face);
+            }
+            std::sort(b.walls.begin(), b.walls.end());
+            std::sort(b.fillets.begin(), b.fillets.end());
+            b.angleDeg = angleAbout(axis, g[b.shroud].centroid) * 180 / kPi;
+            out.blades.push_back(b);
+        }
+        for (auto& b : out.blades) b.shroudFaces = {b.shroud};
+    } else {
+        out.hub = 0;
+        out.hubFaces.clear();
+        bladesOnHub(g, axis, m, holeSet, scale, tol, out);
+    }
+
     // Main blades have the larger shroud.
+    auto shroudArea = [&](const Blade& b) {
+        double a = 0;
+        for (int f : b.shroudFaces) a += g[f].area;
+        return a;
+    };
     double largest = 0;
-    for (const auto& b : out.blades) largest = std::max(largest, g[b.shroud].area);
+    for (const auto& b : out.blades) largest = std::max(largest, shroudArea(b));
     int mains = 0;
     for (auto& b : out.blades) {
-        b.splitter = g[b.shroud].area < largest * (1 - kAreaTolerance);
+        b.splitter = shroudArea(b) < largest * (1 - kSplitterShare);
         mains += !b.splitter;
     }
     out.splitterCount = static_cast<int>(out.blades.size()) - mains;
@@ -406,8 +486,16 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
             out.holes.push_back(h);
         }
     }
+    std::set<int> claimed(out.hubFaces.begin(), out.hubFaces.end());
+    for (const auto& b : out.blades) {
+        claimed.insert(b.walls.begin(), b.walls.end());
+        claimed.insert(b.fillets.begin(), b.fillets.end());
+        claimed.insert(b.shroudFaces.begin(), b.shroudFaces.end());
+    }
     for (int s : singles)
-        if (s != out.hub) out.turned.push_back(s);
+        if (!claimed.count(s) && std::find(out.turned.begin(), out.turned.end(), s) == out.turned.end()) out.turned.push_back(s);
+    out.planes.erase(std::remove_if(out.planes.begin(), out.planes.end(), [&](int f) { return claimed.count(f) > 0; }),
+                     out.planes.end());
 
     // The closest pair of shroud faces: blade 0 and its nearest neighbour.
     const int n = static_cast<int>(out.blades.size());

@@ -81,7 +81,7 @@ ProcessRoute planRoute(const ImpellerFeatures& f, const ImpellerDimensions& d, s
         } else if (rule.operation == "finish_blades") {
             s.faces = allOf(f, &Blade::walls);
         } else if (rule.operation == "finish_hub") {
-            s.faces = {f.hub};
+            s.faces = f.hubFaces.empty() ? std::vector<int>{f.hub} : f.hubFaces;
         } else if (rule.operation == "finish_fillets") {
             s.faces = allOf(f, &Blade::fillets);
             if (s.faces.empty() || d.filletRadius <= 0) missing = "no root fillets";
@@ -100,17 +100,20 @@ ProcessRoute planRoute(const ImpellerFeatures& f, const ImpellerDimensions& d, s
         } else if (rule.toolRule == "face_mill") {
             s.tool = pick(ofType(tools, "face"), [](const CuttingTool&) { return true; }, rule, "face mill", "any size");
             s.toolReason = "the largest face mill";
-        } else if (rule.toolRule == "drill_in_bore") {
-            const double dMax = d.boreDiameter - 2 * rule.allowance;
+        } else if (rule.toolRule == "drill_in_bore" || rule.toolRule == "end_mill_in_bore") {
+            // The bore is an axial step (not in the 5-axis program): a bore no tool of the crib
+            // fits (a small deep bore wants a drill and a reamer) is listed, not a stop.
+            const bool drill = rule.toolRule == "drill_in_bore";
+            const double dMax = drill ? d.boreDiameter - 2 * rule.allowance : 0.8 * d.boreDiameter;
             const std::string limits = "diameter at most " + mm(dMax) + ", reach at least " + mm(d.boreDepth);
-            s.tool = pick(ofType(tools, "drill"), [&](const CuttingTool& t) {
-                return t.diameter <= dMax + 1e-9 && t.reach >= d.boreDepth; }, rule, "drill", limits);
-            s.toolReason = limits;
-        } else if (rule.toolRule == "end_mill_in_bore") {
-            const double dMax = 0.8 * d.boreDiameter;
-            const std::string limits = "diameter at most " + mm(dMax) + ", reach at least " + mm(d.boreDepth);
-            s.tool = pick(ofType(tools, "flat"), [&](const CuttingTool& t) {
-                return t.diameter <= dMax + 1e-9 && t.reach >= d.boreDepth; }, rule, "flat end mill", limits);
+            try {
+                s.tool = pick(ofType(tools, drill ? "drill" : "flat"), [&](const CuttingTool& t) {
+                    return t.diameter <= dMax + 1e-9 && t.reach >= d.boreDepth; }, rule, drill ? "drill" : "flat end mill", limits);
+            } catch (const Error& e) {
+                if (e.kind() != Error::Kind::Input) throw;
+                route.skipped.push_back(std::to_string(rule.position) + " " + rule.operation + ": " + e.what());
+                continue;
+            }
             s.toolReason = limits;
         } else if (rule.toolRule == "ball_in_channel") {
             const double dMax = channel - 2 * rule.allowance - rule.clearance;

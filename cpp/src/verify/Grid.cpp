@@ -20,13 +20,6 @@ std::pair<int, int> indexRange(double origin, double cell, int n, double a, doub
 std::pair<int, int> Grid::columns(double a, double b) const { return indexRange(x0, cell, nx, a, b); }
 std::pair<int, int> Grid::rows(double a, double b) const { return indexRange(y0, cell, ny, a, b); }
 
-bool Grid::cellAt(double x, double y, int& i, int& j) const {
-    const double fi = std::floor((x - x0) / cell), fj = std::floor((y - y0) / cell);
-    if (!(fi >= 0 && fi < nx && fj >= 0 && fj < ny)) return false;
-    i = int(fi), j = int(fj);
-    return true;
-}
-
 Grid gridCovering(double xmin, double ymin, double xmax, double ymax, double cell) {
     if (!(cell > 0) || !std::isfinite(cell)) throw inputError("the cell size must be a positive number of mm");
     if (!(xmax > xmin) || !(ymax > ymin) || !std::isfinite(xmax - xmin) || !std::isfinite(ymax - ymin))

@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
 
 namespace aeronc::verify {
 
@@ -101,6 +106,11 @@ double priorMaterialReach(const Run& run, std::size_t c, double x, double y, dou
     return best;
 }
 
+// The top of the part in column c seen along the axis' sense s (the bottom, negated, for -Z).
+inline double partTopAt(const PartDexels& part, std::size_t c, int s) {
+    return s > 0 ? (part.end(c) - 1)->z1 : -part.begin(c)->z0;
+}
+
 // Gouge: part material above the grown cutter's envelope, lowered by the axial allowance. The
 // depth is the smaller of the overlap along the part's normal (the vertical overlap times |nz|
 // of the face the dexel ends on: on a slope the vertical overlap overstates how deep the cutter
@@ -153,6 +163,7 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
     summary.segments = segments.size();
     for (const Segment& seg : segments) {
         const SweptSegment sw(seg.from[0], seg.from[1], s * seg.from[2], seg.to[0], seg.to[1], s * seg.to[2]);
+        const double lowest = std::min(s * seg.from[2], s * seg.to[2]);  // the tip's, in the axis' sense
         run.gouges.startSegment(index, op.label, seg);
         run.collisions.startSegment(index, op.label, seg);
 
@@ -163,11 +174,17 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
             if (!sw.rowSpan(y, reach, xa, xb)) continue;
             const auto cols = grid.columns(xa, xb);
             for (int i = cols.first; i <= cols.second; ++i) {
-                const double x = grid.centreX(i);
                 const std::size_t c = grid.index(i, j);
+                // The cutter nowhere reaches below the segment's lower end: a column whose part
+                // and stock both end below it has nothing to check (the tests below would say so).
+                const bool gougeCheck = !seg.rapid && !run.part.empty(c) &&
+                                        lowest - op.axialAllowance < partTopAt(run.part, c, s) - gougeTol;
+                if (!gougeCheck && (run.stock.empty(c) || lowest >= (s > 0 ? run.stock.top(c) : -run.stock.bottom(c))))
+                    continue;
+                const double x = grid.centreX(i);
                 const double d = sw.distance(x, y);
 
-                if (!seg.rapid && d <= grown.radius) {
+                if (gougeCheck && d <= grown.radius) {
                     CellHit e;
                     if (gougeAt(run.part, c, sw, grown, op.axialAllowance, s, gougeTol, x, y, d, e)) run.gouges.hit(e);
                 }
@@ -252,9 +269,12 @@ LeftoverMap leftoverOf(const PartDexels& part, const StockDexels& stock) {
 
 }  // namespace
 
-SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
-                          const SimulationOptions& options, const std::vector<PriorStock>& priors,
-                          StockDexels* finalStock) {
+namespace {
+
+// The program run on the blank: the report without its coverage and leftover map (finishReport's).
+SimulationReport runProgram(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                            const SimulationOptions& options, const std::vector<PriorStock>& priors,
+                            StockDexels& stock) {
     if (!(options.gougeTolerance >= 0) || !(options.collisionTolerance >= 0))
         throw inputError("the gouge and collision tolerances must not be negative");
     SimulationReport r;
@@ -264,7 +284,7 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     r.inconsistentColumns = part.inconsistentColumns;
 
     const auto blank = program.hasBlank ? program.blank : bounds(mesh);
-    StockDexels stock = StockDexels::box(part.grid, blank);
+    stock = StockDexels::box(part.grid, blank);
     r.blankVolume = stock.volume();
 
     auto t = Clock::now();
@@ -278,11 +298,27 @@ SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, cons
     for (auto& e : r.gouges.listed)
         if (e.wall) e.face = wallFaceNear(mesh, e.position);
     if (r.gouges.worst && r.gouges.worst->wall) r.gouges.worst->face = wallFaceNear(mesh, r.gouges.worst->position);
+    return r;
+}
 
-    t = Clock::now();
+// What the program left against the part: only reads the part, the mesh and the final stock, so
+// it may run beside the next setup's simulation.
+void finishReport(SimulationReport& r, const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                  const SimulationOptions& options, const StockDexels& stock) {
+    const auto t = Clock::now();
     r.coverage = measureCoverage(mesh, part, stock, program.finishedFaces, program.elements, options.coverage);
     if (options.leftoverMap) r.leftover = leftoverOf(part, stock);
     r.coverageSeconds = since(t);
+}
+
+}  // namespace
+
+SimulationReport simulate(const PartDexels& part, const TriangleMesh& mesh, const Program& program,
+                          const SimulationOptions& options, const std::vector<PriorStock>& priors,
+                          StockDexels* finalStock) {
+    StockDexels stock;
+    SimulationReport r = runProgram(part, mesh, program, options, priors, stock);
+    finishReport(r, part, mesh, program, options, stock);
     if (finalStock) *finalStock = std::move(stock);
     return r;
 }
@@ -338,6 +374,57 @@ Rigid Rigid::then(const Rigid& next) const {
     return r;
 }
 
+namespace {
+
+// Tasks 0, 1, 2 ... handed out in order to a few worker threads as they are pushed; finish() (or
+// the destructor, should the pushing thread throw) waits for those pushed and joins.
+class CoverageQueue {
+public:
+    explicit CoverageQueue(std::function<void(std::size_t)> task) : task_(std::move(task)) {
+        const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 4u);
+        for (unsigned w = 0; w < workers; ++w) threads_.emplace_back([this] { work(); });
+    }
+    ~CoverageQueue() { finish(); }
+    void push(std::size_t k) {
+        {
+            std::lock_guard<std::mutex> lock(m_);
+            ready_ = k + 1;
+        }
+        cv_.notify_one();
+    }
+    void finish() {
+        {
+            std::lock_guard<std::mutex> lock(m_);
+            done_ = true;
+        }
+        cv_.notify_all();
+        for (std::thread& t : threads_)
+            if (t.joinable()) t.join();
+    }
+
+private:
+    void work() {
+        for (;;) {
+            std::size_t k;
+            {
+                std::unique_lock<std::mutex> lock(m_);
+                cv_.wait(lock, [this] { return next_ < ready_ || done_; });
+                if (next_ >= ready_) return;  // done and nothing left
+                k = next_++;
+            }
+            task_(k);
+        }
+    }
+    std::function<void(std::size_t)> task_;
+    std::vector<std::thread> threads_;
+    std::mutex m_;
+    std::condition_variable cv_;
+    std::size_t next_ = 0, ready_ = 0;
+    bool done_ = false;
+};
+
+}  // namespace
+
 std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const std::vector<SetupProgram>& setups,
                                              const SimulationOptions& options) {
     validate(partMesh);
@@ -350,19 +437,44 @@ std::vector<SimulationReport> simulateSetups(const TriangleMesh& partMesh, const
                     throw inputError("setup " + s.name + ": its motion to the part is not a rotation");
             }
     }
-    std::vector<SimulationReport> reports;
-    std::vector<StockDexels> stocks;
-    stocks.reserve(setups.size());
-    for (std::size_t k = 0; k < setups.size(); ++k) {
+    // The setups are simulated in order on this thread (each against the stocks the setups before
+    // it left); each one's coverage, which reads only its own part, mesh and final stock, is
+    // measured meanwhile on the workers: on a large part it takes longer than the simulation.
+    const std::size_t n = setups.size();
+    std::vector<SimulationReport> reports(n);
+    std::vector<StockDexels> stocks(n);
+    std::vector<TriangleMesh> meshes(n);
+    std::vector<PartDexels> parts(n);
+    std::vector<std::exception_ptr> failed(n);
+    CoverageQueue queue([&](std::size_t k) {
+        try {
+            finishReport(reports[k], parts[k], meshes[k], setups[k].program, options, stocks[k]);
+        } catch (...) {
+            failed[k] = std::current_exception();
+        }
+        parts[k] = PartDexels(), meshes[k] = TriangleMesh();  // no longer needed
+    });
+    for (std::size_t k = 0; k < n; ++k) {
         const SetupProgram& s = setups[k];
         const Rigid toSetup = s.toPart.inverse();
-        TriangleMesh mesh = partMesh;
-        for (Point3& v : mesh.vertices) v = toSetup(v);
+        meshes[k] = partMesh;
+        for (Point3& v : meshes[k].vertices) v = toSetup(v);
         std::vector<PriorStock> priors;
         for (std::size_t j = 0; j < k; ++j) priors.push_back({&stocks[j], s.toPart.then(setups[j].toPart.inverse())});
-        stocks.emplace_back();
-        reports.push_back(rasteriseAndSimulate(mesh, s.program, options, priors, &stocks.back()));
+        const auto b = bounds(meshes[k]);
+        const auto box = s.program.hasBlank ? s.program.blank : b;
+        const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
+                                       std::max(b[4], box[4]), s.program.cellSize);
+        const auto t = Clock::now();
+        parts[k] = rasterise(meshes[k], grid);
+        const double seconds = since(t);
+        reports[k] = runProgram(parts[k], meshes[k], s.program, options, priors, stocks[k]);
+        reports[k].rasteriseSeconds = seconds;
+        queue.push(k);
     }
+    queue.finish();
+    for (const auto& e : failed)
+        if (e) std::rethrow_exception(e);
     return reports;
 }
 

@@ -401,3 +401,96 @@ TEST(Simulation, ChamferMillLeavesItsConeAndGougesTheEdgeItsConeReaches) {
             ASSERT_NEAR(r.leftover.top[g.index(i, j)], top - 10, 1e-5) << x << " " << y;
         }
 }
+
+// A finishing pass 0.2 mm below the floor of a pocket cleared to it gouges; run again, it cuts
+// nothing (no stock is left under it) but still gouges: the columns skipped for being clear of
+// part and stock must not hide it, along +Z nor along -Z (the plate turned over).
+TEST(Simulation, AGougeWhereNoStockIsLeftIsStillFound) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const TriangleMesh flipped = mirroredInZ(plate.mesh, 20);
+    for (int axis : {1, -1}) {
+        auto rough = pocketPath(kPocket, kR, 2.4, 8, kSafe);
+        auto finish = pocketPath(kPocket, kR, 2.4, 7.8, kSafe);
+        if (axis < 0)
+            for (auto* path : {&rough, &finish})
+                for (auto& m : *path) m.z = 20 - m.z;
+        Operation a = pocketing("rough", rough), b = pocketing("finish", finish), c = pocketing("again", finish);
+        a.axis = b.axis = c.axis = axis;
+        const SimulationReport r = simulate(axis > 0 ? plate.mesh : flipped, programFor(plate, {a, b, c}));
+        EXPECT_EQ(r.operations[0].gougingMoves, 0u) << axis;
+        EXPECT_GT(r.operations[1].gougingMoves, 0u) << axis;
+        EXPECT_EQ(r.operations[2].gougingMoves, r.operations[1].gougingMoves) << axis;
+        const double floorArea = 40 * 20 - (4 - M_PI) * 16;  // the 0.2 mm under the floor
+        EXPECT_NEAR(r.operations[1].removedVolume, 0.2 * floorArea, 0.05 * 0.2 * floorArea) << axis;
+        EXPECT_EQ(r.operations[2].removedVolume, 0) << axis;
+        EXPECT_NEAR(r.operations[2].worstGouge, 0.2, 1e-9) << axis;
+        ASSERT_TRUE(r.gouges.worst.has_value()) << axis;
+        EXPECT_NEAR(r.gouges.worst->depth, 0.2, 1e-9) << axis;
+        EXPECT_EQ(r.gouges.worst->face, plate.pockets[0].floor) << axis;
+    }
+}
+
+// Several setups: the reports of simulateSetups (coverage measured on worker threads while the
+// next setup is simulated) are those of the setups simulated one after the other, each against
+// the stocks the setups before left. The third setup gouges the floor and rapids into the border.
+TEST(Simulation, SetupsMeasuredBesideTheNextAreAsOneAfterTheOther) {
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    Rigid turned;
+    turned.rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    turned.translation = {40, 0, 0};
+    std::vector<SetupProgram> setups;
+    setups.push_back({"+Z", {}, programFor(plate, {pocketing("pocket", pocketPath(kPocket, kR, 2.4, 9, kSafe))})});
+    Program p;
+    p.cellSize = 0.5;
+    p.hasBlank = true;
+    p.blank = {0, -20, 0, 40, 40, 20};
+    p.finishedFaces = setups[0].program.finishedFaces;
+    p.elements = setups[0].program.elements;
+    // The pocket's middle (30, 20) of the part is (20, 10) here.
+    p.operations = {pocketing("floor", {move(MoveKind::Rapid, 20, 10, kSafe), move(MoveKind::Plunge, 20, 10, 8.5),
+                                        move(MoveKind::Feed, 20, 20, 8.5), move(MoveKind::Rapid, 20, 20, kSafe)})};
+    setups.push_back({"turned", turned, p});
+    p.operations = {pocketing("too low", {move(MoveKind::Rapid, 15, 10, kSafe), move(MoveKind::Plunge, 15, 10, 7.6),
+                                          move(MoveKind::Feed, 25, 10, 7.6), move(MoveKind::Rapid, 25, 10, kSafe)}),
+                    pocketing("into border", {move(MoveKind::Rapid, 20, -18, kSafe), move(MoveKind::Rapid, 20, -18, 15)})};
+    setups.push_back({"turned again", turned, p});
+
+    const auto together = simulateSetups(plate.mesh, setups);
+    ASSERT_EQ(together.size(), 3u);
+    std::vector<StockDexels> stocks(setups.size());
+    for (std::size_t k = 0; k < setups.size(); ++k) {
+        TriangleMesh mesh = plate.mesh;
+        const Rigid toSetup = setups[k].toPart.inverse();
+        for (Point3& v : mesh.vertices) v = toSetup(v);
+        std::vector<PriorStock> priors;
+        for (std::size_t j = 0; j < k; ++j)
+            priors.push_back({&stocks[j], setups[k].toPart.then(setups[j].toPart.inverse())});
+        const auto b = bounds(mesh);
+        const auto& box = setups[k].program.blank;
+        const Grid grid = gridCovering(std::min(b[0], box[0]), std::min(b[1], box[1]), std::max(b[3], box[3]),
+                                       std::max(b[4], box[4]), setups[k].program.cellSize);
+        const SimulationReport alone = simulate(rasterise(mesh, grid), mesh, setups[k].program, {}, priors, &stocks[k]);
+        const SimulationReport& got = together[k];
+        EXPECT_EQ(got.gouges.moves, alone.gouges.moves) << k;
+        EXPECT_EQ(got.gouges.cells, alone.gouges.cells) << k;
+        EXPECT_EQ(got.collisions.moves, alone.collisions.moves) << k;
+        EXPECT_EQ(got.collisions.cells, alone.collisions.cells) << k;
+        EXPECT_EQ(got.finalStockVolume, alone.finalStockVolume) << k;
+        ASSERT_EQ(got.coverage.faces.size(), alone.coverage.faces.size()) << k;
+        for (std::size_t f = 0; f < got.coverage.faces.size(); ++f) {
+            EXPECT_EQ(got.coverage.faces[f].face, alone.coverage.faces[f].face);
+            EXPECT_EQ(got.coverage.faces[f].uncoveredArea, alone.coverage.faces[f].uncoveredArea) << k;
+            EXPECT_EQ(got.coverage.faces[f].maxLeftover, alone.coverage.faces[f].maxLeftover) << k;
+        }
+        EXPECT_EQ(got.leftover.top, alone.leftover.top) << k;
+    }
+    // What the third setup does wrong is found: 0.4 mm into the floor (the first left it at 9,
+    // the second at 8.5), and a rapid into the border.
+    ASSERT_TRUE(together[2].gouges.worst.has_value());
+    EXPECT_EQ(together[2].gouges.worst->label, "too low");
+    EXPECT_NEAR(together[2].gouges.worst->depth, 0.4, 1e-9);
+    ASSERT_TRUE(together[2].collisions.worst.has_value());
+    EXPECT_EQ(together[2].collisions.worst->label, "into border");
+    EXPECT_EQ(together[0].gouges.moves + together[1].gouges.moves + together[0].collisions.moves +
+                  together[1].collisions.moves, 0u);
+}

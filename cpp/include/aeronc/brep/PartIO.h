@@ -11,6 +11,10 @@ namespace aeronc {
 // a B-rep that fails OCCT's checker.
 TopoDS_Shape loadPart(const std::string& path);
 
+// The whole shape of a STEP or BREP file, without loadPart's one-solid checks (a part exported
+// as several bodies).
+TopoDS_Shape loadShape(const std::string& path);
+
 // loadPart for a STEP file, plus the STEP entity name of every face of the solid in
 // FaceN order ("" where the file gives none). Labelled data sets key faces by these names.
 TopoDS_Shape loadStepWithFaceNames(const std::string& path, std::vector<std::string>& faceNames);

@@ -17,7 +17,8 @@ struct Blade {
     int leading = 0, trailing = 0;    // the other walls nearest to and farthest from the axis (0: none)
     std::vector<int> walls;           // every wall face, pressure and suction included
     std::vector<int> fillets;
-    int shroud = 0;
+    int shroud = 0;                   // the largest shroud face
+    std::vector<int> shroudFaces;     // every shroud face (an exporter may give the tip several)
     double angleDeg = 0;              // angle of the shroud face's centroid about the axis
 };
 
@@ -26,7 +27,8 @@ struct ImpellerFeatures {
     Vec3 axisDirection{0, 0, 1};      // from the back of the hub towards the blade tips
     int bladeCount = 0;               // m: main blades (as many splitters, or none)
     int splitterCount = 0;
-    int hub = 0;
+    int hub = 0;                      // the largest hub face
+    std::vector<int> hubFaces;        // every hub face: one face of revolution, or a piece per channel
     int bore = 0;                     // the hole on the axis (0: none)
     std::vector<int> holes;           // other concave cylinders
     std::vector<int> planes;
@@ -42,7 +44,7 @@ struct ImpellerFeatures {
 // Recognises the impeller in `shape` (one solid). The turning direction is counter-clockwise
 // about axisDirection. Throws aeronc::inputError when the part is not an impeller (no face
 // pattern repeated about an axis), when its blade groups are unequal (a blade missing or
-// different), or when there is no hub (no single face tangent to the root fillets).
+// different), or when there is no hub (no face of revolution that every blade stands on).
 ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape);
 
 }  // namespace aeronc::impeller

@@ -1,5 +1,6 @@
 #pragma once
 // The XY grid of the dexel model: square cells, each holding a column of material along Z.
+#include <cmath>
 #include <cstddef>
 #include <utility>
 
@@ -20,8 +21,14 @@ struct Grid {
     // when there is none.
     std::pair<int, int> columns(double a, double b) const;
     std::pair<int, int> rows(double a, double b) const;
-    // The cell holding (x, y), or false outside the grid.
-    bool cellAt(double x, double y, int& i, int& j) const;
+    // The cell holding (x, y), or false outside the grid. Inline: the coverage's wall walk calls
+    // it for every step.
+    bool cellAt(double x, double y, int& i, int& j) const {
+        const double fi = std::floor((x - x0) / cell), fj = std::floor((y - y0) / cell);
+        if (!(fi >= 0 && fi < nx && fj >= 0 && fj < ny)) return false;
+        i = int(fi), j = int(fj);
+        return true;
+    }
 };
 
 // Largest grid the verification accepts (memory is about 70 bytes a cell).
