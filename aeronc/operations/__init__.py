@@ -6,6 +6,7 @@
   profile                passes along a drive loop (walls, outer contours, open edges)
   drilling               G81/G82/G83 drill cycles
   helical_interpolation  holes milled down a helix with an end mill
+  chamfer                a chamfer mill's pass along an edge (countersinks)
 
 They are Path::FeaturePython objects with a Path, in a Job's Operations group: FreeCAD's post
 framework, the Job's commands and the 3-D view treat them like Path's own operations.
@@ -19,8 +20,9 @@ def _classes():
     from aeronc.operations.generalised_pocket import GeneralisedPocket
     from aeronc.operations.helical_interpolation import HelicalInterpolation
     from aeronc.operations.profile import Profile
+    from aeronc.operations.chamfer import Chamfer
     return {"pocket": GeneralisedPocket, "rest": GeneralisedPocket, "profile": Profile,
-            "drilling": Drilling, "helix": HelicalInterpolation}
+            "drilling": Drilling, "helix": HelicalInterpolation, "chamfer": Chamfer}
 
 
 # The chain's operation names, and the words a template may use for the same operation.
@@ -29,7 +31,7 @@ ALIASES = {"pocket": "pocket", "pocketing": "pocket", "clearing": "pocket",
            "profile": "profile", "contour": "profile", "wall": "profile",
            "drilling": "drilling", "drill": "drilling",
            "helix": "helix", "helical": "helix", "interpolation": "helix", "helical_interpolation": "helix",
-           "circular_interpolation": "helix"}
+           "circular_interpolation": "helix", "chamfer": "chamfer", "countersink": "chamfer"}
 
 
 def operation_class(operation):
@@ -40,7 +42,8 @@ def operation_class(operation):
     return _classes()[kind]
 
 
-TYPES = {"AeroNC::GeneralisedPocket", "AeroNC::Profile", "AeroNC::Drilling", "AeroNC::HelicalInterpolation"}
+TYPES = {"AeroNC::GeneralisedPocket", "AeroNC::Profile", "AeroNC::Drilling", "AeroNC::HelicalInterpolation",
+         "AeroNC::Chamfer"}
 
 
 def is_machining_operation(obj):

@@ -281,6 +281,11 @@ def cutter_of(tc):
         return {}
     d = float(bit.Diameter.Value)
     shape = str(getattr(bit, "BitShape", "")).lower()
+    if ("chamfer" in shape or "v-bit" in shape) and hasattr(bit, "CuttingEdgeAngle"):
+        # A cone: its included angle (FreeCAD's CuttingEdgeAngle) and flat tip.
+        tip = float(bit.TipDiameter.Value) if hasattr(bit, "TipDiameter") else 0.0
+        return {"diameter": d, "cornerRadius": 0.0, "type": "chamfer", "tipDiameter": tip,
+                "includedAngle": float(getattr(bit.CuttingEdgeAngle, "Value", bit.CuttingEdgeAngle))}
     if "drill" in shape:
         return {"diameter": d, "cornerRadius": 0.0, "type": "drill"}
     if "ball" in shape:

@@ -186,7 +186,7 @@ def unmachined_text(entry):
 # --- the Jobs ------------------------------------------------------------------------------------
 
 OPERATION_LABELS = {"GeneralisedPocket": "Pocket", "Profile": "Profile", "Drilling": "Drilling",
-                    "HelicalInterpolation": "Helix"}
+                    "HelicalInterpolation": "Helix", "Chamfer": "Chamfer"}
 
 
 def operation_label(unit):

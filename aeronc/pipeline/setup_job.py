@@ -150,9 +150,12 @@ def tool_controllers(job, units, kb, cutting_data=None):
             if not number or number in used:
                 number = max(used + [0]) + 1
             s = unit.get("setting") or {}
+            chamfer_mill = (unit.get("cutter") or {}).get("type") == "chamfer"
             tc = _make_tool_controller(doc, job, unit["tool"], tag, number, float(s.get("spindleRpm") or 0.0),
-                                       float(s.get("feedMmMin") or 0.0), float(s.get("plungeFeedMmMin") or 0.0), kb)
-            if cutting_data is not None:
+                                       float(s.get("feedMmMin") or 0.0), float(s.get("plungeFeedMmMin") or 0.0), kb,
+                                       unit["cutter"] if chamfer_mill else None)
+            # The optimiser's model is an end mill's: a chamfer mill keeps the knowledge base's data.
+            if cutting_data is not None and not chamfer_mill:
                 cutting_data.write(tc)
             used.append(number)
         out[tag] = tc
@@ -165,12 +168,29 @@ def unused_tool_controllers(job, wanted):
             if hasattr(tc, TC_TAG) and tc not in wanted and not pathcompat.tool_controller_in_use(tc)]
 
 
-def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb):
+def chamfer_bit(tool_id, cutter):
+    """The .fctb document of a chamfer mill of the knowledge base's edge_tool table (FreeCAD's
+    chamfer shape: CuttingEdgeAngle is the included angle)."""
+    import math
+    d, tip, angle = float(cutter["diameter"]), float(cutter["tipDiameter"]), float(cutter["includedAngle"])
+    height = (d - tip) / 2 / math.tan(math.radians(angle / 2))
+    mm = "{:.4f} mm".format
+    return {"version": 2, "name": tool_id, "shape": "chamfer.fcstd", "attribute": {},
+            "parameter": {"CuttingEdgeAngle": "{:.4f} \u00b0".format(angle), "CuttingEdgeHeight": mm(height),
+                          "Diameter": mm(d), "TipDiameter": mm(tip), "Length": mm(max(50.0, 3 * d)),
+                          "ShankDiameter": mm(d)}}
+
+
+def _make_tool_controller(doc, job, tool_id, tag, number, rpm, hfeed, vfeed, kb, chamfer=None):
     import json
     from aeronc.errors import MachiningChainError, from_core
-    with from_core(MachiningChainError, "tool {} of the chain".format(tool_id)):
-        _, document = kb.bit_document(tool_id)
-    tc = pathcompat.create_tool_controller(doc, job, "TC: {} {}".format(*tag.split("/")), json.loads(document),
+    if chamfer is not None:
+        bit = chamfer_bit(tool_id, chamfer)
+    else:
+        with from_core(MachiningChainError, "tool {} of the chain".format(tool_id)):
+            _, document = kb.bit_document(tool_id)
+        bit = json.loads(document)
+    tc = pathcompat.create_tool_controller(doc, job, "TC: {} {}".format(*tag.split("/")), bit,
                                            number, rpm, hfeed, vfeed)
     tc.addProperty("App::PropertyString", TC_TAG, "AeroNC", "Tool and operation of the AeroNC tool plan", 0, True)
     setattr(tc, TC_TAG, tag)

@@ -27,7 +27,7 @@ class VerificationError(AeroNCError):
 
 
 _CANON = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z_]+)\((.*)\)\s*$")
-_FINISHING_STEPS = ("w", "fs", "ff", "c")
+_FINISHING_STEPS = ("w", "fs", "ff", "c", "e")
 
 
 def rs274_path():
@@ -220,7 +220,8 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
                     os.path.basename(p["path"]), op["label"]))
             cutter = op_base.cutter_of(fc_op.ToolController)
             for o in (op, op_job):
-                o.update(cutter={"diameter": cutter["diameter"], "cornerRadius": cutter["cornerRadius"]},
+                o.update(cutter={k: cutter[k] for k in ("diameter", "cornerRadius", "tipDiameter", "includedAngle")
+                                 if k in cutter},  # a chamfer mill's cone with its angle
                          radialAllowance=_length(fc_op, "RadialAllowance"),
                          axialAllowance=_length(fc_op, "AxialAllowance"))
             sim_ops.append(op)
@@ -372,6 +373,11 @@ def finished_faces(chain, result):
         faces = finished.setdefault("E{}".format(e["id"]), set())
         if u.get("step") == "w":
             faces.update(e.get("floorFaces", []))
+        if u.get("step") == "e":  # a chamfer mill's pass finishes the element's chamfers and countersink
+            faces.update(e.get("chamferFaces", []))
+            for a in e.get("attached", []):
+                if a.get("kind") == "countersink":
+                    faces.update(a.get("faces", []))
         if u.get("step") in ("fs", "ff"):
             faces.update(e.get("contourFaces", []))
             for island in e.get("islandFaces", []):

@@ -19,7 +19,11 @@ json loop(const Loop& l) {
     for (const Point2& p : l) a.push_back(pt(p));
     return a;
 }
-json cutter(const Cutter& c) { return {{"diameter", c.diameter}, {"cornerRadius", c.cornerRadius}, {"type", c.type}}; }
+json cutter(const Cutter& c) {
+    json j = {{"diameter", c.diameter}, {"cornerRadius", c.cornerRadius}, {"type", c.type}};
+    if (c.includedAngle > 0) j["tipDiameter"] = c.tipDiameter, j["includedAngle"] = c.includedAngle;  // a chamfer mill
+    return j;
+}
 json codes(const std::vector<StepCode>& v) {
     json a = json::array();
     for (StepCode c : v) a.push_back(toString(c));
@@ -91,6 +95,7 @@ json unitJson(const MachiningUnit& u) {
             {"order", u.order}};
     if (!u.islandTops.empty()) j["islandTops"] = tops;
     if (u.faceIslandTops) j["faceIslandTops"] = true;
+    if (u.operation == Operation::Chamfer) j["edgeOffset"] = u.edgeOffset;
     return j;
 }
 
@@ -155,7 +160,11 @@ Loop readLoop(const In& in) {
     for (std::size_t i = 0; i < in.size(); ++i) l.push_back(point(in[i]));
     return l;
 }
-Cutter readCutter(const In& in) { return {in["diameter"].number(), in["cornerRadius"].number(), in["type"].text()}; }
+Cutter readCutter(const In& in) {
+    Cutter c{in["diameter"].number(), in["cornerRadius"].number(), in["type"].text()};
+    if (in.has("includedAngle")) c.includedAngle = in["includedAngle"].number(), c.tipDiameter = in["tipDiameter"].number();
+    return c;
+}
 std::vector<StepCode> readCodes(const In& in) {
     std::vector<StepCode> out;
     for (std::size_t i = 0; i < in.size(); ++i) out.push_back(parseStepCode(in[i].text(), "chain JSON " + in[i].path()));
@@ -236,6 +245,7 @@ MachiningUnit readUnit(const In& in) {
     u.radialAllowance = in["radialAllowance"].number();
     u.axialAllowance = in["axialAllowance"].number();
     if (in.has("floorFilletRadius")) u.floorFilletRadius = in["floorFilletRadius"].number();  // older chains: none
+    if (in.has("edgeOffset")) u.edgeOffset = in["edgeOffset"].number();
     u.stepDown = in["stepDown"].numberOr(NAN);
     u.stepOver = in["stepOver"].numberOr(NAN);
     u.at = point(in["at"]);
@@ -312,6 +322,8 @@ std::string toJson(const MachiningChain& c, int indent) {
                             {"diameter", t.diameter},     {"cornerRadius", t.cornerRadius},
                             {"fluteLength", t.fluteLength}, {"reach", t.reach}, {"flutes", t.flutes},
                             {"neckDiameter", t.neckDiameter}, {"settings", settings}};
+        if (t.includedAngle > 0)
+            j["tools"][t.id]["tipDiameter"] = t.tipDiameter, j["tools"][t.id]["includedAngle"] = t.includedAngle;
     }
     return j.dump(indent);
 }
@@ -429,6 +441,7 @@ MachiningChain fromJson(const std::string& text) {
         ct.fluteLength = t["fluteLength"].number();
         ct.reach = t["reach"].number();
         if (t.has("neckDiameter")) ct.neckDiameter = t["neckDiameter"].number();  // absent in older chains
+        if (t.has("includedAngle")) ct.includedAngle = t["includedAngle"].number(), ct.tipDiameter = t["tipDiameter"].number();
         ct.flutes = t["flutes"].integer();
         const In settings = t["settings"];
         if (!settings.raw().is_object()) settings.bad("is not an object keyed by operation");

@@ -61,6 +61,8 @@ bool holeOp(Operation o) { return o == Operation::Drill || o == Operation::Helix
 
 // Does `before` leave nothing for `after` to remove on the same element?
 bool covers(const MachiningUnit& before, const MachiningUnit& after) {
+    // A chamfer pass cuts the edge no pocket, profile or hole unit touches.
+    if (before.operation == Operation::Chamfer || after.operation == Operation::Chamfer) return false;
     if (holeOp(after.operation) != holeOp(before.operation)) return false;
     if (holeOp(after.operation))
         return before.cutter.diameter >= after.cutter.diameter - kEps && before.bottom <= after.bottom + kEps;
@@ -118,6 +120,7 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
     for (const MachiningUnit* u : ordered) {
         ++unitsOf[{u->element, u->step}];
         const TemplateStep* s = t.step(u->step);
+        if (!s && u->step == StepCode::Edge) continue;  // the edge step needs no template row (StepCode.h)
         if (!s)
             fail("existence", nodes.unit(*u),
                  std::string("template '") + t.name + "' has no step " + toString(u->step));
@@ -155,7 +158,8 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
         const auto& list = entry.second;
         const MachiningUnit* prev = nullptr;
         for (const MachiningUnit* u : list) {
-            if (holeOp(u->operation)) continue;
+            // Holes and chamfer mills follow the element's own sizes, not the pocket's tools.
+            if (holeOp(u->operation) || u->operation == Operation::Chamfer) continue;
             if (prev) {
                 auto grows = [&](const char* what, double a, double b) {
                     fail("validity", nodes.unit(*u),
@@ -210,6 +214,13 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
         }
         const std::string who = "tool " + tool->id + " (D" + fmt(tool->diameter) + ")";
         const bool endMill = tool->type == "flat" || tool->type == "bull" || tool->type == "ball";
+        if (u->operation == Operation::Chamfer) {
+            // A chamfer mill: its angle and cover were checked when it was chosen (EdgeTools.h).
+            if (tool->type != "chamfer") fail("fit", node, who + " is a " + tool->type + ", not a chamfer mill");
+            else if (!tool->settings.count("finishing"))
+                fail("fit", node, who + " has no cutting data for finishing in " + c.material);
+            continue;
+        }
         if (u->operation == Operation::Drill ? tool->type != "drill" : !endMill) {
             fail("fit", node, who + " is a " + tool->type + (u->operation == Operation::Drill ? ", not a drill" : ", not an end mill"));
             continue;
@@ -310,7 +321,7 @@ MachiningChain checkChain(MachiningChain c) {
     for (MachiningUnit& u : c.units) {
         const ChainTool* t = c.tool(u.tool);
         if (!t) continue;
-        u.cutter = {t->diameter, t->cornerRadius, t->type};
+        u.cutter = {t->diameter, t->cornerRadius, t->type, t->tipDiameter, t->includedAngle};
         std::string op = settingOperation(u.step);
         if (!t->settings.count(op) && u.operation != Operation::Drill)
             op = op == "roughing" ? "finishing" : "roughing";

@@ -64,6 +64,9 @@ private:
     MachiningUnit& addUnit(const DomainElement& e, const TemplateStep& step, Operation op, int toolIndex, double top,
                            double bottom);
     void makeUnits(const DomainElement& e, const TemplateStep& step);
+    void makeEdgeUnits(const DomainElement& e);
+    MachiningUnit& addEdgeUnit(const DomainElement& e, const toolselect::EdgeTool& t, double top, double bottom,
+                               double offset);
 
     const DomainTree& tree_;
     const ToolPlan& plan_;
@@ -72,6 +75,7 @@ private:
     ElementTools tools_;
     std::map<int, ElementState> state_;
     std::set<int> usedTools_;
+    std::set<std::string> usedEdgeTools_;
     std::set<int> facedTops_;  // island-top faces a floor unit faces
     MachiningChain chain_;
 };
@@ -307,6 +311,104 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
     }
 }
 
+MachiningUnit& Fuser::addEdgeUnit(const DomainElement& e, const toolselect::EdgeTool& t, double top, double bottom,
+                                  double offset) {
+    MachiningUnit u;
+    u.id = static_cast<int>(chain_.units.size());
+    u.setup = e.setup;
+    u.element = e.id;
+    u.step = StepCode::Edge;
+    u.operation = Operation::Chamfer;
+    u.featureType = featureTypeOf(e);
+    u.tool = t.id;
+    u.cutter = {t.diameter, 0, "chamfer", t.tipDiameter, t.includedAngle};
+    u.top = top;
+    u.bottom = bottom;
+    u.edgeOffset = offset;
+    if (t.spindleRpm > 0) {
+        u.setting = {t.spindleRpm, t.feedMmMin, t.plungeFeedMmMin};
+        u.stepDown = top - bottom;  // one pass at the chamfer's depth
+        u.stepOver = 2 * offset;    // one pass across
+    } else {
+        u.note = "no cutting data for tool " + t.id + " in " + opt_.material;
+    }
+    usedEdgeTools_.insert(t.id);
+    chain_.units.push_back(std::move(u));
+    ++state_[e.id].units;
+    state_[e.id].steps.insert(StepCode::Edge);
+    return chain_.units.back();
+}
+
+// Countersinks of the holes the chain made: a pass of a chamfer mill round the hole's edge, its
+// cone on the countersink (toolselect/EdgeTools.h).
+void Fuser::makeEdgeUnits(const DomainElement& e) {
+    ElementState& st = state_[e.id];
+    // Chamfers along a pocket's edges are not cut yet (the pass must follow only the chamfered
+    // stretches of a loop): listed with what they are and the mill that would cut them.
+    for (const recognition::AttachedFeature& a : e.attached) {
+        if (a.kind != "chamfer" || a.faces.empty()) continue;
+        if (!(a.angle > 0 && a.size > 0)) {
+            st.chamferWhy = " (not planes facing this setup's tool at one angle) are not cut: a chamfer mill along "
+                            "the axis cannot follow them";
+            continue;
+        }
+        toolselect::EdgeNeed need;
+        need.includedAngle = a.angle;
+        need.width = a.size;
+        need.height = a.size / std::tan(a.angle / 2 * M_PI / 180);
+        const toolselect::EdgeToolChoice c = toolselect::chamferTool(opt_.edgeTools, need);
+        st.chamferWhy = " (" + fmt(0.5 * (180 - a.angle)) + " degrees to the top, up to " + fmt(a.size) +
+                        " mm wide) along the element's edges are not cut: the edge step cuts countersinks only; " +
+                        (c.tool ? "chamfer mill " + c.tool->id + " (" + fmt(c.tool->includedAngle) + " degrees, D" +
+                                      fmt(c.tool->diameter) + ") would fit them"
+                                : c.why);
+    }
+    if (!e.hole || !(e.hole->countersinkDiameter > 0)) return;
+    const recognition::HoleInfo& h = *e.hole;
+    if (!st.holeMachined) {
+        st.countersinkWhy = "the hole under it is not machined";
+        return;
+    }
+    if (h.overhung) {
+        st.countersinkWhy = "material stands over the hole's mouth";
+        return;
+    }
+    toolselect::EdgeNeed need;
+    need.includedAngle = h.countersinkAngle;
+    need.width = 0.5 * (h.countersinkDiameter - h.diameter);
+    need.holeDiameter = h.diameter;
+    if (!(need.width > 0) || !(need.includedAngle > 0 && need.includedAngle < 180)) {
+        st.countersinkWhy = "its size was not recognised";
+        return;
+    }
+    const double slope = 1 / std::tan(need.includedAngle / 2 * M_PI / 180);
+    need.height = need.width * slope;
+    const toolselect::EdgeToolChoice c = toolselect::chamferTool(opt_.edgeTools, need);
+    if (!c.tool) {
+        st.countersinkWhy = c.why;
+        return;
+    }
+    if (!(c.tool->spindleRpm > 0)) {
+        st.countersinkWhy = "chamfer mill " + c.tool->id + " has no cutting data in " + opt_.material;
+        return;
+    }
+    // The hole's top (its location) is the countersink's lower line; the cone rises from it.
+    const recognition::SetupFrame& frame = tools_.frameOf(e.setup);
+    const double lower = frame.height(h.location);
+    const toolselect::ChamferPass pass = toolselect::chamferPass(*c.tool);
+    MachiningUnit& u = addEdgeUnit(e, *c.tool, lower + need.height, lower - pass.tipBelow, pass.offset);
+    // The drive loop is the hole's edge under the countersink, counter-clockwise.
+    const recognition::P2 centre = frame.project(h.location);
+    const int n = std::max(32, static_cast<int>(std::ceil(M_PI * h.diameter / 0.5)));
+    for (int k = 0; k < n; ++k) {
+        const double a = 2 * M_PI * k / n;
+        u.contour.push_back({centre.x + 0.5 * h.diameter * std::cos(a), centre.y + 0.5 * h.diameter * std::sin(a)});
+    }
+    u.at = {centre.x, centre.y};
+    u.note = "countersink " + fmt(h.countersinkAngle) + " degrees, diameter " + fmt(h.countersinkDiameter) + " mm";
+    st.countersunk = true;
+}
+
 MachiningChain Fuser::run() {
     validateTemplate(tmpl_);
     if (tree_.elements.empty())
@@ -362,6 +464,7 @@ MachiningChain Fuser::run() {
             for (const DomainElement* e : elements)
                 if (step.machines(featureTypeOf(*e))) makeUnits(*e, step);
         }
+        for (const DomainElement* e : elements) makeEdgeUnits(*e);
         for (const DomainElement* e : elements) listUnmachined(*e, state_[e->id], tmpl_, chain_.unmachined);
     }
     listIslandTops(tree_, facedTops_, chain_.unmachined);
@@ -375,6 +478,20 @@ MachiningChain Fuser::run() {
         for (const char* op : {"roughing", "finishing", "drilling"})
             if (const auto s = tools_.setting(i, op)) ct.settings[op] = toolData(*s);
         if (!used && ct.settings.empty()) continue;
+        chain_.tools.push_back(ct);
+    }
+    for (const toolselect::EdgeTool& t : opt_.edgeTools) {
+        if (!usedEdgeTools_.count(t.id)) continue;
+        ChainTool ct;
+        ct.id = t.id;
+        ct.type = "chamfer";
+        ct.material = t.material;
+        ct.diameter = t.diameter;
+        ct.fluteLength = ct.reach = t.reach;
+        ct.flutes = t.flutes;
+        ct.tipDiameter = t.tipDiameter;
+        ct.includedAngle = t.includedAngle;
+        ct.settings["finishing"] = {t.spindleRpm, t.feedMmMin, t.plungeFeedMmMin, t.reach, 0};
         chain_.tools.push_back(ct);
     }
     return std::move(chain_);

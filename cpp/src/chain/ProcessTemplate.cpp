@@ -75,6 +75,8 @@ const char* toString(RuleKind k) {
 
 int ProcessTemplate::rank(StepCode c) const {
     const auto it = std::find(stepOrder.begin(), stepOrder.end(), c);
+    // The edges are chamfered after every step that finishes the faces they touch.
+    if (it == stepOrder.end() && c == StepCode::Edge) return static_cast<int>(stepOrder.size());
     return it == stepOrder.end() ? -1 : static_cast<int>(it - stepOrder.begin());
 }
 

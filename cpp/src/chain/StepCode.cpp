@@ -25,6 +25,7 @@ const CodeInfo kCodes[] = {
     {StepCode::CutOff, "t", "cut the part off"},
     {StepCode::Drill, "d", "drill the holes"},
     {StepCode::HoleMill, "h", "mill the holes (helical interpolation)"},
+    {StepCode::Edge, "e", "chamfer the edges and countersink the holes"},
 };
 
 const CodeInfo& info(StepCode c) {
@@ -126,14 +127,15 @@ const char* toString(Operation o) {
         case Operation::Drill: return "drill";
         case Operation::Helix: return "helix";
         case Operation::Rest: return "rest";
+        case Operation::Chamfer: return "chamfer";
     }
     return "?";
 }
 
 Operation parseOperation(const std::string& text, const std::string& where) {
-    for (Operation o : {Operation::Pocket, Operation::Profile, Operation::Drill, Operation::Helix, Operation::Rest})
+    for (Operation o : {Operation::Pocket, Operation::Profile, Operation::Drill, Operation::Helix, Operation::Rest, Operation::Chamfer})
         if (text == toString(o)) return o;
-    throw inputError(where + ": operation '" + text + "' is none of pocket, profile, drill, helix, rest");
+    throw inputError(where + ": operation '" + text + "' is none of pocket, profile, drill, helix, rest, chamfer");
 }
 
 const std::vector<std::string>& featureTypes() {

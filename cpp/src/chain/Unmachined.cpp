@@ -42,15 +42,18 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
         out.push_back({e.id, std::nullopt, why, {}});
     }
     // Attached features no unit cuts.
-    if (e.hole && e.hole->countersinkDiameter > 0)
-        out.push_back(
-            {e.id, std::nullopt,
-             "its " + fmt(e.hole->countersinkAngle) + " degree countersink (diameter " +
-                 fmt(e.hole->countersinkDiameter) + " mm) needs a countersink tool; the chain has none", {}});
+    if (e.hole && e.hole->countersinkDiameter > 0 && !st.countersunk)
+        out.push_back({e.id, std::nullopt,
+                       "its " + fmt(e.hole->countersinkAngle) + " degree countersink (diameter " +
+                           fmt(e.hole->countersinkDiameter) + " mm) is not cut: " +
+                           (st.countersinkWhy.empty() ? std::string("no chamfer mill was offered") : st.countersinkWhy),
+                       {}});
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
     if (!e.chamferFaces.empty() && !countersunk)
-        listFaces(e, std::to_string(e.chamferFaces.size()) + " chamfer face(s) need a chamfer tool; the chain has none",
+        listFaces(e,
+                  std::to_string(e.chamferFaces.size()) + " chamfer face(s)" +
+                      (st.chamferWhy.empty() ? std::string(" need a chamfer tool; the chain has none") : st.chamferWhy),
                   e.chamferFaces, out);
     // Walls leaning away from the axis: a flat end mill finishing them square to the floor leaves
     // depth x tan(lean) at their top. A drafted wall keeps within the tolerance; a bevel does not.

@@ -19,6 +19,9 @@ struct ElementState {
     double floorAllowance = std::numeric_limits<double>::infinity();  // left on the floor so far; inf: untouched
     int roughUnit = -1;            // the last pocket unit (its cutter goes before a rest unit)
     bool holeMachined = false;
+    bool countersunk = false;         // a chamfer mill cut its countersink
+    std::string countersinkWhy;       // why not, when there is one and it was not cut
+    std::string chamferWhy;           // the chamfers along its edges: what they are and the mill that would fit
     std::map<StepCode, std::string> gaps;  // why an applicable step made no unit
     std::set<StepCode> steps;              // the steps that made a unit
     int units = 0;

@@ -183,6 +183,29 @@ std::vector<Tool> KnowledgeBase::tools() const {
     return out;
 }
 
+std::vector<toolselect::EdgeTool> KnowledgeBase::edgeTools() const {
+    std::vector<toolselect::EdgeTool> out;
+    if (!hasTable(db_.get(), path_, "edge_tool")) return out;
+    Statement s(db_.get(), path_,
+                "SELECT id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach "
+                "FROM edge_tool ORDER BY diameter, id");
+    while (s.step("reading the edge tools")) {
+        toolselect::EdgeTool t;
+        t.id = s.text(0);
+        s.about("edge tool " + detail::quoted(t.id));
+        t.kind = s.text(1);
+        t.material = s.text(2);
+        t.diameter = s.real(3);
+        t.tipDiameter = s.real(4);
+        t.includedAngle = s.optReal(5).value_or(0.0);
+        t.profileRadius = s.optReal(6).value_or(0.0);
+        t.flutes = s.integer(7);
+        t.reach = s.real(8);
+        out.push_back(t);
+    }
+    return out;
+}
+
 void KnowledgeBase::addTool(const Tool& tool, std::optional<double> cost) {
     insertTools({tool}, {cost});
 }

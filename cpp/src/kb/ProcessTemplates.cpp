@@ -184,6 +184,25 @@ chain::ChainOptions chainOptions(const KnowledgeBase& kb, const std::string& mat
     o.breakthrough = thresholdOr(kb, "breakthrough_mm", o.breakthrough);
     o.restMinArea = thresholdOr(kb, "rest_min_area_mm2", o.restMinArea);
     o.allowanceRatio = thresholdOr(kb, "allowance_max_ratio", o.allowanceRatio);
+    // The chamfer mills, each at the finishing data of an end mill of its largest diameter (the
+    // cone cuts at smaller diameters, so v_c there is lower: on the safe side).
+    const double maxRpm = o.machine.empty() ? 0 : kb.machine(o.machine).maxSpindleRpm;
+    const double plungeRatio = thresholdOr(kb, "plunge_feed_ratio", 0.3);
+    for (toolselect::EdgeTool t : kb.edgeTools()) {
+        if (t.kind != "chamfer") continue;
+        std::optional<CuttingCondition> c;
+        try {
+            c = kb.findCuttingCondition(material, t.material, "finishing", t.diameter);
+        } catch (const Error&) {
+        }
+        if (c) {
+            t.spindleRpm = spindleSpeed(c->vc, t.diameter);
+            if (maxRpm > 0) t.spindleRpm = std::min(t.spindleRpm, maxRpm);
+            t.feedMmMin = c->fz * t.flutes * t.spindleRpm;
+            t.plungeFeedMmMin = t.feedMmMin * plungeRatio;
+        }
+        o.edgeTools.push_back(t);
+    }
     return o;
 }
 

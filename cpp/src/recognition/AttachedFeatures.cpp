@@ -83,6 +83,24 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
             AttachedFeature a;
             a.kind = "chamfer";
             a.faces = e.chamferFaces;
+            // The mill's included angle is twice the planes' angle to the axis; their width across
+            // the axis is their height over the tangent of their normal's angle to it.
+            double angle = -1;
+            for (int f : e.chamferFaces) {
+                const FaceInfo& cf = faces[f - 1];
+                const FaceInSetup& s = fs[static_cast<std::size_t>(f - 1)];
+                const double c = cf.kind == SurfaceKind::Plane ? dot(cf.normal, view.frame.w) : 0;
+                if (!(c > 1e-6 && c < 1 - 1e-6)) {
+                    angle = 0;
+                    continue;
+                }
+                const double beta = std::acos(c);
+                a.size = std::max(a.size, (s.hi - s.lo) / std::tan(beta));
+                const double included = 180 - 2 * beta * 180 / M_PI;
+                if (angle < 0) angle = included;
+                else if (std::fabs(angle - included) > 0.1) angle = 0;
+            }
+            a.angle = std::max(0.0, angle);
             e.attached.push_back(a);
         }
         // Island tops: faces normal to the axis on top of the island walls.

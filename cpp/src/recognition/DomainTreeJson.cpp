@@ -59,9 +59,11 @@ std::string toJson(const DomainTree& t, int indent) {
         for (auto& p : e.islands) o["islands"].push_back(poly(p));
         if (!e.islandTops.empty()) o["islandTops"] = e.islandTops;
         o["attached"] = json::array();
-        for (const AttachedFeature& a : e.attached)
+        for (const AttachedFeature& a : e.attached) {
             o["attached"].push_back(
                 {{"kind", a.kind}, {"faces", a.faces}, {"radius", a.radius}, {"size", a.size}, {"element", a.element}});
+            if (a.angle > 0) o["attached"].back()["angle"] = a.angle;
+        }
         if (e.hole) {
             const HoleInfo& h = *e.hole;
             o["hole"] = {{"diameter", h.diameter},
@@ -246,6 +248,7 @@ DomainElement element(const Field& f) {
         x.radius = a["radius"].number();
         x.size = a["size"].number();
         x.element = a["element"].integer();
+        if (a.has("angle")) x.angle = a["angle"].number();  // chamfers, since the edge step
         return x;
     });
     const Field h = f["hole"];

@@ -75,8 +75,13 @@ Operation operationFrom(const json& o, const std::string& where) {
     const auto& c = o["cutter"];
     if (!c.contains("diameter")) throw inputError(name + ": the cutter needs a diameter");
     try {
-        op.cutter = Cutter::fromDiameter(number(c["diameter"], name + " cutter diameter"),
-                                         numberOr(c, "cornerRadius", 0.0, name + " cutter"));
+        // A chamfer mill gives its included angle and tip diameter: the dexels see its cone.
+        op.cutter = c.contains("includedAngle")
+                        ? Cutter::cone(number(c["diameter"], name + " cutter diameter"),
+                                       numberOr(c, "tipDiameter", 0.0, name + " cutter"),
+                                       number(c["includedAngle"], name + " cutter included angle"))
+                        : Cutter::fromDiameter(number(c["diameter"], name + " cutter diameter"),
+                                               numberOr(c, "cornerRadius", 0.0, name + " cutter"));
     } catch (const Error& e) {
         throw inputError(name + ": " + e.what());
     }

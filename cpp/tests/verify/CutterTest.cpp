@@ -138,3 +138,33 @@ TEST(SweptSegment, RowSpanHoldsExactlyThePointsWithinReach) {
         }
     }
 }
+
+TEST(Cutter, ChamferMillIsAFlatTipThenACone) {
+    const Cutter c90 = Cutter::cone(10, 1, 90), c60 = Cutter::cone(10, 0, 60);
+    EXPECT_TRUE(c90.isCone());
+    EXPECT_FALSE(Cutter::fromDiameter(10, 0).isCone());
+    for (double r : {0.0, 0.3, 0.5, 1.0, 2.5, 5.0}) {
+        EXPECT_NEAR(c90.height(r), std::max(0.0, r - 0.5), 1e-12) << r;
+        EXPECT_NEAR(c60.height(r), r * std::sqrt(3.0), 1e-12) << r;
+    }
+    EXPECT_DOUBLE_EQ(c90.slope(0.2), 0.0);
+    EXPECT_NEAR(c90.slope(3), 1.0, 1e-12);
+    const Cutter grown = c90.grownBy(0.2);
+    EXPECT_NEAR(grown.radius, 5.2, 1e-12);
+    EXPECT_NEAR(grown.height(3.2), c90.height(3.0), 1e-12);  // moved out sideways by the allowance
+    EXPECT_NE(aeronc::test::errorOf([] { Cutter::cone(10, 10, 90); }).find("tip diameter"), std::string::npos);
+    EXPECT_NE(aeronc::test::errorOf([] { Cutter::cone(10, 1, 180); }).find("included angle"), std::string::npos);
+    // Swept along slanted and level segments, the envelope is the sampled one.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-6, 6);
+    for (int k = 0; k < 200; ++k) {
+        const double x = u(rng), y = u(rng), w1 = k % 2 ? 0.0 : u(rng);
+        const SweptSegment s(-3, 0, 0, 3, 1, w1);
+        const double e = s.envelope(c90, x, y), ref = sampledEnvelope(c90, -3, 0, 0, 3, 1, w1, x, y);
+        if (ref == HUGE_VAL) {
+            EXPECT_EQ(e, HUGE_VAL) << x << " " << y;
+            continue;
+        }
+        EXPECT_NEAR(e, ref, 2e-3) << x << " " << y << " " << w1;
+    }
+}

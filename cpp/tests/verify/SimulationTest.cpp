@@ -355,6 +355,53 @@ TEST(Simulation, SetupsSeeWhatTheSetupsBeforeRemoved) {
     EXPECT_THROW(simulateSetups(plate.mesh, {b}), aeronc::Error);
 }
 
+TEST(Simulation, ChamferMillLeavesItsConeAndGougesTheEdgeItsConeReaches) {
+    // A 90 degree chamfer mill D10, tip D1, along the pocket's lower wall (y = 10) with its tip 2 mm
+    // below the plate's top (20). Its cone is 0.5 + h wide at h above the tip.
+    const Plate plate = makePlate(60, 40, 20, {kPocket});
+    const Cutter cone = Cutter::cone(10, 1, 90);
+    auto pass = [&](double y) {
+        Operation op;
+        op.label = "chamfer";
+        op.cutter = cone;
+        op.moves = {move(MoveKind::Rapid, 20, y, kSafe), move(MoveKind::Plunge, 20, y, 18),
+                    move(MoveKind::Feed, 40, y, 18), move(MoveKind::Rapid, 40, y, kSafe)};
+        return simulate(plate.mesh, programFor(plate, {op}));
+    };
+    // 2.5 mm from the wall the cone meets the top at 20.5: clear of the edge. As a flat D10 the
+    // same pass would cut 2.5 mm into the wall.
+    const SimulationReport clear = pass(12.6);
+    EXPECT_EQ(clear.gouges.moves, 0u);
+    EXPECT_EQ(clear.collisions.moves, 0u);
+    // 1.5 mm from it the cone meets the wall 1 mm below the top and is 2.5 mm in radius at the
+    // top: it cuts a 45 degree chamfer 1 mm x 1 mm into the edge, a gouge up to 1 mm deep.
+    const SimulationReport cut = pass(11.5);
+    ASSERT_TRUE(cut.gouges.worst.has_value());
+    EXPECT_LE(cut.gouges.worst->depth, 1.0 + 1e-9);
+    EXPECT_GE(cut.gouges.worst->depth, 0.5);
+    // Over a bare 10 mm slab under the 20 mm blank, what the pass leaves is the cone's profile.
+    const Plate slab = makePlate(60, 40, 10, {});
+    Operation op;
+    op.label = "cone";
+    op.cutter = cone;
+    op.moves = {move(MoveKind::Rapid, 30, 20.1, 25), move(MoveKind::Plunge, 30, 20.1, 16),
+                move(MoveKind::Feed, 45, 20.1, 16), move(MoveKind::Rapid, 45, 20.1, 25)};
+    Program p;
+    p.hasBlank = true;
+    p.blank = {0, 0, 0, 60, 40, 20};
+    p.operations = {op};
+    const SimulationReport r = simulate(slab.mesh, p);
+    EXPECT_EQ(r.gouges.moves, 0u);
+    const Grid& g = r.leftover.grid;
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            const double x = g.centreX(i), y = g.centreY(j);
+            const double d = std::hypot(x - std::clamp(x, 30.0, 45.0), y - 20.1);
+            const double top = d <= 5 ? std::min(20.0, 16 + cone.height(d)) : 20.0;
+            ASSERT_NEAR(r.leftover.top[g.index(i, j)], top - 10, 1e-5) << x << " " << y;
+        }
+}
+
 // A finishing pass 0.2 mm below the floor of a pocket cleared to it gouges; run again, it cuts
 // nothing (no stock is left under it) but still gouges: the columns skipped for being clear of
 // part and stock must not hide it, along +Z nor along -Z (the plate turned over).

@@ -7,6 +7,7 @@
 // (ConstructionRules.h).
 #include <aeronc/chain/MachiningChain.h>
 #include <aeronc/recognition/DomainTree.h>
+#include <aeronc/toolselect/EdgeTools.h>
 #include <aeronc/toolselect/ElementPlanning.h>
 
 #include <cstddef>
@@ -33,6 +34,9 @@ struct ChainOptions {
     // A unit's radial allowance is at most this times its tool's diameter: a 1 mm end mill cannot
     // leave the 1 mm a roughing step asks for in a groove it just fits (engraving).
     double allowanceRatio = std::numeric_limits<double>::infinity();
+    // The chamfer mills the edge step may use, with their cutting data (docs/edges.md); none:
+    // chamfers and countersinks are listed, not cut.
+    std::vector<toolselect::EdgeTool> edgeTools;
     bool optimiseTravel = true;
     bool listCandidateTools = true;  // also list the tools the chain could use instead (for editing)
 };

@@ -20,7 +20,9 @@ using Loop = std::vector<Point2>;      // closed, the first point not repeated
 struct Cutter {
     double diameter = 0;
     double cornerRadius = 0;
-    std::string type;  // flat, bull, ball, drill
+    std::string type;  // flat, bull, ball, drill, chamfer
+    double tipDiameter = 0;    // chamfer mill
+    double includedAngle = 0;  // chamfer mill, degrees
 };
 
 // Spindle speed and feeds of the unit's tool in its operation.
@@ -62,6 +64,9 @@ struct MachiningUnit {
     bool faceIslandTops = false;  // a floor unit: the lower island tops are floors of it too
     std::vector<std::array<Point2, 2>> openEdges;  // stretches of the contour open to the blank
     std::vector<HoleTarget> holes;
+    // A chamfer unit (Operation::Chamfer): the mill's axis runs this far from the drive loop (the
+    // chamfer's lower line), on the pocket's side, its tip at `bottom` (toolselect/EdgeTools.h).
+    double edgeOffset = 0;
     double radialAllowance = 0, axialAllowance = 0;
     double floorFilletRadius = 0;  // the element's: the toolpath keeps the cutter out of it
     double stepDown = 0;  // the knowledge base's a_p for the tool
@@ -120,6 +125,7 @@ struct ChainTool {
     std::string id, type, material;
     double diameter = 0, cornerRadius = 0, fluteLength = 0, reach = 0;
     double neckDiameter = 0;  // 0: no neck (toolselect::Tool)
+    double tipDiameter = 0, includedAngle = 0;  // a chamfer mill (type "chamfer")
     int flutes = 0;
     int number = 0;  // T number in the chain's order of first use; 0: not used
     std::map<std::string, ToolData> settings;  // by operation: roughing, finishing, drilling

@@ -7,10 +7,12 @@
 
 namespace aeronc::chain {
 
-// WS_r, WS_w, WS_c, WS_ss, WS_sf, WS_fs, WS_ff, WS_t, plus drilling and hole milling.
-enum class StepCode { Rough, Web, Corner, SemiWall, SemiFlange, FinishWall, FinishFlange, CutOff, Drill, HoleMill };
+// WS_r, WS_w, WS_c, WS_ss, WS_sf, WS_fs, WS_ff, WS_t, plus drilling and hole milling, and the
+// edges: chamfers and countersinks cut with a chamfer mill. A template need not name the edge
+// step: absent from its step order it comes after every other step (ProcessTemplate::rank).
+enum class StepCode { Rough, Web, Corner, SemiWall, SemiFlange, FinishWall, FinishFlange, CutOff, Drill, HoleMill, Edge };
 
-const char* toString(StepCode c);  // "r", "w", "c", "ss", "sf", "fs", "ff", "t", "d", "h"
+const char* toString(StepCode c);  // "r", "w", "c", "ss", "sf", "fs", "ff", "t", "d", "h", "e"
 const char* describe(StepCode c);  // "rough the inner and outer shape", ...
 std::optional<StepCode> stepCodeFrom(const std::string& text);
 const std::vector<StepCode>& allStepCodes();
@@ -30,8 +32,8 @@ const char* toString(ToolRole r);  // "", "roughing", "finishing", "corner", "dr
 ToolRole parseToolRole(const std::string& text, const std::string& where);  // "" or NULL: None
 
 // What a unit asks of the toolpath generator.
-enum class Operation { Pocket, Profile, Drill, Helix, Rest };
-const char* toString(Operation o);  // "pocket", "profile", "drill", "helix", "rest"
+enum class Operation { Pocket, Profile, Drill, Helix, Rest, Chamfer };
+const char* toString(Operation o);  // "pocket", "profile", "drill", "helix", "rest", "chamfer"
 Operation parseOperation(const std::string& text, const std::string& where);
 
 // Feature types a template step machines: the recognised element types, and "flange" for a

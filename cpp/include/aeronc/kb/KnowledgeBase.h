@@ -7,6 +7,7 @@
 // cause or fix (missing folder, corrupt or locked file, unknown material, impossible tool)
 // is an aeronc::inputError with a message that says which.
 #include <aeronc/kb/FreeCadToolLibrary.h>
+#include <aeronc/toolselect/EdgeTools.h>
 #include <aeronc/toolselect/Tool.h>
 
 #include <memory>
@@ -95,6 +96,9 @@ public:
 
     // All tools, largest diameter first (ties by id).
     std::vector<toolselect::Tool> tools() const;
+    // The chamfer and corner-rounding mills (table edge_tool), smallest diameter first (ties by
+    // id), without cutting data. Empty for a file without the table.
+    std::vector<toolselect::EdgeTool> edgeTools() const;
     // Validates and inserts one tool; `cost` is optional. Throws inputError naming the tool for
     // impossible dimensions, a duplicate id or an unknown tool material; the database is unchanged.
     void addTool(const toolselect::Tool& tool, std::optional<double> cost = std::nullopt);

@@ -40,6 +40,10 @@ struct AttachedFeature {
     std::vector<int> faces;  // FaceN of the faces forming it
     double radius = 0;       // fillet radius
     double size = 0;         // chamfer width, rib thickness, joggle depth, bevel angle (deg)
+    // A chamfer: the included angle of the mill that cuts it (twice its angle to the tool axis),
+    // degrees; 0 when its faces differ or face away from the setup. `size` is then its widest
+    // width across the axis.
+    double angle = 0;
     int element = -1;        // joggle: the child element forming it
 };
 

@@ -1,0 +1,207 @@
+// Chamfer mills for countersinks (docs/edges.md): the choice of a mill by included angle, cover
+// and tip (toolselect/EdgeTools.h), the shipped crib's edge tools, and the edge units the chain
+// makes on a generated panel whose countersunk bolt holes are known by construction (hole 6.6 mm,
+// countersink 12 mm at 90 degrees).
+#include "Fixtures.h"
+
+#include <aeronc/brep/PartIO.h>
+#include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/recognition/DomainTreeJson.h>
+#include <aeronc/recognition/Recogniser.h>
+#include <aeronc/testparts/PanelGenerator.h>
+#include <aeronc/toolselect/EdgeTools.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace aeronc;
+using namespace aeronc::chain;
+using toolselect::EdgeNeed;
+using toolselect::EdgeTool;
+
+namespace {
+
+EdgeTool mill(const std::string& id, double d, double tip, double angle) {
+    EdgeTool t;
+    t.id = id, t.kind = "chamfer", t.material = "carbide";
+    t.diameter = d, t.tipDiameter = tip, t.includedAngle = angle, t.flutes = 4, t.reach = 25;
+    return t;
+}
+
+}  // namespace
+
+TEST(EdgeTools, ChamferMillMatchesTheAngleCoversTheWidthAndPassesInsideTheHole) {
+    const std::vector<EdgeTool> crib = {mill("90-D6", 6, 0.5, 90), mill("90-D10", 10, 1, 90),
+                                        mill("90-D16", 16, 2, 90), mill("60-D10", 10, 1, 60)};
+    // A 45 degree chamfer 2 mm wide: the D6 covers 0.25 + 0.2 + 2 = 2.45 <= 3, the smallest that does.
+    EdgeNeed chamfer{90, 2, 2, 0};
+    auto c = toolselect::chamferTool(crib, chamfer);
+    ASSERT_TRUE(c.tool) << c.why;
+    EXPECT_EQ(c.tool->id, "90-D6");
+    // 2.7 mm wide (a 12 mm countersink on a 6.6 mm hole): the D6's cone is too short, the D10 fits.
+    c = toolselect::chamferTool(crib, {90, 2.7, 2.7, 6.6});
+    ASSERT_TRUE(c.tool) << c.why;
+    EXPECT_EQ(c.tool->id, "90-D10");
+    // The same countersink on a 1.2 mm hole: no tip of these passes inside it.
+    c = toolselect::chamferTool({mill("90-D10", 10, 1, 90)}, {90, 2.7, 2.7, 1.2});
+    EXPECT_FALSE(c.tool);
+    EXPECT_NE(c.why.find("tip below 0.8 mm"), std::string::npos) << c.why;
+    // A 60 degree countersink takes the 60 degree mill, a 120 degree one none.
+    c = toolselect::chamferTool(crib, {60, 2, 2 * std::sqrt(3.0), 6.6});
+    ASSERT_TRUE(c.tool) << c.why;
+    EXPECT_EQ(c.tool->id, "60-D10");
+    c = toolselect::chamferTool(crib, {120, 2, 1.15, 6.6});
+    EXPECT_FALSE(c.tool);
+    EXPECT_NE(c.why.find("120 degree chamfer mill of diameter >= 4.4 mm"), std::string::npos) << c.why;
+    // The pass: the axis 0.2 mm beyond the tip's rim from the lower line, the tip 0.2 / tan 45 below it.
+    const auto p = toolselect::chamferPass(crib[1]);
+    EXPECT_NEAR(p.offset, 0.7, 1e-12);
+    EXPECT_NEAR(p.tipBelow, 0.2, 1e-12);
+}
+
+TEST(EdgeTools, ShippedCribHoldsTheChamferMills) {
+    const test::KbDir dir("edge_crib");
+    const auto kb = dir.open();
+    const auto tools = kb.edgeTools();
+    std::vector<std::string> chamfers;
+    for (const auto& t : tools)
+        if (t.kind == "chamfer") chamfers.push_back(t.id);
+    EXPECT_EQ(chamfers, (std::vector<std::string>{"CM-45-D6", "CM-90-D6", "CM-45-D10", "CM-90-D10", "CM-90-D16"}));
+    const auto d10 = std::find_if(tools.begin(), tools.end(), [](const EdgeTool& t) { return t.id == "CM-90-D10"; });
+    ASSERT_NE(d10, tools.end());
+    EXPECT_DOUBLE_EQ(d10->includedAngle, 90);
+    EXPECT_DOUBLE_EQ(d10->tipDiameter, 1);
+}
+
+// The panel's countersunk bolt holes are drilled, then countersunk with the 90 degree D10 mill:
+// its tip 0.2 mm below the countersink's lower line (2.7 mm below the top), its axis 0.7 mm inside
+// the 6.6 mm hole's edge, after the drill.
+TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
+    testparts::PanelSpec s;
+    s.pocketsX = 2, s.pocketsY = 1, s.pitch = 40;
+    s.lowerRibs = s.islands = s.openings = s.lighteningHoles = false;
+    s.joggles = s.flange = s.bottomPockets = false;
+    const testparts::Panel panel = testparts::makePanel(s);
+    int countersunk = 0;
+    for (const auto& t : panel.truth) countersunk += t.countersinkDiameter > 0;
+    ASSERT_GT(countersunk, 0);
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree = recognition::recognise(validatedSolid(panel.shape, "panel"), o);
+    const test::KbDir dir("edge_panel");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+
+    int cut = 0;
+    for (const auto& e : tree.elements) {
+        if (!e.hole || !(e.hole->countersinkDiameter > 0)) continue;
+        EXPECT_NEAR(e.hole->countersinkDiameter, 12, 1e-3);
+        EXPECT_NEAR(e.hole->countersinkAngle, 90, 1e-3);
+        for (const Unmachined& m : c.unmachined)
+            EXPECT_EQ(m.reason.find("countersink"), std::string::npos) << "element " << e.id << ": " << m.reason;
+        const MachiningUnit* edge = nullptr;
+        const MachiningUnit* drill = nullptr;
+        for (const MachiningUnit& u : c.units) {
+            if (u.element != e.id) continue;
+            if (u.step == StepCode::Edge) edge = &u;
+            if (u.step == StepCode::Drill || u.step == StepCode::HoleMill) drill = &u;
+        }
+        ASSERT_TRUE(edge) << "element " << e.id;
+        ASSERT_TRUE(drill) << "element " << e.id;
+        ++cut;
+        EXPECT_EQ(edge->operation, Operation::Chamfer);
+        EXPECT_EQ(edge->tool, "CM-90-D10");
+        EXPECT_EQ(edge->cutter.type, "chamfer");
+        EXPECT_DOUBLE_EQ(edge->cutter.includedAngle, 90);
+        // The countersink rises 2.7 mm from the hole's top (its location) to the panel's top.
+        const double lower = e.hole->location[2];
+        EXPECT_NEAR(lower + 2.7, s.thickness, 1e-6);
+        EXPECT_NEAR(edge->top, s.thickness, 1e-6);
+        EXPECT_NEAR(edge->bottom, lower - 0.2, 1e-6);
+        EXPECT_NEAR(edge->edgeOffset, 0.7, 1e-12);
+        // The drive loop is the hole's edge.
+        for (const Point2& p : edge->contour)
+            EXPECT_NEAR(std::hypot(p[0] - edge->at[0], p[1] - edge->at[1]), 3.3, 1e-9);
+        EXPECT_GT(edge->setting.spindleRpm, 0);
+        EXPECT_GT(edge->setting.feedMmMin, 0);
+        EXPECT_LT(edge->order, 0 + static_cast<int>(c.order.size()));
+        EXPECT_GT(edge->order, drill->order) << "the countersink comes after its hole";
+    }
+    EXPECT_EQ(cut, countersunk);
+    const ChainTool* t = c.tool("CM-90-D10");
+    ASSERT_TRUE(t);
+    EXPECT_EQ(t->type, "chamfer");
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
+}
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepFilletAPI_MakeChamfer.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <BRep_Tool.hxx>
+#include <gp_Pnt.hxx>
+
+namespace {
+
+// A 100 x 60 x 20 block with a 60 x 30 x 10 pocket whose mouth carries a 45 degree x 2 mm
+// chamfer all round (four planes: the pocket's corners are sharp).
+TopoDS_Shape chamferedPocket() {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
+    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
+    TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
+    BRepFilletAPI_MakeChamfer ch(part);
+    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        const gp_Pnt p = BRep_Tool::Pnt(a), q = BRep_Tool::Pnt(b);
+        auto onMouth = [](const gp_Pnt& r) {
+            return std::abs(r.Z() - 20) < 1e-6 && r.X() > 19 && r.X() < 81 && r.Y() > 14 && r.Y() < 46;
+        };
+        if (onMouth(p) && onMouth(q)) ch.Add(2, edge);
+    }
+    ch.Build();
+    return ch.Shape();
+}
+
+}  // namespace
+
+// Recognition measures the chamfer (90 degree mill, 2 mm wide); the chain, which cuts
+// countersinks only, lists its faces with what they are and the crib's mill that would cut them.
+TEST(EdgeTools, PocketMouthChamferIsMeasuredAndListedWithTheMillThatFits) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree = recognition::recognise(validatedSolid(chamferedPocket(), "chamfered pocket"), o);
+    const recognition::AttachedFeature* chamfer = nullptr;
+    const recognition::DomainElement* pocket = nullptr;
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    ASSERT_TRUE(chamfer);
+    EXPECT_EQ(chamfer->faces.size(), 4u);
+    EXPECT_NEAR(chamfer->angle, 90, 1e-6);
+    EXPECT_NEAR(chamfer->size, 2, 1e-6);
+    // The angle and width survive the tree's JSON.
+    const auto back = recognition::fromJson(recognition::toJson(tree));
+    bool kept = false;
+    for (const auto& e : back.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") kept = std::abs(a.angle - 90) < 1e-9 && std::abs(a.size - 2) < 1e-9;
+    EXPECT_TRUE(kept);
+
+    const test::KbDir dir("edge_pocket");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    const Unmachined* listed = nullptr;
+    for (const Unmachined& m : c.unmachined)
+        if (m.element == pocket->id && m.reason.find("chamfer face") != std::string::npos) listed = &m;
+    ASSERT_TRUE(listed);
+    EXPECT_EQ(listed->faces.size(), 4u);
+    EXPECT_NE(listed->reason.find("45 degrees to the top, up to 2 mm wide"), std::string::npos) << listed->reason;
+    EXPECT_NE(listed->reason.find("CM-90-D6"), std::string::npos) << listed->reason;
+}
