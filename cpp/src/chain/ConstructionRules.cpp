@@ -330,6 +330,11 @@ MachiningChain checkChain(MachiningChain c) {
         u.setting = {s->second.spindleRpm, s->second.feedMmMin, s->second.plungeFeedMmMin};
         u.stepDown = std::min(s->second.ap, t->fluteLength);  // as Fusing: a layer no higher than the flutes
         u.stepOver = u.operation == Operation::Drill ? 0 : s->second.ae;
+        if (u.operation == Operation::Chamfer) {  // as Fusing: one pass at the chamfer's depth, one across
+            u.stepDown = u.top - u.bottom;
+            u.stepOver = 2 * u.edgeOffset;
+            continue;
+        }
         if (u.step == StepCode::Web) {
             const auto r = t->settings.find("roughing");
             u.stepOver = r != t->settings.end() ? r->second.ae : 0.5 * t->diameter;
