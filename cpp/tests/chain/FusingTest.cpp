@@ -327,11 +327,14 @@ TEST(Fusing, SamplePanel) {
     EXPECT_EQ(toolsByHole[20.0], (std::set<std::string>{"DR-20"}));
     EXPECT_EQ(toolsByHole[11.0].size(), 1u);
     EXPECT_EQ(toolsByHole[11.0].begin()->rfind("EM-F", 0), 0u);
-    // What is left is said: sharp inner corners no end mill finishes. The countersinks are cut
-    // with a chamfer mill, one edge unit each, and not listed.
+    // What is left is said: sharp inner corners no end mill finishes, as what the finished
+    // pockets keep (not as pockets not machined). The countersinks are cut with a chamfer mill,
+    // one edge unit each, and not listed.
     int sharp = 0, countersinks = 0;
+    for (const Remainder& r : c.remainders)
+        if (r.kind == "corners" && r.step == StepCode::FinishWall && r.needs.find("sharp") != std::string::npos) ++sharp;
     for (const Unmachined& m : c.unmachined) {
-        if (m.step == StepCode::FinishWall && m.reason.find("radius <= 0 mm") != std::string::npos) ++sharp;
+        EXPECT_EQ(m.reason.find("radius <= 0 mm"), std::string::npos) << m.reason;
         EXPECT_EQ(m.reason.find("countersink"), std::string::npos) << m.reason;
     }
     for (const MachiningUnit& u : c.units) countersinks += u.operation == Operation::Chamfer;
