@@ -160,7 +160,7 @@ void Fuser::leaveCorners(const DomainElement& e, const MachiningUnit& u) {
     r.area = area;
     r.depth = tools_.unitTop(e, 0.0) - e.level;
     const double need = std::max(0.0, e.minCornerRadius);
-    r.needs = need <= kTol ? "the corners are sharp: no end mill cuts them (a radius in the part, or another process)"
+    r.needs = need <= kTol ? "a radius in the part, or another process: the corners are sharp and no end mill cuts them"
                            : "an end mill of radius <= " + fmt(need) + " mm reaching " + fmt(r.depth) + " mm";
 }
 
