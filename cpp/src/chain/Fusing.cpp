@@ -311,6 +311,12 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             std::string why;
             const int c = tools_.finisher(e, why);
             if (c < 0) return;  // the wall steps report it
+            // Corners no tool fits: the walls' passes take what the roughing left in them. A rest
+            // unit's toolpath (toolpath::restCorners) takes the region the previous cutter
+            // cleared as cleared down to the rest unit's own radial allowance; after a roughing
+            // that left more, its links pass through that band (rapids through material on the
+            // small sharp pockets of CTC-03 and CTC-05), so none is made for them yet.
+            if (tools_.leaves(e.id).corners) return;
             const Cutter before = chain_.units[static_cast<std::size_t>(st.roughUnit)].cutter;
             const Tool& ct = tools_.tool(c);
             if (ct.diameter >= before.diameter - 1e-9) return;  // the finishing tool reaches no further

@@ -307,6 +307,10 @@ TEST(Fusing, GeneratedDoubleSidedPanel) {
             return f.element == e.id && f.step == StepCode::FinishWall && f.cutter.diameter < r.cutter.diameter;
         });
         if (!finisherSmaller) continue;
+        // Corners no tool fits are left to the walls' passes and listed (Fusing.cpp).
+        if (std::any_of(c.remainders.begin(), c.remainders.end(),
+                        [&](const Remainder& m) { return m.element == e.id && m.kind == "corners"; }))
+            continue;
         EXPECT_TRUE(std::any_of(c.units.begin(), c.units.end(),
                                 [&](const MachiningUnit& u) { return u.element == e.id && u.step == StepCode::Corner; }))
             << "element " << e.id;
