@@ -271,6 +271,9 @@ def material_left(report, chain, result):
             gap_faces[element] = None
         elif gap_faces.get(element, set()) is not None:
             gap_faces[element] = gap_faces.get(element, set()) | set(int(f) for f in gap["faces"])
+    remainders = {}  # element -> what its tools leave where no tool of the crib reaches
+    for r in chain.get("remainders", []):
+        remainders.setdefault(r.get("element"), []).append(remainder_text(r))
     finished, _ = finished_faces(chain, result)
     finished = set(finished)
     groups = {}
@@ -289,6 +292,8 @@ def material_left(report, chain, result):
             reason = "unclaimed: no element machines these faces (recognition did not find the feature they bound)"
         elif owner in why:
             reason = "; ".join(why[owner])
+        elif owner in remainders:
+            reason = "; ".join(remainders[owner])
         elif any(face in finished for face, _ in faces):
             reason = "finished by the plan, but the programs leave material on it"
         else:
@@ -299,6 +304,17 @@ def material_left(report, chain, result):
                     "reason": reason})
     out.sort(key=lambda e: -(e["area"] or 0))
     return out
+
+
+def remainder_text(r):
+    """"left by EM-F2x12 (step fs): the corners, 0.86 mm² 12 mm deep; needs ..." for one chain
+    remainder (what a machined element keeps where no tool of the crib reaches)."""
+    what = "the corners" if r.get("kind") == "corners" else "the floor fillet's foot"
+    area = r.get("area")
+    return "left by {} (step {}): {}, {} {:.3g} mm deep; needs {}".format(
+        r.get("tool"), r.get("step"), what,
+        "{:,.2f} mm²".format(float(area)) if area is not None else "area not measured",
+        float(r.get("depth") or 0), r.get("needs", ""))
 
 
 def incomplete_text(left):

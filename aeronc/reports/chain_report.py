@@ -139,6 +139,20 @@ def _unmachined(run):
             .format(rows))
 
 
+def _remainders(run):
+    """What machined elements keep where no tool of the crib reaches (sharp corners, a floor
+    fillet smaller than every reaching tool's corner): listed with the area, not as elements not
+    machined."""
+    from aeronc.pipeline.verification import remainder_text
+    items = run.get("chain", {}).get("remainders", [])
+    if not items:
+        return ""
+    rows = "".join("<tr><td class='n'>{}</td><td>{}</td></tr>".format(esc(i.get("element")), esc(remainder_text(i)))
+                   for i in items)
+    return ("<h2>Left where no tool reaches</h2><table><tr><th>element</th><th>what is left</th></tr>{}</table>"
+            .format(rows))
+
+
 def _banner(run):
     """The report's first line: whether the programs are ready, in words nobody misses."""
     v = run.get("verdict")
@@ -224,7 +238,7 @@ def render(run):
              "</head><body>".format(esc(title), STYLE),
              _banner(run), "<h1>{}</h1>".format(esc(title)), _failure(run), _summary(run), _checks(run),
              _left_out(run), _material_left(run), _coverage(run), _pictures(run),
-             _setup_tables(run), _unmachined(run), _stages(run), "</body></html>"]
+             _setup_tables(run), _unmachined(run), _remainders(run), _stages(run), "</body></html>"]
     return "\n".join(parts)
 
 

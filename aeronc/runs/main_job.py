@@ -159,8 +159,11 @@ def machining_chain(job):
                                "cutLength": op.CutLength.Value,
                                "minutes": seconds / 60.0 if seconds is not None else None})
     job.data["operations"] = operations
-    return "{} units, {} elements not machined, rules {}; rapid travel -{:.0f} %; {}".format(
+    left = chain.get("remainders", [])
+    return "{} units, {} elements not machined{}, rules {}; rapid travel -{:.0f} %; {}".format(
         len(chain.get("units", [])), chain_report.unmachined_text(chain),
+        " ({} machined with corners or fillets no tool reaches)".format(len({r["element"] for r in left}))
+        if left else "",
         "all pass" if not failed else "{} FAIL".format(len(failed)), float(travel.get("savedPercent") or 0),
         _optimised_text(job.chain_obj))
 

@@ -336,6 +336,10 @@ int planCmd(int argc, char** argv, bool chain) {
         for (const auto& m : c.unmachined)
             std::cerr << "unmachined: element " << m.element
                       << (m.step ? std::string(" step ") + toString(*m.step) : "") << ": " << m.reason << "\n";
+        for (const auto& r : c.remainders)
+            std::cerr << "left: element " << r.element << " step " << toString(r.step) << ": " << r.tool << " leaves the "
+                      << (r.kind == "corners" ? "corners" : "floor fillet's foot") << ", " << r.area << " mm2 "
+                      << r.depth << " mm deep; it needs " << r.needs << "\n";
         for (const auto& k : c.checks)
             if (!k.ok) std::cerr << "rule " << k.rule << ": " << k.node << ": " << k.message << "\n";
     }

@@ -312,6 +312,11 @@ std::string toJson(const MachiningChain& c, int indent) {
                                    {"step", m.step ? json(toString(*m.step)) : json(nullptr)},
                                    {"reason", m.reason},
                                    {"faces", m.faces}});
+    j["remainders"] = json::array();
+    for (const Remainder& r : c.remainders)
+        j["remainders"].push_back({{"element", r.element}, {"step", toString(r.step)}, {"kind", r.kind},
+                                   {"tool", r.tool}, {"toolRadius", num(r.toolRadius)}, {"area", num(r.area)},
+                                   {"depth", num(r.depth)}, {"needs", r.needs}});
     j["tools"] = json::object();
     for (const ChainTool& t : c.tools) {
         json settings = json::object();
@@ -426,6 +431,23 @@ MachiningChain fromJson(const std::string& text) {
             for (std::size_t k = 0; k < faces.size(); ++k) u.faces.push_back(faces[k].integer());
         }
         c.unmachined.push_back(u);
+    }
+    if (root.has("remainders")) {  // absent in older chains
+        const In remainders = root["remainders"];
+        for (std::size_t i = 0; i < remainders.size(); ++i) {
+            const In m = remainders[i];
+            Remainder r;
+            r.element = m["element"].integer();
+            r.step = parseStepCode(m["step"].text(), "chain JSON " + m.path());
+            r.kind = m["kind"].text();
+            if (r.kind != "corners" && r.kind != "floor_fillet") m["kind"].bad("is neither corners nor floor_fillet");
+            r.tool = m["tool"].text();
+            r.toolRadius = m["toolRadius"].number();
+            r.area = m["area"].number();
+            r.depth = m["depth"].number();
+            r.needs = m["needs"].text();
+            c.remainders.push_back(r);
+        }
     }
     const In tools = root["tools"];
     if (!tools.raw().is_object()) tools.bad("is not an object keyed by tool id");

@@ -204,6 +204,18 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
         }
     }
 
+    // What the chain says a tool leaves on an element (Remainder): the largest radius (corner
+    // radius) it accepts for the element's walls (floor), where no tool of the crib fits.
+    std::map<int, double> leftCorners, leftFillet;
+    for (const Remainder& r : c.remainders) {
+        auto& m = r.kind == "corners" ? leftCorners : leftFillet;
+        m[r.element] = std::max(m.count(r.element) ? m[r.element] : 0.0, r.toolRadius);
+    }
+    auto accepted = [](const std::map<int, double>& m, int element, double radius) {
+        const auto it = m.find(element);
+        return it != m.end() && radius <= it->second + kTol;
+    };
+
     // Fit of each tool to its element.
     for (const MachiningUnit* u : ordered) {
         const ChainTool* tool = c.tool(u->tool);
@@ -232,14 +244,15 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
             fail("fit", node,
                  who + " reaches " + fmt(tool->usableLength()) + " mm; the unit goes " + fmt(top - u->bottom) + " mm deep");
         if ((u->operation == Operation::Profile || u->operation == Operation::Rest) && e->minCornerRadius >= 0 &&
-            0.5 * tool->diameter > e->minCornerRadius + kTol)
+            0.5 * tool->diameter > e->minCornerRadius + kTol && !accepted(leftCorners, e->id, 0.5 * tool->diameter))
             fail("fit", node, who + " is wider than the " + fmt(e->minCornerRadius) + " mm corners of element " +
                                   std::to_string(e->id));
         if ((u->operation == Operation::Profile || u->step == StepCode::Web) && e->featureType != "open_pocket" &&
             e->featureType != "flange" && e->minWidth > 0 && tool->diameter > e->minWidth - 2 * u->radialAllowance + kTol)
             fail("fit", node, who + " does not pass the " + fmt(e->minWidth) + " mm narrowest width of element " +
                                   std::to_string(e->id) + " with " + fmt(u->radialAllowance) + " mm allowance");
-        if (u->step == StepCode::Web && tool->cornerRadius > std::max(0.0, e->floorFilletRadius) + kTol)
+        if (u->step == StepCode::Web && tool->cornerRadius > std::max(0.0, e->floorFilletRadius) + kTol &&
+            !accepted(leftFillet, e->id, tool->cornerRadius))
             fail("fit", node, who + " has a larger corner radius than the " + fmt(std::max(0.0, e->floorFilletRadius)) +
                                   " mm floor fillet of element " + std::to_string(e->id));
         if (e->holeDiameter) {

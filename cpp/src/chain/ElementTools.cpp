@@ -140,7 +140,7 @@ std::string ElementTools::planError(const DomainElement& e, bool roughing) const
 }
 
 std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const TemplateStep& step, Operation op,
-                            double bottom) const {
+                                   double bottom, Leaves leave) const {
     const std::string who = "tool " + t.id + " (D" + fmt(t.diameter) + ")";
     if (op == Operation::Drill) {
         if (t.type != "drill") return who + " is not a drill";
@@ -155,7 +155,7 @@ std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const 
     if (t.usableLength() + kTol < need)
         return who + " reaches " + fmt(t.usableLength()) + " mm; " + elementName(e) + " needs " + fmt(need) + " mm";
     const double ar = allowanceOf(step, t);
-    if (op == Operation::Profile || op == Operation::Rest) {
+    if ((op == Operation::Profile || op == Operation::Rest) && !leave.corners) {
         // Side fillet: the tool follows the concave corners.
         if (e.minCornerRadius >= 0 && t.radius() > e.minCornerRadius + kTol)
             return who + " is wider than the " + fmt(e.minCornerRadius) + " mm corner radius of " + elementName(e);
@@ -168,7 +168,7 @@ std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const 
                    " with " + fmt(ar) + " mm allowance";
     }
     // Floor fillet: finishing a floor leaves the tool's corner radius at its edge.
-    if (step.code == StepCode::Web && t.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol)
+    if (step.code == StepCode::Web && !leave.fillet && t.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol)
         return who + " has a " + fmt(t.cornerRadius) + " mm corner radius, larger than the " +
                fmt(std::max(0.0, e.floorFilletRadius)) + " mm floor fillet of " + elementName(e);
     return "";
@@ -205,7 +205,7 @@ int ElementTools::finisher(const DomainElement& e, std::string& why) {
         return cached->second.first;
     }
     const std::string ft = featureTypeOf(e);
-    auto suits = [&](const Tool& t) {
+    auto suits = [&](const Tool& t, Leaves leave = {}) {
         for (const TemplateStep& s : tmpl_.steps) {
             if (s.existence == Existence::MustNot || !s.machines(ft)) continue;
             Operation op;
@@ -213,7 +213,7 @@ int ElementTools::finisher(const DomainElement& e, std::string& why) {
             else if (s.code == StepCode::Corner) op = Operation::Rest;
             else if (s.role == ToolRole::Finishing && s.code != StepCode::HoleMill) op = Operation::Profile;
             else continue;
-            const std::string m = mismatch(t, e, s, op, bottomOf(e));
+            const std::string m = mismatch(t, e, s, op, bottomOf(e), leave);
             if (!m.empty()) return m;
         }
         return std::string();
@@ -251,6 +251,40 @@ int ElementTools::finisher(const DomainElement& e, std::string& why) {
             }
         }
     }
+    // No tool fits everything: the best that fits the rest finishes what it reaches, and the
+    // chain lists what it leaves. For corners sharper than every tool, the smallest radius
+    // that reaches (it leaves the least); for a floor fillet smaller than the corner of every
+    // tool that reaches the floor, the smallest corner radius, then the widest.
+    if (best < 0) {
+        const double fillet = std::max(0.0, e.floorFilletRadius);
+        for (const Leaves leave : {Leaves{true, false}, Leaves{false, true}, Leaves{true, true}}) {
+            for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
+                const Tool& t = plan_.tools[i];
+                if (!t.isEndMill() || t.type == "ball" || t.diameter > maxD + 1e-9 ||
+                    !hasSetting(static_cast<int>(i), "finishing"))
+                    continue;
+                if (!suits(t, leave).empty()) continue;
+                if (best < 0) {
+                    best = static_cast<int>(i);
+                    continue;
+                }
+                const Tool& b = tool(best);
+                const double dr = leave.fillet ? std::max(0.0, t.cornerRadius - fillet) - std::max(0.0, b.cornerRadius - fillet) : 0.0;
+                const bool better = leave.corners
+                                        ? (std::fabs(dr) > 1e-9 ? dr < 0 : t.diameter < b.diameter - 1e-9)
+                                        : (std::fabs(dr) > 1e-9 ? dr < 0 : t.diameter > b.diameter + 1e-9);
+                if (better) best = static_cast<int>(i);
+            }
+            if (best >= 0) {
+                // Only what the chosen tool really leaves.
+                Leaves really;
+                really.corners = leave.corners && e.minCornerRadius >= 0 && tool(best).radius() > e.minCornerRadius + kTol;
+                really.fillet = leave.fillet && tool(best).cornerRadius > fillet + kTol;
+                leaves_[e.id] = really;
+                break;
+            }
+        }
+    }
     if (best >= 0) why.clear();
     finishers_[e.id] = {best, why};
     return best;
@@ -263,6 +297,27 @@ int ElementTools::floorTool(const DomainElement& e, const TemplateStep& step, st
     std::string finishWhy;
     const int f = finisher(e, finishWhy);
     if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
+    // No end mill whose corner fits the fillet reaches the floor: the one with the smallest
+    // corner radius that does (then the widest) finishes it and leaves the fillet's foot.
+    {
+        const int r = roughingTool(e);
+        // Between the walls' tool and the roughing tool: the diameters never grow along the steps.
+        const double maxD = r >= 0 ? tool(r).diameter : kInf, minD = f >= 0 ? tool(f).diameter : 0.0;
+        int best = -1;
+        for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
+            const Tool& t = plan_.tools[i];
+            if (!t.isEndMill() || t.type == "ball" || t.diameter > maxD + 1e-9 || t.diameter < minD - 1e-9) continue;
+            if (!hasSetting(static_cast<int>(i), "finishing")) continue;
+            if (!mismatch(t, e, step, Operation::Pocket, e.level, {false, true}).empty()) continue;
+            if (best < 0 || t.cornerRadius < tool(best).cornerRadius - 1e-9 ||
+                (std::fabs(t.cornerRadius - tool(best).cornerRadius) <= 1e-9 && t.diameter > tool(best).diameter + 1e-9))
+                best = static_cast<int>(i);
+        }
+        if (best >= 0) {
+            leaves_[e.id].fillet = true;
+            return best;
+        }
+    }
     why = "no end mill with a corner radius of at most " + fmt(std::max(0.0, e.floorFilletRadius)) +
           " mm reaches the " + fmt(e.depth) + " mm deep floor of " + elementName(e);
     return -1;

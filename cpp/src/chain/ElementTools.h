@@ -22,6 +22,13 @@ std::string fmt(double x);
 // "element <id> (<feature type>)", for messages.
 std::string elementName(const recognition::DomainElement& e);
 
+// What an element's tools may leave where no tool of the crib fits: its concave vertical
+// corners (a wall tool wider than their radius) or its floor fillet (a floor tool with a larger
+// corner radius). The chain lists what they leave (Remainder).
+struct Leaves {
+    bool corners = false, fillet = false;
+};
+
 class ElementTools {
 public:
     // The radial allowance a unit of `step` with tool `t` leaves (ChainOptions::allowanceRatio).
@@ -54,9 +61,16 @@ public:
     double unitTop(const recognition::DomainElement& e, double axialAllowance) const;
     double bottomOf(const recognition::DomainElement& e) const;
 
-    // Why `t` cannot do `step` on `e` down to `bottom`; empty when it can.
+    // What the tools chosen for `e` leave (none until finisher or floorTool gave way).
+    Leaves leaves(int element) const {
+        const auto it = leaves_.find(element);
+        return it == leaves_.end() ? Leaves{} : it->second;
+    }
+
+    // Why `t` cannot do `step` on `e` down to `bottom`; empty when it can. `leave` waives the
+    // corner or floor-fillet check.
     std::string mismatch(const toolselect::Tool& t, const recognition::DomainElement& e, const TemplateStep& step,
-                         Operation op, double bottom) const;
+                         Operation op, double bottom, Leaves leave = Leaves{}) const;
 
     int plannedRoughingTool(const recognition::DomainElement& e) const;
     // The planned roughing tool; for a pocket open to the blank, the finishing tool when that is
@@ -90,6 +104,7 @@ private:
     std::map<int, Vec3> directions_;
     mutable std::map<int, int> roughWithAllowance_;         // element -> roughing tool fitted to the allowance
     std::map<int, std::pair<int, std::string>> finishers_;  // element -> tool and why none
+    std::map<int, Leaves> leaves_;                          // element -> what its tools leave
 };
 
 }  // namespace aeronc::chain::detail

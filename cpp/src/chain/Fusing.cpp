@@ -12,7 +12,9 @@
 #include "Unmachined.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -65,6 +67,9 @@ private:
                            double bottom);
     void makeUnits(const DomainElement& e, const TemplateStep& step);
     void makeEdgeUnits(const DomainElement& e);
+    void leaveCorners(const DomainElement& e, const MachiningUnit& u);
+    void leaveFillet(const DomainElement& e, const MachiningUnit& u);
+    Remainder& remainderOf(const DomainElement& e, const char* kind);
     MachiningUnit& addEdgeUnit(const DomainElement& e, const toolselect::EdgeTool& t, double top, double bottom,
                                double offset);
 
@@ -124,6 +129,66 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     ++state_[e.id].units;
     state_[e.id].steps.insert(step.code);
     return chain_.units.back();
+}
+
+Remainder& Fuser::remainderOf(const DomainElement& e, const char* kind) {
+    for (Remainder& r : chain_.remainders)
+        if (r.element == e.id && r.kind == kind) return r;
+    Remainder r;
+    r.element = e.id;
+    r.kind = kind;
+    chain_.remainders.push_back(r);
+    return chain_.remainders.back();
+}
+
+// The wall tool is wider than the element's corners and no tool of the crib that reaches fits
+// them: what it leaves in plan (the region no disc of its radius inside the outline reaches),
+// the wall's height, and the tool they would need. The last wall step's tool counts.
+void Fuser::leaveCorners(const DomainElement& e, const MachiningUnit& u) {
+    const double radius = 0.5 * u.cutter.diameter;
+    double area = 0;
+    try {
+        const auto m = toolselect::machinableRatio(toolselect::pocketGeometry(e, tools_.direction(e.setup)), radius);
+        area = std::max(0.0, m.area - m.machinableArea);
+    } catch (const Error&) {
+        area = std::numeric_limits<double>::quiet_NaN();  // not measured: said as such (null in JSON)
+    }
+    Remainder& r = remainderOf(e, "corners");
+    r.step = u.step;
+    r.tool = u.tool;
+    r.toolRadius = radius;
+    r.area = area;
+    r.depth = tools_.unitTop(e, 0.0) - e.level;
+    const double need = std::max(0.0, e.minCornerRadius);
+    r.needs = need <= kTol ? "a radius in the part, or another process: the corners are sharp and no end mill cuts them"
+                           : "an end mill of radius <= " + fmt(need) + " mm reaching " + fmt(r.depth) + " mm";
+}
+
+// The floor tool's corner radius is larger than the floor fillet and no end mill whose corner
+// fits reaches the floor: a band along the floor's walls (the open edges have none) as wide as
+// the difference of the radii is left on the fillet.
+void Fuser::leaveFillet(const DomainElement& e, const MachiningUnit& u) {
+    auto loopLength = [](const std::vector<std::array<double, 2>>& loop) {
+        double l = 0;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const auto& a = loop[i];
+            const auto& b = loop[(i + 1) % loop.size()];
+            l += std::hypot(b[0] - a[0], b[1] - a[1]);
+        }
+        return l;
+    };
+    double walls = loopLength(u.contour);
+    for (const auto& isl : u.islands) walls += loopLength(isl);
+    for (const auto& oe : u.openEdges) walls -= std::hypot(oe[1][0] - oe[0][0], oe[1][1] - oe[0][1]);
+    const double fillet = std::max(0.0, e.floorFilletRadius);
+    Remainder& r = remainderOf(e, "floor_fillet");
+    r.step = u.step;
+    r.tool = u.tool;
+    r.toolRadius = u.cutter.cornerRadius;
+    r.depth = u.cutter.cornerRadius - fillet;
+    r.area = std::max(0.0, walls) * r.depth;
+    r.needs = "an end mill with a corner radius <= " + fmt(fillet) + " mm reaching the " + fmt(e.top - e.level) +
+              " mm deep floor";
 }
 
 void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
@@ -237,6 +302,8 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             u.stepOver = std::min(u.stepOver, floorStepOver(u.cutter.diameter, u.cutter.cornerRadius, opt_.floorScallop));
             st.floorAllowance = u.axialAllowance;
             if (st.roughUnit < 0) st.roughUnit = u.id;
+            if (tools_.leaves(e.id).fillet && u.cutter.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol)
+                leaveFillet(e, u);
             return;
         }
         case StepCode::Corner: {
@@ -244,6 +311,12 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             std::string why;
             const int c = tools_.finisher(e, why);
             if (c < 0) return;  // the wall steps report it
+            // Corners no tool fits: the walls' passes take what the roughing left in them. A rest
+            // unit's toolpath (toolpath::restCorners) takes the region the previous cutter
+            // cleared as cleared down to the rest unit's own radial allowance; after a roughing
+            // that left more, its links pass through that band (rapids through material on the
+            // small sharp pockets of CTC-03 and CTC-05), so none is made for them yet.
+            if (tools_.leaves(e.id).corners) return;
             const Cutter before = chain_.units[static_cast<std::size_t>(st.roughUnit)].cutter;
             const Tool& ct = tools_.tool(c);
             if (ct.diameter >= before.diameter - 1e-9) return;  // the finishing tool reaches no further
@@ -270,7 +343,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 return;
             }
             if (rest <= opt_.restMinArea) return;
-            const std::string bad = tools_.mismatch(ct, e, step, Operation::Rest, bottom);
+            const std::string bad = tools_.mismatch(ct, e, step, Operation::Rest, bottom, tools_.leaves(e.id));
             if (!bad.empty()) {
                 gap(bad);
                 return;
@@ -296,12 +369,13 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 gap(why);
                 return;
             }
-            const std::string bad = tools_.mismatch(tools_.tool(f), e, step, Operation::Profile, bottom);
+            const std::string bad = tools_.mismatch(tools_.tool(f), e, step, Operation::Profile, bottom, tools_.leaves(e.id));
             if (!bad.empty()) {
                 gap(bad);
                 return;
             }
-            addUnit(e, step, Operation::Profile, f, top, bottom);
+            const MachiningUnit& u = addUnit(e, step, Operation::Profile, f, top, bottom);
+            if (tools_.leaves(e.id).corners) leaveCorners(e, u);
             return;
         }
         case StepCode::Drill:

@@ -60,8 +60,10 @@ TEST(ChainBadInput, ATemplateMissingMustStepsOrWithABrokenRuleStopsThePlan) {
     EXPECT_NE(e.find("names no feature type"), std::string::npos) << e;
 }
 
-TEST(ChainBadInput, AnElementNoToolCanMachineIsListedNotFatal) {
+TEST(ChainBadInput, CornersNoToolFitsAreListedAsWhatTheMachinedPocketKeeps) {
     // Pocket corners of radius 0.2 mm: no shipped end mill (the smallest is 0.5 mm) finishes them.
+    // The pockets are roughed and finished with the smallest tool; the corners are listed with
+    // the tool they would need, and the pockets are not listed as not machined.
     testparts::PanelSpec s;
     s.pocketsX = 2;
     s.pocketsY = 1;
@@ -78,15 +80,21 @@ TEST(ChainBadInput, AnElementNoToolCanMachineIsListedNotFatal) {
     for (const auto& e : tree.elements) {
         if (e.type != recognition::ElementType::ClosedPocket) continue;
         ++pockets;
-        bool listed = false, roughed = false;
-        for (const Unmachined& m : c.unmachined)
-            if (m.element == e.id && m.step == StepCode::FinishWall) {
+        bool listed = false, roughed = false, finished = false;
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        for (const Remainder& r : c.remainders)
+            if (r.element == e.id && r.kind == "corners") {
                 listed = true;
-                EXPECT_NE(m.reason.find("radius <= 0.2 mm"), std::string::npos) << m.reason;
+                EXPECT_NE(r.needs.find("radius <= 0.2 mm"), std::string::npos) << r.needs;
+                EXPECT_GT(r.area, 0);
             }
-        for (const MachiningUnit& u : c.units) roughed |= u.element == e.id && u.step == StepCode::Rough;
+        for (const MachiningUnit& u : c.units) {
+            roughed |= u.element == e.id && u.step == StepCode::Rough;
+            finished |= u.element == e.id && u.step == StepCode::FinishWall;
+        }
         EXPECT_TRUE(listed) << "element " << e.id;
-        EXPECT_TRUE(roughed) << "element " << e.id;  // what can be done still is
+        EXPECT_TRUE(roughed) << "element " << e.id;
+        EXPECT_TRUE(finished) << "element " << e.id;
     }
     EXPECT_EQ(pockets, 2);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;

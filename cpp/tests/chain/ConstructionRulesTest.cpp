@@ -244,6 +244,35 @@ TEST(ConstructionRules, FitFailsForAToolThatDoesNotSuitItsElement) {
     EXPECT_NE(all.find("tool 'T99' is not in the chain's tool list"), std::string::npos) << all;
 }
 
+// A wall tool wider than the corners is accepted where the chain lists the corners it leaves
+// (no tool of the crib fits them), up to the radius listed: a wider tool edited in still fails.
+TEST(ConstructionRules, FitAcceptsTheCornersTheChainListsAsLeft) {
+    MachiningChain c = smallChain();
+    const MachiningUnit& wall = unitOf(c, 0, StepCode::FinishWall);
+    const double r = 0.5 * wall.cutter.diameter;
+    for (ChainElement& e : c.elements)
+        if (e.id == 0) e.minCornerRadius = r - 1;
+    c = checkChain(c);
+    EXPECT_FALSE(failures(c, "fit").empty());
+    Remainder left;
+    left.element = 0;
+    left.kind = "corners";
+    left.tool = wall.tool;
+    left.toolRadius = r;
+    left.area = 1;
+    left.depth = 15;
+    left.needs = "an end mill of radius <= " + std::to_string(r - 1) + " mm";
+    c.remainders.push_back(left);
+    c = checkChain(c);
+    for (const RuleCheck& rc : failures(c, "fit")) ADD_FAILURE() << rc.node << ": " << rc.message;
+    EXPECT_EQ(toJson(fromJson(toJson(c))), toJson(c));
+    c.units[static_cast<std::size_t>(unitOf(c, 0, StepCode::FinishWall).id)].tool = "R20";
+    c = checkChain(c);
+    bool wider = false;
+    for (const RuleCheck& rc : failures(c, "fit")) wider |= rc.message.find("R20 (D20) is wider than") != std::string::npos;
+    EXPECT_TRUE(wider);
+}
+
 TEST(ConstructionRules, CheckChainRefusesAnOrderThatIsNoPermutation) {
     MachiningChain c = smallChain();
     c.order.pop_back();

@@ -5,12 +5,15 @@
 #include "Fixtures.h"
 
 #include <aeronc/brep/PartIO.h>
+#include <aeronc/chain/ChainJson.h>
+#include <aeronc/chain/ConstructionRules.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 using namespace aeronc;
@@ -165,4 +168,141 @@ TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
     }
     EXPECT_EQ(pockets, 2);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+namespace {
+
+// The crib's end mills as the selector sees them (id, type, diameter, corner radius, reach).
+struct CribMill {
+    std::string id, type;
+    double diameter, cornerRadius, usable;
+};
+std::vector<CribMill> cribMills(const kb::KnowledgeBase& kb) {
+    const kb::Table t = kb.table("tool");
+    auto col = [&](const char* name) {
+        for (std::size_t i = 0; i < t.columns.size(); ++i)
+            if (t.columns[i].name == name) return i;
+        ADD_FAILURE() << "no column " << name;
+        return std::size_t{0};
+    };
+    const std::size_t id = col("id"), type = col("type"), d = col("diameter"), cr = col("corner_radius"),
+                      fl = col("flute_length"), reach = col("reach"), neck = col("neck_diameter");
+    std::vector<CribMill> out;
+    for (const auto& r : t.rows) {
+        if (*r[type] != "flat" && *r[type] != "bull") continue;
+        const double f = std::stod(*r[fl]), re = std::stod(*r[reach]);
+        out.push_back({*r[id], *r[type], std::stod(*r[d]), std::stod(*r[cr]), r[neck] || f >= re ? re : f});
+    }
+    return out;
+}
+
+const Remainder* remainderOf(const MachiningChain& c, int element, const std::string& kind) {
+    for (const Remainder& r : c.remainders)
+        if (r.element == element && r.kind == kind) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
+// Sharp (R0) vertical corners, 12 mm deep: no end mill fits them. The pocket is roughed with a
+// larger tool and finished with the smallest radius the crib has that reaches 12 mm; the corners
+// it leaves are listed with their area (four 90-degree corners: 4 (1 - pi/4) r^2), not the whole
+// pocket.
+TEST(ToolCrib, SharpCorneredPocketIsFinishedWithTheSmallestReachingToolAndTheCornersListed) {
+    const auto tree = recogniseUp(pocketsOnly(20, 8, 0));
+    const test::KbDir dir("crib_sharp");
+    const auto kb = dir.open();
+    double smallest = 1e9;  // the smallest radius of an end mill reaching 12 mm
+    for (const CribMill& m : cribMills(kb))
+        if (m.usable >= 12 - 1e-9) smallest = std::min(smallest, 0.5 * m.diameter);
+    ASSERT_LT(smallest, 3.0);
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.minCornerRadius, 0, 1e-6);
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        const auto walls = finishWalls(c, e.id);
+        ASSERT_FALSE(walls.empty()) << "element " << e.id;
+        for (const MachiningUnit* u : walls) {
+            EXPECT_NEAR(0.5 * u->cutter.diameter, smallest, 1e-9) << u->tool;
+            EXPECT_NEAR(u->bottom, e.level, 1e-6);
+        }
+        // Roughed with a larger tool; the walls' passes, not a rest unit, take what it left in the
+        // corners (a rest unit's links would cross the roughing's wider allowance: Fusing.cpp).
+        bool rest = false, wider = false;
+        for (const MachiningUnit& u : c.units)
+            if (u.element == e.id) {
+                rest |= u.operation == Operation::Rest;
+                wider |= u.step == StepCode::Rough && 0.5 * u.cutter.diameter > smallest + 1e-9;
+            }
+        EXPECT_TRUE(wider) << "element " << e.id;
+        EXPECT_FALSE(rest) << "element " << e.id;
+        const Remainder* r = remainderOf(c, e.id, "corners");
+        ASSERT_TRUE(r) << "element " << e.id;
+        EXPECT_EQ(r->tool, walls.back()->tool);
+        EXPECT_NEAR(r->toolRadius, smallest, 1e-9);
+        EXPECT_NEAR(r->depth, 12, 1e-6);
+        const double corners = 4 * (1 - M_PI / 4) * smallest * smallest;
+        EXPECT_NEAR(r->area, corners, 0.1 * corners);
+        EXPECT_NE(r->needs.find("sharp"), std::string::npos) << r->needs;
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& rc : c.checks) EXPECT_TRUE(rc.ok) << rc.node << ": " << rc.message;
+    // The chain checked again, unedited, is unchanged; the JSON keeps the remainders.
+    EXPECT_EQ(toJson(checkChain(c)), toJson(c));
+    EXPECT_EQ(fromJson(toJson(c)).remainders.size(), c.remainders.size());
+}
+
+// A crib whose end mills reaching 24 mm are all bull-nosed (the flat ones taken out), a floor
+// fillet of 0.3 mm: the floor is finished with the smallest corner radius that reaches (0.5 mm),
+// and the band it leaves along the walls (0.2 mm high) is listed with its area.
+TEST(ToolCrib, FloorFilletSmallerThanEveryReachingCornerIsFinishedAndTheFootListed) {
+    testparts::PanelSpec s = pocketsOnly(30, 6, 6);
+    s.floorFillet = 0.3;
+    const auto tree = recogniseUp(s);
+    const test::KbDir dir("crib_fillet");
+    auto kb = dir.open();
+    {
+        const kb::Table t = kb.table("tool");
+        std::vector<long long> drop;
+        const auto mills = cribMills(kb);
+        for (std::size_t i = 0, k = 0; i < t.rows.size(); ++i) {
+            if (*t.rows[i][1] != "flat" && *t.rows[i][1] != "bull") continue;
+            const CribMill& m = mills[k++];
+            if (m.type == "flat" && m.usable >= 24 - 1e-9) drop.push_back(t.rowIds[i]);
+        }
+        ASSERT_FALSE(drop.empty());
+        kb.editTable("tool", {}, {}, drop);
+    }
+    double smallestCorner = 1e9;
+    for (const CribMill& m : cribMills(kb))
+        if (m.usable >= 24 - 1e-9) smallestCorner = std::min(smallestCorner, m.cornerRadius);
+    ASSERT_NEAR(smallestCorner, 0.5, 1e-9);
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.floorFilletRadius, 0.3, 1e-6);
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        const MachiningUnit* floor = nullptr;
+        for (const MachiningUnit& u : c.units)
+            if (u.element == e.id && u.step == StepCode::Web) floor = &u;
+        ASSERT_TRUE(floor) << "element " << e.id;
+        EXPECT_NEAR(floor->cutter.cornerRadius, smallestCorner, 1e-9) << floor->tool;
+        EXPECT_NEAR(floor->bottom, e.level, 1e-6);
+        EXPECT_FALSE(finishWalls(c, e.id).empty());
+        const Remainder* r = remainderOf(c, e.id, "floor_fillet");
+        ASSERT_TRUE(r) << "element " << e.id;
+        EXPECT_NEAR(r->depth, 0.2, 1e-9);
+        // The band along the pocket's walls: 4 x (36 - 12) straight + 2 pi x 6 round, 0.2 mm wide.
+        const double walls = 4 * (36 - 12) + 2 * M_PI * 6;
+        EXPECT_NEAR(r->area, 0.2 * walls, 0.02 * 0.2 * walls);
+        EXPECT_NE(r->needs.find("0.3 mm"), std::string::npos) << r->needs;
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& rc : c.checks) EXPECT_TRUE(rc.ok) << rc.node << ": " << rc.message;
+    EXPECT_EQ(toJson(checkChain(c)), toJson(c));
 }

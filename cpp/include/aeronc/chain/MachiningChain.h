@@ -147,6 +147,22 @@ struct Unmachined {
     std::vector<int> faces;  // the faces left when it is not the whole element (FaceN)
 };
 
+// What a machined element keeps after its units because no tool of the crib reaches it: a sharp
+// or small vertical corner (every wall tool leaves its own radius there) or a floor fillet smaller
+// than the corner radius of every end mill reaching the floor. The element is machined; this is
+// the part of it left, with the tool it would need. The fit rule accepts the element's wall
+// (floor) units whose radius (corner radius) is no larger than `toolRadius`.
+struct Remainder {
+    int element = -1;
+    StepCode step = StepCode::FinishWall;  // the step whose tool leaves it
+    std::string kind;                      // "corners" or "floor_fillet"
+    std::string tool;                      // the tool that leaves it
+    double toolRadius = 0;  // corners: that tool's radius; floor_fillet: its corner radius, mm
+    double area = 0;        // the area left, mm² (corners: in plan; floor fillet: the band along the floor's edge)
+    double depth = 0;       // how deep it goes (corners: the wall's height; floor fillet: the band's height), mm
+    std::string needs;      // the tool it would need
+};
+
 struct Travel {
     double rulesOnly = 0;  // rapid travel of the order the sequencing rules alone give, mm
     double optimised = 0;  // of the chain's order
@@ -164,6 +180,7 @@ struct MachiningChain {
     Travel travel;
     std::vector<RuleCheck> checks;
     std::vector<Unmachined> unmachined;
+    std::vector<Remainder> remainders;
 
     const ChainTool* tool(const std::string& id) const;
     const ChainElement* element(int id) const;
