@@ -31,11 +31,13 @@ using aeronc::test::inputErrorOf;
 namespace {
 
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
-// 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib, and the
-// long-reach D3 ball of schema version 7.
-constexpr std::size_t kShippedTools = 91;
-// The crib's tools added by schema version 6 (docs/tool-crib.md).
-constexpr std::size_t kCribTools = 30;
+// 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib and the
+// 5 extra-long-neck end mills, and the long-reach D3 ball of schema version 8.
+constexpr std::size_t kShippedTools = 96;
+// The crib's tools added by schema versions 6 and 7 (docs/tool-crib.md).
+constexpr std::size_t kCribTools = 35;
+// The extra-long-neck series schema version 7 added (8 x D).
+const std::vector<std::string> kExtraLongNeck = {"EM-F1.5x12", "EM-F2x16", "EM-F3x24", "EM-F4x32", "EM-F6x48"};
 
 // What schema version 6 added to a new file (docs/tool-crib.md), removed again: the layout and
 // rows of a version-5 file, from which a test makes the older ones.
@@ -725,6 +727,54 @@ TEST_F(KnowledgeBaseTest, MigratesVersionFiveAddingTheShopCrib) {
 
 // A user's own crib (a version-5 file holding none of the shipped end mills) stays theirs: the
 // migration adds the columns and tables but no tool and no cutting data of the shipped crib.
+// Version 6 had no extra-long-neck end mills: the migration adds them to the shipped crib, as a new
+// file has them, and keeps a user's tool.
+TEST_F(KnowledgeBaseTest, MigratesVersionSixAddingTheExtraLongNeckSeries) {
+    const fs::path p = file();
+    { openDefault(p); }
+    std::string drop = "DELETE FROM tool WHERE id IN (";
+    for (std::size_t i = 0; i < kExtraLongNeck.size(); ++i) drop += (i ? ", '" : "'") + kExtraLongNeck[i] + "'";
+    rawExec(p, drop + ");" + R"sql(
+        UPDATE schema_version SET version = 6;
+        INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach)
+            VALUES ('SHOP-F5', 'flat', 'carbide', 5, 0, 3, 12, 30);
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    EXPECT_TRUE(fs::exists(p.string() + ".v6.bak"));
+    std::map<std::string, Tool> migrated, made;
+    for (const Tool& t : kb.tools()) migrated[t.id] = t;
+    KnowledgeBase shipped = openDefault(dir_ / "fresh.sqlite");
+    for (const Tool& t : shipped.tools()) made[t.id] = t;
+    EXPECT_EQ(migrated.size(), made.size() + 1);
+    EXPECT_TRUE(migrated.count("SHOP-F5"));
+    for (const std::string& id : kExtraLongNeck) {
+        ASSERT_TRUE(migrated.count(id)) << id;
+        const Tool& t = migrated[id];
+        EXPECT_DOUBLE_EQ(t.reach, made[id].reach) << id;
+        EXPECT_DOUBLE_EQ(t.neckDiameter, made[id].neckDiameter) << id;
+        EXPECT_NEAR(t.reach / t.diameter, 8.0, 1e-9) << id;  // the 8 x D series
+        EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;     // necked: cuts down to its reach
+    }
+}
+
+// A user's own version-6 crib gets none of the extra-long-neck series.
+TEST_F(KnowledgeBaseTest, MigratingAUsersOwnVersionSixCribAddsNoShippedTools) {
+    const fs::path p = file();
+    { openDefault(p); }
+    rawExec(p, R"sql(
+        DELETE FROM tool;
+        UPDATE schema_version SET version = 6;
+        INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach)
+            VALUES ('MY-F10', 'flat', 'carbide', 10, 0, 3, 25, 40);
+    )sql");
+    KnowledgeBase kb = openDefault(p);
+    EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+    const auto tools = kb.tools();
+    ASSERT_EQ(tools.size(), 1u);
+    EXPECT_EQ(tools[0].id, "MY-F10");
+}
+
 TEST_F(KnowledgeBaseTest, MigratingAUsersOwnCribAddsNoShippedTools) {
     const fs::path p = file();
     { openDefault(p); }
@@ -747,14 +797,14 @@ TEST_F(KnowledgeBaseTest, MigratingAUsersOwnCribAddsNoShippedTools) {
     EXPECT_TRUE(kb.findThreshold("long_reach_ratio").has_value());
 }
 
-// Version 6 to 7: the long-reach D3 ball joins a file that carries the shipped crib, not a
+// Version 7 to 8: the long-reach D3 ball joins a file that carries the shipped crib, not a
 // user's own; the user's rows stay.
-TEST_F(KnowledgeBaseTest, MigratesVersionSixAddingTheLongReachSmallBall) {
+TEST_F(KnowledgeBaseTest, MigratesVersionSevenAddingTheLongReachSmallBall) {
     for (bool ownCrib : {false, true}) {
         SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
-        const fs::path p = dir_ / (ownCrib ? "own6.sqlite" : "shipped6.sqlite");
+        const fs::path p = dir_ / (ownCrib ? "own7.sqlite" : "shipped7.sqlite");
         { openDefault(p); }
-        rawExec(p, std::string("DELETE FROM tool WHERE id = 'EM-BALL3x30'; UPDATE schema_version SET version = 6;") +
+        rawExec(p, std::string("DELETE FROM tool WHERE id = 'EM-BALL3x30'; UPDATE schema_version SET version = 7;") +
                        (ownCrib ? "DELETE FROM tool;" : "") +
                        "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
                        "VALUES ('MY-BALL5', 'ball', 'carbide', 5, 2.5, 2, 10, 25);");
@@ -792,7 +842,7 @@ TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
             EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
             EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
         }
-    EXPECT_EQ(necked, kCribTools - 1 + 1);  // all but EM-BALL16, and version 7's EM-BALL3x30
+    EXPECT_EQ(necked, kCribTools - 1 + 1);  // all but EM-BALL16, and version 8's EM-BALL3x30
     for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
         EXPECT_TRUE(byId.count(id)) << id;
     // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.

@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 7 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 8 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -117,6 +117,12 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-F8x40',   'flat', 'carbide',   8,   0,  3, 12.0, 100,  40,  78, 7.6),
   ('EM-F10x50',  'flat', 'carbide',  10,   0,  3, 15.0, 110,  50, 105, 9.5),
   ('EM-F12x60',  'flat', 'carbide',  12,   0,  3, 18.0, 125,  60, 135, 11.5),
+-- Extra-long neck (8 x D), flat: small deep holes and slots (schema version 7).
+  ('EM-F1.5x12', 'flat', 'carbide', 1.5,   0,  2,  2.5,  50,  12,  34, 1.4),
+  ('EM-F2x16',   'flat', 'carbide',   2,   0,  2,  3.0,  57,  16,  36, 1.9),
+  ('EM-F3x24',   'flat', 'carbide',   3,   0,  3,  4.5,  75,  24,  42, 2.85),
+  ('EM-F4x32',   'flat', 'carbide',   4,   0,  3,  6.0,  90,  32,  52, 3.8),
+  ('EM-F6x48',   'flat', 'carbide',   6,   0,  3,  9.0, 110,  48,  70, 5.7),
   ('EM-B6R0.5x30','bull','carbide',   6, 0.5,  4,  9.0,  90,  30,  62, 5.7),
   ('EM-B6R1x30', 'bull', 'carbide',   6,   1,  4,  9.0,  90,  30,  62, 5.7),
   ('EM-B8R1x40', 'bull', 'carbide',   8,   1,  4, 12.0, 100,  40,  84, 7.6),
@@ -130,7 +136,7 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-BALL6x30','ball', 'carbide',   6,   3,  2,  9.0,  90,  30,  60, 5.7),
   ('EM-BALL8x40','ball', 'carbide',   8,   4,  2, 12.0, 100,  40,  80, 7.6),
   ('EM-BALL10x50','ball','carbide',  10,   5,  2, 15.0, 110,  50, 108, 9.5),
--- A small long-reach ball for deep narrow channels (schema version 7, migrations/v6_to_v7.sql):
+-- A small long-reach ball for deep narrow channels (schema version 8, migrations/v7_to_v8.sql):
 -- an impeller's channels of 4-5 mm width 26 mm deep.
   ('EM-BALL3x30','ball', 'carbide',   3, 1.5,  2,  4.5,  75,  30,  56, 2.85);
 

@@ -298,20 +298,27 @@ int ElementTools::helixTool(const DomainElement& e, std::string& why) const {
     const double lo = opt_.helixMinRatio * h.diameter, hi = opt_.helixMaxRatio * h.diameter;
     const double need = h.depth + (h.through ? opt_.breakthrough : 0);
     const bool flatBottom = !h.through;
-    int best = -1;
-    for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
-        const Tool& t = plan_.tools[i];
-        if (!t.isEndMill() || t.type == "ball") continue;
-        if (t.diameter < lo - 1e-9 || t.diameter > hi + 1e-9) continue;
-        if (flatBottom && t.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol) continue;
-        if (t.usableLength() + kTol < need || !millingData(static_cast<int>(i))) continue;
-        if (best < 0 || t.diameter > tool(best).diameter + 1e-9 ||
-            (std::fabs(t.diameter - tool(best).diameter) <= 1e-9 && t.cornerRadius < tool(best).cornerRadius))
-            best = static_cast<int>(i);
-    }
+    // The largest end mill from lo to hi goes down one helix; failing that, the largest below lo
+    // clears the hole in rings (toolpath::helicalHole), as a shop mills a hole wider than its cutters.
+    auto largest = [&](double from, double to) {
+        int best = -1;
+        for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
+            const Tool& t = plan_.tools[i];
+            if (!t.isEndMill() || t.type == "ball") continue;
+            if (t.diameter < from - 1e-9 || t.diameter > to + 1e-9) continue;
+            if (flatBottom && t.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol) continue;
+            if (t.usableLength() + kTol < need || !millingData(static_cast<int>(i))) continue;
+            if (best < 0 || t.diameter > tool(best).diameter + 1e-9 ||
+                (std::fabs(t.diameter - tool(best).diameter) <= 1e-9 && t.cornerRadius < tool(best).cornerRadius))
+                best = static_cast<int>(i);
+        }
+        return best;
+    };
+    int best = largest(lo, hi);
+    if (best < 0) best = largest(0, lo - 2e-9);
     if (best < 0)
         why = "no end mill for helical interpolation of " + elementName(e) + " (diameter " + fmt(h.diameter) +
-              " mm): it needs one of " + fmt(lo) + " to " + fmt(hi) + " mm reaching " + fmt(need) + " mm" +
+              " mm): it needs one below " + fmt(hi) + " mm reaching " + fmt(need) + " mm" +
               (flatBottom ? " with a flat end" : "");
     return best;
 }

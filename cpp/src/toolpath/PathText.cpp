@@ -7,10 +7,14 @@ namespace aeronc::toolpath {
 
 namespace {
 
+// Fixed notation always: FreeCAD's G-code reader takes the 'e' of "X-5.4e-16" for a word of its
+// own, so the X would be read as -5.4 (a hole's centre on an axis went 5 mm astray that way).
+// Below a picometre a value is 0; above it the shortest fixed form that reads back exactly.
 void word(std::string& out, char letter, double v) {
-    char b[40];
+    if (std::fabs(v) < 1e-9) v = 0;  // also turns -0 into 0
+    char b[400];                     // the longest fixed double (10^308) fits
     b[0] = ' ', b[1] = letter;
-    const auto r = std::to_chars(b + 2, b + sizeof b, v);  // shortest round trip; cannot overflow 40
+    const auto r = std::to_chars(b + 2, b + sizeof b, v, std::chars_format::fixed);
     out.append(b, r.ptr);
 }
 

@@ -231,6 +231,30 @@ TEST(Fusing, BlindHoleCarriesItsFloorFilletToTheHelix) {
         for (const HoleTarget& h : u.holes) EXPECT_EQ(h.floorFilletRadius, 0) << "unit " << u.id;
 }
 
+// A 60 mm blind hole: no end mill of the plan lies from half the hole to 0.8 of it (30 to 48 mm),
+// so the largest below, R20, mills it in rings (toolpath::helicalHole); the rules hold. Before,
+// the hole was listed unmachined ("it needs one of 30 to 48 mm").
+TEST(Fusing, HoleWiderThanTwiceEveryEndMillIsMilledWithTheLargest) {
+    recognition::DomainTree t = test::smallTree();
+    recognition::DomainElement& e = t.elements[2];
+    e.hole->through = false;
+    e.hole->diameter = 60;
+    e.minWidth = 60;
+    e.minCornerRadius = 30;
+    e.floorFaces = {301};
+    toolselect::ToolPlan plan = test::smallPlan();
+    plan.holes[0].diameter = 60;
+    plan.holes[0].drill = -1;
+    MachiningChain c = buildChain(t, plan, parseTemplate(test::panelRows()), test::smallOptions());
+    const MachiningUnit* helix = nullptr;
+    for (const MachiningUnit& u : c.units)
+        if (u.element == 2 && u.operation == Operation::Helix) helix = &u;
+    ASSERT_NE(helix, nullptr);
+    EXPECT_EQ(helix->tool, "R20");
+    for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, 2) << m.reason;
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << ": " << r.node << ": " << r.message;
+}
+
 // A hole a wall stands over (recognition's overhung) gets no drill and no helix: the chain
 // lists it with the reason.
 TEST(Fusing, OverhungHoleIsListedNotDrilled) {

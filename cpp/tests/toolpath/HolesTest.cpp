@@ -8,6 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <vector>
+
 using namespace aeronc::toolpath;
 using namespace aeronc::toolpath::test;
 using aeronc::test::inputErrorOf;
@@ -109,6 +115,93 @@ TEST(HelicalHole, BlindHoleKeepsOutOfItsFloorFillet) {
     for (const Move& m : through.moves)
         if (m.kind != Move::Kind::Rapid && m.h < h.bottom) widest = std::max(widest, dist({m.u, m.v}, c) + R);
     EXPECT_NEAR(widest, wall, 1e-9);
+}
+
+namespace {
+// Distance from q to the segment ab in the plane.
+double segmentDistance(const Point& q, const Point& a, const Point& b) {
+    const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+    const double t = l2 > 0 ? std::clamp(((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / l2, 0.0, 1.0) : 0.0;
+    return dist(q, {a[0] + t * dx, a[1] + t * dy});
+}
+
+// The feed segments that run flat at height h.
+std::vector<std::pair<Point, Point>> flatAt(const Toolpath& t, double h) {
+    std::vector<std::pair<Point, Point>> out;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move &a = t.moves[i - 1], &b = t.moves[i];
+        if (b.kind != Move::Kind::Rapid && std::abs(a.h - h) < 1e-9 && std::abs(b.h - h) < 1e-9)
+            out.push_back({{a.u, a.v}, {b.u, b.v}});
+    }
+    return out;
+}
+}  // namespace
+
+// A 60 mm blind hole with a 12 mm end mill (a fifth of it): one helix at the wall would leave a
+// 36 mm core. Level by level the cutter clears the whole disc, never past the roughing radius,
+// never descending faster than the step-down; of a through hole the axis is cut at the last
+// level before the outer ring, so no slug is left to drop.
+TEST(HelicalHole, WideHoleIsClearedInRingsLeavingNoCore) {
+    const Point c{-4, 9};
+    HelicalHoleParameters p;
+    p.radialAllowance = 0.4;
+    p.stepDown = 3;
+    p.stepOver = 5;
+    const double R = 6, wall = 30, rough = wall - R - p.radialAllowance;
+    const Toolpath t = helicalHole({{c, 60, 0, -10, false}}, {12, 0}, p);
+    double widest = 0, lowest = 1e9, worstFall = 0;
+    for (std::size_t i = 1; i < t.moves.size(); ++i) {
+        const Move &a = t.moves[i - 1], &b = t.moves[i];
+        if (b.kind == Move::Kind::Rapid) continue;
+        widest = std::max(widest, dist({b.u, b.v}, c));
+        lowest = std::min(lowest, b.h);
+        const double run = dist({a.u, a.v}, {b.u, b.v});
+        if (a.h > b.h && b.h < 0) worstFall = std::max(worstFall, (a.h - b.h) / std::max(run, 1e-12));
+    }
+    EXPECT_LE(widest, wall - R - p.finishingAllowance + 1e-9);
+    EXPECT_EQ(lowest, -10);
+    EXPECT_LE(worstFall, std::tan(p.rampAngleDeg * M_PI / 180) * 1.01);  // helical ramps, no plunge
+    // Every point of the disc the roughing leaves open is under the cutter at the floor and at
+    // each level above it (levels at most the step-down apart).
+    std::set<double, std::greater<double>> levels;  // top down
+    for (std::size_t i = 1; i < t.moves.size(); ++i)
+        if (t.moves[i].kind != Move::Kind::Rapid && t.moves[i].h < 0 && t.moves[i].h == t.moves[i - 1].h)
+            levels.insert(t.moves[i].h);
+    ASSERT_GE(levels.size(), 4u);  // 11 mm from the entry down, at most 3 mm a level
+    double above = 1;               // the helix starts 1 mm over the top
+    for (double level : levels) {
+        EXPECT_LE(above - level, p.stepDown + 1e-9);
+        above = level;
+    }
+    for (double level : levels) {
+        SCOPED_TRACE(level);
+        const auto flat = flatAt(t, level);
+        ASSERT_FALSE(flat.empty());
+        double worstGap = 0;
+        for (double r = 0; r <= rough + R - 0.05; r += 0.5)
+            for (double q = 0; q < 2 * M_PI; q += 0.1) {
+                const Point x{c[0] + r * std::cos(q), c[1] + r * std::sin(q)};
+                double nearest = 1e9;
+                for (const auto& [a, b] : flat) nearest = std::min(nearest, segmentDistance(x, a, b));
+                worstGap = std::max(worstGap, nearest - R);
+            }
+        EXPECT_LE(worstGap, 1e-6);
+    }
+    // Through: at the last level the axis is cut before the outer ring.
+    const Toolpath through = helicalHole({{c, 60, 0, -10, true}}, {12, 0}, p);
+    double bottom = 1e9;
+    for (const Move& m : through.moves) bottom = std::min(bottom, m.h);
+    std::size_t firstAxis = 0, firstOuter = 0;
+    for (std::size_t i = 0; i < through.moves.size(); ++i) {
+        const Move& m = through.moves[i];
+        if (std::abs(m.h - bottom) > 1e-9 || m.kind == Move::Kind::Rapid) continue;
+        const double r = dist({m.u, m.v}, c);
+        if (!firstAxis && r < R) firstAxis = i;
+        if (!firstOuter && r > rough - 1e-6) firstOuter = i;
+    }
+    ASSERT_GT(firstAxis, 0u);
+    ASSERT_GT(firstOuter, 0u);
+    EXPECT_LT(firstAxis, firstOuter);
 }
 
 TEST(HelicalHole, BadInputIsAClearError) {

@@ -42,6 +42,21 @@ TEST(PathText, MovesAndCyclesAsFreeCadWords) {
     EXPECT_EQ(pathText(third, {2, 1}, "x"), "(x)\nG1 X0.3333333333333333 Y-0.6666666666666666 Z0.1 F2\n");
 }
 
+// A hole's centre on an axis comes out of a rotation as -5.4e-16: in exponent form FreeCAD reads
+// "X-5.413158415923821e-16" as X -5.41 and a word E-16, and the cutter went 5 mm astray into
+// the hole's wall (four holes of NIST CTC-05). Every word is written in fixed notation.
+TEST(PathText, TinyAndLargeValuesInFixedNotation) {
+    Toolpath t;
+    t.moves = {mv(K::Rapid, -5.413158415923821e-16, -222.25, 30), mv(K::Feed, 1.5e-5, -0.0, 2.5e-9),
+               mv(K::Feed, 123456789.125, 1e-3, -7.0e-12)};
+    const std::string text = pathText(t, {20, 5}, "tiny");
+    EXPECT_EQ(text, "(tiny)\n"
+                    "G0 X0 Y-222.25 Z30\n"
+                    "G1 X0.000015 Y0 Z0.0000000025 F20\n"
+                    "G1 X123456789.125 Y0.001 Z0\n");
+    EXPECT_EQ(text.find_first_of("eE", 7), std::string::npos);
+}
+
 TEST(PathText, TimeByHand) {
     // 3 mm plunge at 1 mm/s, 4 mm feed at 2 mm/s, a 10 mm drill cycle at 1 mm/s in; rapids off.
     Toolpath t;

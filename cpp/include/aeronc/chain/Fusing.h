@@ -29,7 +29,7 @@ struct ChainOptions {
     double breakthrough = 1.0;   // openings and through holes are cut this far past the part, mm
     double restMinArea = 0.5;    // a rest unit when the roughing tool leaves more than this, mm²
     double helixMinRatio = 0.5;  // helical interpolation: end-mill diameter / hole diameter from ...
-    double helixMaxRatio = 0.8;  // ... to (below half the hole a core would stand in the middle)
+    double helixMaxRatio = 0.8;  // ... to; below half the hole the helix clears it in rings
     double floorScallop = 0.01;  // a floor (web) pass leaves scallops at most this high, mm
     // A unit's radial allowance is at most this times its tool's diameter: a 1 mm end mill cannot
     // leave the 1 mm a roughing step asks for in a groove it just fits (engraving).

@@ -11,7 +11,9 @@ struct HelicalHoleParameters : CutParameters {
 
 // Per hole: a helix at radialAllowance down to the floor at a pitch of at most stepDown (and
 // at most the ramp angle's), a full circle there, then a finishing circle at
-// finishingAllowance. Climb milling runs clockwise.
+// finishingAllowance. A cutter under half the hole (it would leave a core) clears it level by
+// level instead: a helix round a circle inside the cutter's radius, then rings at most a
+// step-over apart out to the wall (HelicalHole.cpp). Climb milling runs clockwise.
 Toolpath helicalHole(const std::vector<Hole>& holes, const Cutter& cutter, const HelicalHoleParameters& parameters);
 
 }  // namespace aeronc::toolpath
