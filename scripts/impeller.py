@@ -9,6 +9,8 @@ route's operations with 5-axis toolpaths, cutting data from the optimiser, the 8
 the document saved, the program re-read and checked, pictures and report.html in AERONC_OUT
 (see aeronc/runs/impeller_run.py for the list). AERONC_IMPELLER_SPEC (JSON, ImpellerSpec's keys),
 AERONC_ALLOWANCE (mm), AERONC_STATIONS and AERONC_CHANNELS (0: all) change the defaults.
+AERONC_PART (a STEP file) runs it on that part instead (e.g. ../shared/data/impeller/
+turbo3d_impeller.step: its 11 bodies are fused first).
 Exit code 0 on success, 1 with the failed stage named.
 """
 import os
@@ -23,11 +25,15 @@ def main():
     from aeronc.tests.parts import impeller_part
 
     try:
-        spec = json.loads(os.environ.get("AERONC_IMPELLER_SPEC") or "{}")
-        shape, truth = impeller_part.make_test_impeller(spec)
-        impeller_run.run(os.environ.get("AERONC_OUT", "out/impeller"), shape, truth,
-                         source="generated impeller, spec {}".format(json.dumps(spec) if spec else
-                                                                     "default (2 x 9 blades)"),
+        part_file = os.environ.get("AERONC_PART")
+        if part_file:  # a part made elsewhere: no truth; several bodies are fused first
+            import Part
+            shape, truth, source = Part.read(part_file), None, part_file
+        else:
+            spec = json.loads(os.environ.get("AERONC_IMPELLER_SPEC") or "{}")
+            shape, truth = impeller_part.make_test_impeller(spec)
+            source = "generated impeller, spec {}".format(json.dumps(spec) if spec else "default (2 x 9 blades)")
+        impeller_run.run(os.environ.get("AERONC_OUT", "out/impeller"), shape, truth, source=source,
                          allowance=float(os.environ.get("AERONC_ALLOWANCE", "2.0")),
                          stations=int(os.environ.get("AERONC_STATIONS", "24")),
                          channels=int(os.environ.get("AERONC_CHANNELS", "0")))

@@ -1,6 +1,7 @@
 """The impeller run, headless: an impeller part programmed in FreeCAD, with its report.
 
-    part -> Program impeller (recognition nodes, blank, Job, 5-axis toolpaths, post)
+    part (its bodies fused into one solid when it has several) -> Program impeller (recognition
+    nodes, blank, Job, 5-axis toolpaths, post)
     -> save -> re-read check of the Job's program -> pictures -> report
 
 run() writes into one output folder:
@@ -51,10 +52,19 @@ def _stages(r, shape, truth, source, allowance, stations, channels):
         part = doc.addObject("Part::Feature", "Impeller")
         part.Shape = shape
         doc.recompute()
-        shape.exportStep(r.path("impeller.step"))
-        r.wrote("impeller.step")
         if truth is not None:
             r.write("truth.json", json.dumps(truth, indent=1))
+    if len(shape.Solids) > 1:
+        # Exported as several bodies (a hub and a body per blade): fused as Program impeller
+        # offers it, a new object, the original kept.
+        from aeronc.objects.fused_part import add_fused_part
+        with r.stage("fuse bodies"):
+            part, data["fused"] = add_fused_part(part)
+        r.report(data["fused"])
+    with r.stage("part file"):
+        part.Shape.exportStep(r.path("impeller.step"))
+        r.wrote("impeller.step")
+    shape = part.Shape
     data["faces"] = len(shape.Faces)
     r.report("{} faces".format(len(shape.Faces)) + (", {} + {} blades".format(
         truth["bladeCount"], sum(1 for b in truth["blades"] if b["splitter"])) if truth else ""))

@@ -482,6 +482,7 @@ int impellerProgramCmd(int argc, char** argv) {
     impeller::ProcessRoute route;
     kb::ImpellerProgramming prog;
     impellerpath::CheckResult again, rapids;
+    nlohmann::json opChecks = nlohmann::json::array();  // the re-read check of each 5-axis operation
     double tRecognise = 0, tPaths = 0, tCheck = 0;
     std::string apt, axialApt;
     onImpeller(part, fuse, [&](const TopoDS_Shape& solid) {
@@ -500,7 +501,19 @@ int impellerProgramCmd(int argc, char** argv) {
         std::vector<impellerpath::CutterShape> cutters;
         for (const auto& op : prog.fiveAxis.operations) cutters.push_back(op.cutter);
         const auto reread = impellerpath::movesOf(post::readApt(apt), cutters);
-        again = impellerpath::checkProgram(solid, f, reread);
+        // Operation by operation, so that what gouges or collides is named.
+        for (size_t i = 0; i < reread.size(); ++i) {
+            const auto& op = reread[i];
+            const auto c = impellerpath::checkProgram(solid, f, {op});
+            opChecks.push_back({{"operation", prog.fiveAxis.operations.at(i).name}, {"tool", op.first.id},
+                                {"positions", c.positions}, {"maxGougeMm", c.maxGouge},
+                                {"holderCollisions", c.holderCollisions}, {"minHolderGapMm", c.minHolderGap},
+                                {"worstAt", {c.worstAt[0], c.worstAt[1], c.worstAt[2]}}});
+            again.positions += c.positions;
+            again.holderCollisions += c.holderCollisions;
+            again.minHolderGap = std::min(again.minHolderGap, c.minHolderGap);
+            if (c.maxGouge > again.maxGouge) again.maxGouge = c.maxGouge, std::copy(c.worstAt, c.worstAt + 3, again.worstAt);
+        }
         rapids = impellerpath::checkRapids(impeller::outerProfile(solid, f, opt.paths.blankAllowance), f, reread,
                                            opt.paths.rapidClearance - 1e-6);
         tCheck = secs(t0);
@@ -524,7 +537,10 @@ int impellerProgramCmd(int argc, char** argv) {
                         {"positionsChecked", again.positions},
                         {"maxGougeMm", again.maxGouge},
                         {"holderCollisions", again.holderCollisions},
+                        {"minHolderGapMm", again.minHolderGap},
+                        {"operations", opChecks},
                         {"tilted", prog.fiveAxis.check.tilted},
+                        {"leftOut", prog.fiveAxis.check.leftOut},
                         {"links", prog.fiveAxis.check.links},
                         {"linkCollisions", prog.fiveAxis.check.linkCollisions},
                         {"rapidsChecked", rapids.links},

@@ -85,7 +85,8 @@ nlohmann::json cutterToJson(const impellerpath::CutterShape& c) {
 nlohmann::json checkToJson(const impellerpath::CheckResult& r) {
     return {{"maxGougeMm", r.maxGouge}, {"holderCollisions", r.holderCollisions}, {"tilted", r.tilted},
             {"positions", r.positions}, {"worstAt", {r.worstAt[0], r.worstAt[1], r.worstAt[2]}},
-            {"links", r.links}, {"linkCollisions", r.linkCollisions}};
+            {"links", r.links}, {"linkCollisions", r.linkCollisions}, {"minHolderGapMm", r.minHolderGap},
+            {"leftOut", r.leftOut}};
 }
 
 impellerpath::CutterShape cutterFromJson(const nlohmann::json& j) {

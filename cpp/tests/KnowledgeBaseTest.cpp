@@ -32,8 +32,8 @@ namespace {
 
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
 // 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib and the
-// 5 extra-long-neck end mills.
-constexpr std::size_t kShippedTools = 95;
+// 5 extra-long-neck end mills, and the long-reach D3 ball of schema version 8.
+constexpr std::size_t kShippedTools = 96;
 // The crib's tools added by schema versions 6 and 7 (docs/tool-crib.md).
 constexpr std::size_t kCribTools = 35;
 // The extra-long-neck series schema version 7 added (8 x D).
@@ -797,6 +797,36 @@ TEST_F(KnowledgeBaseTest, MigratingAUsersOwnCribAddsNoShippedTools) {
     EXPECT_TRUE(kb.findThreshold("long_reach_ratio").has_value());
 }
 
+// Version 7 to 8: the long-reach D3 ball joins a file that carries the shipped crib, not a
+// user's own; the user's rows stay.
+TEST_F(KnowledgeBaseTest, MigratesVersionSevenAddingTheLongReachSmallBall) {
+    for (bool ownCrib : {false, true}) {
+        SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
+        const fs::path p = dir_ / (ownCrib ? "own7.sqlite" : "shipped7.sqlite");
+        { openDefault(p); }
+        rawExec(p, std::string("DELETE FROM tool WHERE id = 'EM-BALL3x30'; UPDATE schema_version SET version = 7;") +
+                       (ownCrib ? "DELETE FROM tool;" : "") +
+                       "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
+                       "VALUES ('MY-BALL5', 'ball', 'carbide', 5, 2.5, 2, 10, 25);");
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+        std::map<std::string, Tool> byId;
+        for (const Tool& t : kb.tools()) byId[t.id] = t;
+        EXPECT_TRUE(byId.count("MY-BALL5"));
+        EXPECT_EQ(byId.size(), ownCrib ? 1u : kShippedTools + 1);
+        if (ownCrib) continue;
+        ASSERT_TRUE(byId.count("EM-BALL3x30"));
+        const Tool& b = byId["EM-BALL3x30"];
+        EXPECT_EQ(b.type, "ball");
+        EXPECT_DOUBLE_EQ(b.diameter, 3);
+        EXPECT_DOUBLE_EQ(b.reach, 30);
+        EXPECT_DOUBLE_EQ(b.neckDiameter, 2.85);
+        EXPECT_DOUBLE_EQ(b.usableLength(), 30);  // necked: it cuts down to its reach
+        // Cutting data for it: the carbide rows for tools below 6 mm.
+        EXPECT_GT(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 3.0).fz, 0);
+    }
+}
+
 // The shop crib as shipped: the catalogue sizes, necks below the cutter, reach beyond the flutes
 // on the necked tools, edge tools, and small-tool cutting data below the standard rows.
 TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
@@ -812,7 +842,7 @@ TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
             EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
             EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
         }
-    EXPECT_EQ(necked, kCribTools - 1);  // all but EM-BALL16
+    EXPECT_EQ(necked, kCribTools - 1 + 1);  // all but EM-BALL16, and version 8's EM-BALL3x30
     for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
         EXPECT_TRUE(byId.count(id)) << id;
     // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.

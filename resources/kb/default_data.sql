@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 6 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 8 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -135,7 +135,10 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-BALL4x20','ball', 'carbide',   4,   2,  2,  6.0,  75,  20,  48, 3.8),
   ('EM-BALL6x30','ball', 'carbide',   6,   3,  2,  9.0,  90,  30,  60, 5.7),
   ('EM-BALL8x40','ball', 'carbide',   8,   4,  2, 12.0, 100,  40,  80, 7.6),
-  ('EM-BALL10x50','ball','carbide',  10,   5,  2, 15.0, 110,  50, 108, 9.5);
+  ('EM-BALL10x50','ball','carbide',  10,   5,  2, 15.0, 110,  50, 108, 9.5),
+-- A small long-reach ball for deep narrow channels (schema version 8, migrations/v7_to_v8.sql):
+-- an impeller's channels of 4-5 mm width 26 mm deep.
+  ('EM-BALL3x30','ball', 'carbide',   3, 1.5,  2,  4.5,  75,  30,  56, 2.85);
 
 -- Chamfer and corner-rounding mills (docs/tool-crib.md).
 INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach, cost) VALUES

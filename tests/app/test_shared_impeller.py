@@ -1,16 +1,22 @@
 """The impeller of the shared data (nine blades, no splitters, a bore of 8 mm, exported as
-eleven bodies with a hub in a piece per channel and blades without root fillets): fused in
-FreeCAD, then recognised with every role in place."""
+eleven bodies with a hub in a piece per channel and blades without root fillets): programmed end
+to end by the impeller run (its bodies fused in FreeCAD, recognised with every role in place,
+blank, route, 5-axis toolpaths, the posted 840D program read back and checked, the report).
+The run is made once for every test (one channel, four stations a pass)."""
 import glob
+import json
 import math
 import os
+import shutil
+import tempfile
 import unittest
 
 import FreeCAD
 import Part
 
 from aeronc.impeller import recognition
-from aeronc.objects.fused_part import add_fused_part
+from aeronc.objects.impeller_features import result_of
+from aeronc.runs import impeller_run
 
 
 def _shared_impeller():
@@ -23,17 +29,20 @@ def _shared_impeller():
 class SharedImpellerTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.doc = FreeCAD.newDocument("SharedImpeller")
-        cls.doc.UndoMode = 1
-        part = cls.doc.addObject("Part::Feature", "Impeller")
-        part.Shape = Part.read(_shared_impeller())
-        cls.doc.recompute()
-        cls.fused, cls.summary = add_fused_part(part)  # as Program impeller offers it
-        cls.result = recognition.recognise(cls.fused)
+        cls.out = tempfile.mkdtemp(prefix="aeronc-shared-impeller-")
+        # The exported bodies as they are: the run fuses them as Program impeller offers it.
+        cls.data = impeller_run.run(cls.out, Part.read(_shared_impeller()), source="shared impeller",
+                                    stations=4, channels=1, say=lambda text: None)
+        cls.summary = cls.data["fused"]
+        cls.doc = FreeCAD.openDocument(os.path.join(cls.out, "impeller.FCStd"))
+        cls.fused = cls.doc.getObject("FusedPart")
+        cls.prog = [o for o in cls.doc.Objects if o.Name.startswith("ImpellerProgram")][0]
+        cls.result = result_of(cls.prog.Features)
 
     @classmethod
     def tearDownClass(cls):
         FreeCAD.closeDocument(cls.doc.Name)
+        shutil.rmtree(cls.out, ignore_errors=True)
 
     def test_fused_from_its_bodies(self):
         self.assertIn("11 bodies: 10 fused into one solid, 1 degenerate", self.summary)
@@ -81,6 +90,42 @@ class SharedImpellerTest(unittest.TestCase):
         self.assertEqual(unclaimed, [])
         self.assertEqual(roles.count("hub"), 9)
         self.assertTrue(math.isclose(self.result["dimensions"]["outerRadius"], 50.1, abs_tol=0.05))
+
+    def test_programmed_from_its_bodies(self):
+        self.assertEqual(self.prog.Features.Source, self.fused)  # the fused part is what was programmed
+
+    def test_channel_width_where_the_channel_is_deep(self):
+        # The gap at the nose, where the blades stand a fraction of a millimetre tall, is the
+        # narrowest; the roughing ball fits the channel where it is as deep as its radius.
+        d = self.result["dimensions"]
+        self.assertLess(d["minChannelWidth"], 2.5)
+        self.assertLess(d["minChannelDepth"], 1.0)
+        rough = [s for s in self.data["route"]["steps"] if s["operation"] == "rough_channels"][0]
+        self.assertEqual(rough["tool"]["id"], "EM-BALL3x30")
+        deep = min(w for r, depth, w in d["channelProfile"] if depth >= rough["tool"]["diameter"] / 2)
+        self.assertLessEqual(rough["tool"]["diameter"] + 2 * rough["allowance"] + rough["clearance"], deep + 1e-9)
+
+    def test_read_back_program_neither_gouges_nor_collides(self):
+        again = self.data["recheck"]
+        self.assertGreater(again["positions"], 100)
+        self.assertLessEqual(again["maxGougeMm"], impeller_run.LIMIT_GOUGE_MM)
+        self.assertEqual(again["holderCollisions"], 0)
+        self.assertGreater(again["minHolderGapMm"], 0.0)
+        check = self.data["check"]
+        self.assertEqual(check["holderCollisions"], 0)
+        self.assertEqual(check["linkCollisions"], 0)
+
+    def test_posted_840d_program_with_the_operations(self):
+        posted = open(os.path.join(self.out, "IMPELLER.mpf")).read()
+        self.assertIn("TRAORI", posted)
+        ops = {o["operation"]: o for o in self.data["operations"]}
+        self.assertNotIn("finish_fillets", ops)  # no root fillets on this part
+        for op in ("rough_channels", "finish_blades", "finish_hub"):
+            self.assertTrue(ops[op]["active"], op)
+            self.assertGreater(ops[op]["moves"], 0, op)
+            self.assertIn("; operation: {}".format(ops[op]["label"]), posted)
+        self.assertIn("; tool: EM-BALL3x30", posted)
+        self.assertTrue(os.path.exists(os.path.join(self.out, "report.html")))
 
 
 if __name__ == "__main__":

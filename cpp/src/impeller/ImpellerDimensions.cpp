@@ -7,7 +7,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <GProp_GProps.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -59,10 +61,72 @@ TopoDS_Compound compound(const TopTools_IndexedMapOfShape& faces, const std::vec
     return c;
 }
 
-double distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
+double distance(const TopoDS_Shape& a, const TopoDS_Shape& b, gp_Pnt* onA = nullptr) {
     BRepExtrema_DistShapeShape d(a, b);
     if (!d.IsDone() || d.NbSolution() == 0) throw geometryError("impeller: channel width: distance failed");
+    if (onA) *onA = d.PointOnShape1(1);
     return d.Value();
+}
+
+// Points inside a face on a grid over its parameter range.
+std::vector<gp_Pnt> facePoints(const TopoDS_Face& f, int nu, int nv) {
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f, u0, u1, v0, v1);
+    BRepAdaptor_Surface s(f);
+    BRepTopAdaptor_FClass2d inside(f, 1e-7);
+    std::vector<gp_Pnt> out;
+    for (int i = 0; i <= nu; ++i)
+        for (int j = 0; j <= nv; ++j) {
+            const gp_Pnt2d uv(u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv);
+            if (inside.Perform(uv) == TopAbs_IN) out.push_back(s.Value(uv.X(), uv.Y()));
+        }
+    return out;
+}
+
+// The channel from blade a to the next, b, station by station along the radius: the depth is
+// the axial extent of a's walls in the station's band (its walls run from the hub, or the
+// fillets, to the tip), the width the least distance from a point of a's walls to b's walls
+// (the leading edge's round may come nearer than the pressure side). `exactAt` (a point of a's walls where the exact narrowest gap
+// is) gets the depth of its station.
+constexpr int kStations = 40;
+std::vector<ChannelStation> channelStations(const TopTools_IndexedMapOfShape& faces, const Blade& a, const Blade& b,
+                                            const Frame& axis, const gp_Pnt& exactAt, double& exactDepth) {
+    struct Sample {
+        gp_Pnt p;
+        double r, z;
+    };
+    std::vector<Sample> samples;
+    double rLo = 1e300, rHi = -1e300;
+    // Inside the walls, and along their edges (the narrowest gap is often at a wall's top, root
+    // or end).
+    for (int id : a.walls) {
+        auto pts = facePoints(TopoDS::Face(faces(id)), 60, 12);
+        const auto rim = edgePoints(faces(id), 60);
+        pts.insert(pts.end(), rim.begin(), rim.end());
+        for (const auto& p : pts) {
+            samples.push_back({p, axis.radius(p), axis.axial(p)});
+            rLo = std::min(rLo, samples.back().r), rHi = std::max(rHi, samples.back().r);
+        }
+    }
+    if (samples.empty() || rHi <= rLo) return {};
+    auto band = [&](double r) { return std::clamp(static_cast<int>((r - rLo) / (rHi - rLo) * kStations), 0, kStations - 1); };
+    std::vector<double> zLo(kStations, 1e300), zHi(kStations, -1e300), width(kStations, 1e300);
+    for (const auto& s : samples) {
+        const int k = band(s.r);
+        zLo[k] = std::min(zLo[k], s.z), zHi[k] = std::max(zHi[k], s.z);
+    }
+    const TopoDS_Compound walls = compound(faces, b.walls);
+    for (const auto& s : samples) {
+        const int k = band(s.r);
+        width[k] = std::min(width[k], distance(BRepBuilderAPI_MakeVertex(s.p).Vertex(), walls));
+    }
+    std::vector<ChannelStation> out;
+    for (int k = 0; k < kStations; ++k)
+        if (width[k] < 1e300)
+            out.push_back({rLo + (k + 0.5) * (rHi - rLo) / kStations, std::max(0.0, zHi[k] - zLo[k]), width[k]});
+    const int e = band(axis.radius(exactAt));
+    exactDepth = zHi[e] >= zLo[e] ? zHi[e] - zLo[e] : 0;
+    return out;
 }
 
 double circumradius(const gp_Pnt& a, const gp_Pnt& b, const gp_Pnt& c) {
@@ -113,6 +177,18 @@ double heightAboveHub(const TopoDS_Face& shroud, const gp_Pnt& centroid, const T
 
 }  // namespace
 
+double ImpellerDimensions::channelWidth(double depth) const {
+    if (channelProfile.empty()) return minChannelWidth;
+    double deepest = minChannelDepth;
+    for (const auto& s : channelProfile) deepest = std::max(deepest, s.depth);
+    const double h = std::min(depth, deepest);
+    if (minChannelDepth >= h - 1e-9) return minChannelWidth;  // the exact narrowest gap is deep enough
+    double w = 1e300;
+    for (const auto& s : channelProfile)
+        if (s.depth >= h - 1e-9) w = std::min(w, s.width);
+    return std::max(w, minChannelWidth);
+}
+
 ImpellerDimensions measureImpeller(const TopoDS_Shape& shape, const ImpellerFeatures& ft) {
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
@@ -141,8 +217,18 @@ ImpellerDimensions measureImpeller(const TopoDS_Shape& shape, const ImpellerFeat
     d.minChannelWidth = 1e300;
     for (int i = 0; i < std::min(n, 2); ++i) {
         const int j = (i + 1) % n;
-        const double w = distance(compound(faces, ft.blades[i].walls), compound(faces, ft.blades[j].walls));
-        if (w < d.minChannelWidth) d.minChannelWidth = w, d.channelBlades[0] = i, d.channelBlades[1] = j;
+        gp_Pnt at;
+        const double w = distance(compound(faces, ft.blades[i].walls), compound(faces, ft.blades[j].walls), &at);
+        double depth = 0;
+        // Without splitters both pairs are the same kind of channel: one profile is enough.
+        if (i == 0 || ft.splitterCount > 0) {
+            const auto stations = channelStations(faces, ft.blades[i], ft.blades[j], axis, at, depth);
+            d.channelProfile.insert(d.channelProfile.end(), stations.begin(), stations.end());
+        } else {
+            depth = d.minChannelDepth;
+        }
+        if (w < d.minChannelWidth)
+            d.minChannelWidth = w, d.minChannelDepth = depth, d.channelBlades[0] = i, d.channelBlades[1] = j;
     }
 
     // Root fillet: the largest fillet face of the first blade (along a side wall, where the

@@ -18,6 +18,8 @@ std::string impellerToJson(const ImpellerFeatures& f, const ImpellerDimensions& 
                           {"fillets", b.fillets},
                           {"shroud", b.shroud},
                           {"shroudFaces", b.shroudFaces}});
+    json profile = json::array();  // [radius, depth, width] per station
+    for (const auto& s : d.channelProfile) profile.push_back({s.radius, s.depth, s.width});
     json doc = {
         {"units", "mm"},
         {"faceCount", f.faceCount},
@@ -38,6 +40,8 @@ std::string impellerToJson(const ImpellerFeatures& f, const ImpellerDimensions& 
           {"boreDepth", d.boreDepth},
           {"minChannelWidth", d.minChannelWidth},
           {"channelBlades", {d.channelBlades[0], d.channelBlades[1]}},
+          {"minChannelDepth", d.minChannelDepth},
+          {"channelProfile", profile},
           {"filletRadius", d.filletRadius},
           {"bladeHeight", d.bladeHeight},
           {"splitterHeight", d.splitterHeight},

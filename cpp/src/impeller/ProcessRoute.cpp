@@ -116,26 +116,39 @@ ProcessRoute planRoute(const ImpellerFeatures& f, const ImpellerDimensions& d, s
             }
             s.toolReason = limits;
         } else if (rule.toolRule == "ball_in_channel") {
-            const double dMax = channel - 2 * rule.allowance - rule.clearance;
-            const std::string limits = "diameter at most " + mm(dMax) + " (channel " + mm(channel) + "), reach at least " +
-                                       mm(reachNeeded);
+            // A ball is limited by the channel where the channel is at least its radius deep:
+            // the gap at a nose where the blades stand a fraction of a millimetre tall is not.
+            auto dMax = [&](double dia) { return d.channelWidth(dia / 2) - 2 * rule.allowance - rule.clearance; };
+            const std::string limits = "diameter at most the channel's width where it is as deep as the ball's radius, "
+                                       "less " + mm(2 * rule.allowance + rule.clearance) + " (narrowest " + mm(channel) +
+                                       "), reach at least " + mm(reachNeeded);
             s.tool = pick(ofType(tools, "ball"), [&](const CuttingTool& t) {
-                return t.diameter <= dMax + 1e-9 && t.reach >= reachNeeded; }, rule, "ball end mill", limits);
-            s.toolReason = limits;
+                return t.diameter <= dMax(t.diameter) + 1e-9 && t.reach >= reachNeeded; }, rule, "ball end mill", limits);
+            s.toolReason = "diameter at most " + mm(dMax(s.tool->diameter)) + " (channel " +
+                           mm(d.channelWidth(s.tool->diameter / 2)) + " where it is " + mm(s.tool->diameter / 2) +
+                           " deep), reach at least " + mm(reachNeeded);
         } else if (rule.toolRule == "tapered_ball_in_channel") {
-            const double dMax = channel - rule.clearance;
+            const double dMax = d.channelWidth(reachNeeded) - rule.clearance;
             const std::string limits = "tip radius at most the fillet's " + mm(d.filletRadius) + ", diameter at " +
-                                       mm(reachNeeded) + " at most " + mm(dMax) + ", reach at least " + mm(reachNeeded);
+                                       mm(reachNeeded) + " at most " + mm(dMax) + " (and at each height the channel's "
+                                       "width where it is that deep less " + mm(rule.clearance) + "), reach at least " +
+                                       mm(reachNeeded);
+            // The cone widens upwards, the channel where it is deeper may widen too: every height counts.
+            auto fitsChannel = [&](const CuttingTool& t) {
+                for (double h = t.diameter / 2; h < reachNeeded; h += 1.0)
+                    if (t.diameterAt(h) > d.channelWidth(h) - rule.clearance + 1e-9) return false;
+                return t.diameterAt(reachNeeded) <= dMax + 1e-9;
+            };
             s.tool = pick(ofType(tools, "tapered_ball"), [&](const CuttingTool& t) {
-                return (d.filletRadius <= 0 || t.diameter / 2 <= d.filletRadius + 1e-9) &&
-                       t.diameterAt(reachNeeded) <= dMax + 1e-9 && t.reach >= reachNeeded;
+                return (d.filletRadius <= 0 || t.diameter / 2 <= d.filletRadius + 1e-9) && fitsChannel(t) &&
+                       t.reach >= reachNeeded;
             }, rule, "tapered ball end mill", limits);
             s.toolReason = limits;
         } else if (rule.toolRule == "ball_in_fillet") {
             const std::string limits = "radius at most the fillet's " + mm(d.filletRadius) + ", reach at least " +
                                        mm(reachNeeded);
             s.tool = pick(ofType(tools, "ball"), [&](const CuttingTool& t) {
-                return t.diameter / 2 <= d.filletRadius + 1e-9 && t.diameter <= channel - rule.clearance &&
+                return t.diameter / 2 <= d.filletRadius + 1e-9 && t.diameter <= d.channelWidth(t.diameter / 2) - rule.clearance &&
                        t.reach >= reachNeeded;
             }, rule, "ball end mill", limits);
             s.toolReason = limits;

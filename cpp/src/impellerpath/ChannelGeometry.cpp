@@ -7,6 +7,7 @@
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_IntCS.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -42,6 +43,21 @@ Vec3 footAndNormal(const SurfaceProjection& projection, const Handle(Geom_Surfac
 }
 
 double wrapAngle(double a) { return std::remainder(a, 2 * kPi); }
+
+// Points inside a face on a grid over its parameter range.
+std::vector<Vec3> insidePoints(const TopoDS_Face& f, int nu, int nv) {
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f, u0, u1, v0, v1);
+    BRepAdaptor_Surface s(f);
+    BRepTopAdaptor_FClass2d inside(f, 1e-7);
+    std::vector<Vec3> out;
+    for (int i = 0; i <= nu; ++i)
+        for (int j = 0; j <= nv; ++j) {
+            const gp_Pnt2d uv(u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv);
+            if (inside.Perform(uv) == TopAbs_IN) out.push_back(vec(s.Value(uv.X(), uv.Y())));
+        }
+    return out;
+}
 
 }  // namespace
 
@@ -87,9 +103,33 @@ bool SurfaceProjection::project(const gp_Pnt& p, double& u, double& v, double& d
     return true;
 }
 
-Obstacles::Obstacles(const std::vector<TopoDS_Face>& faces, Handle(Geom_Surface) hub) {
+Obstacles::Obstacles(const std::vector<TopoDS_Face>& faces, const std::vector<Handle(Geom_Surface)>& hub) {
     for (const auto& f : faces) faces_.push_back(std::make_unique<FaceDistance>(f));
-    if (!hub.IsNull()) hub_ = std::make_unique<SurfaceProjection>(hub);
+    for (const auto& h : hub)
+        if (!h.IsNull()) hub_.push_back(std::make_unique<SurfaceProjection>(h));
+}
+
+std::vector<TopoDS_Face> partObstacles(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f) {
+    std::vector<TopoDS_Face> out;
+    auto add = [&](int id) {
+        if (id >= 1 && id <= faces.Extent()) out.push_back(TopoDS::Face(faces(id)));
+    };
+    for (const auto& b : f.blades) {
+        for (int w : b.walls) add(w);
+        for (int w : b.fillets) add(w);
+        if (b.shroudFaces.empty()) add(b.shroud);
+        for (int w : b.shroudFaces) add(w);
+    }
+    for (int p : f.planes) add(p);
+    for (int t : f.turned) add(t);
+    return out;
+}
+
+std::vector<Handle(Geom_Surface)> hubSurfaces(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f) {
+    std::vector<Handle(Geom_Surface)> out;
+    if (f.hubFaces.size() <= 1) return {BRep_Tool::Surface(TopoDS::Face(faces(f.hub)))};
+    for (int h : f.hubFaces) out.push_back(BRep_Tool::Surface(TopoDS::Face(faces(h))));
+    return out;
 }
 
 double Obstacles::distance(const Vec3& p, double limit, Vec3* nearest) const {
@@ -98,10 +138,11 @@ double Obstacles::distance(const Vec3& p, double limit, Vec3* nearest) const {
     const gp_Pnt q = pnt(p);
     double u, v, d;
     gp_Pnt on;
-    if (hub_ && hub_->project(q, u, v, d, on) && d < best) {
-        best = d;
-        if (nearest) *nearest = vec(on);
-    }
+    for (const auto& h : hub_)
+        if (h->project(q, u, v, d, on) && d < best) {
+            best = d;
+            if (nearest) *nearest = vec(on);
+        }
     const Bnd_Box point(q.XYZ(), q.XYZ());
     for (const auto& f : faces_) {
         if (f->box().Distance(point) >= best || f->lowerBound(q) >= best) continue;
@@ -146,6 +187,7 @@ Clearance clearance(const Obstacles& o, const CutterShape& c, const Vec3& centre
         if (d < c.shankRadius + 0.05) d = known = o.distance(centre + h * axis, c.shankRadius + 1.0);
         else known = d;
         out.holder = d < c.shankRadius;
+        out.holderGap = std::min(out.holderGap, d - c.shankRadius);
     }
     return out;
 }
@@ -185,20 +227,82 @@ Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::Impell
     if (rMax_ <= rMin_)
         throw inputError("impeller toolpaths: blades " + std::to_string(bladeA) + " and " +
                          std::to_string(bladeB % n) + " have no stretch of channel with both walls along it");
-    hub_ = face(f.hub);
-    hubSurface_ = BRep_Tool::Surface(hub_);
-    hubProjection_ = std::make_unique<SurfaceProjection>(hubSurface_);
-    shroudSurface_ = BRep_Tool::Surface(face(A.shroud));
-    std::vector<TopoDS_Face> obstacles;
-    std::vector<const impeller::Blade*> blades{&A, &B};
-    for (int k = bladeA + 1; k < bladeB; ++k) blades.push_back(&f.blades[k % n]);
-    for (const auto* b : blades) {
-        for (int w : b->walls) obstacles.push_back(face(w));
-        for (int w : b->fillets) obstacles.push_back(face(w));
-        obstacles.push_back(face(b->shroud));
+    // The hub under this channel: the one face of revolution, or the pieces (an exporter's
+    // piece per channel) whose points lie between the two walls.
+    auto addPiece = [&](int id) {
+        HubPiece h;
+        h.face = face(id);
+        h.surface = BRep_Tool::Surface(h.face);
+        h.projection = std::make_unique<SurfaceProjection>(h.surface);
+        hub_.push_back(std::move(h));
+    };
+    hubOfRevolution_ = f.hubFaces.size() <= 1;
+    if (hubOfRevolution_) {
+        addPiece(f.hub);
+    } else {
+        double hubLo = 1e300, hubHi = 0;
+        for (int id : f.hubFaces) {
+            const auto pts = insidePoints(face(id), 12, 12);
+            int in = 0;
+            for (const auto& p : pts) {
+                const double r = frame_.radius(p), t = frame_.theta(p);
+                const double ta = guessTheta(false, r), tb = guessTheta(true, r);
+                const double span = wrapAngle(tb - ta);
+                in += span > 0 && wrapAngle(t - ta) > 0 && wrapAngle(t - ta) < span;
+            }
+            if (pts.empty() || in < 0.5 * pts.size()) continue;
+            addPiece(id);
+            hub_.back().theta = frame_.theta(pts[pts.size() / 2]);
+            for (const auto& p : pts) hubLo = std::min(hubLo, frame_.radius(p)), hubHi = std::max(hubHi, frame_.radius(p));
+        }
+        if (hub_.empty())
+            throw inputError("impeller toolpaths: no hub face between blades " + std::to_string(bladeA) + " and " +
+                             std::to_string(bladeB % n));
+        // Inside the hub's first and last radius the blades stand on the nose or the rim: the
+        // channel is where there is hub under it.
+        rMin_ = std::max(rMin_, hubLo), rMax_ = std::min(rMax_, hubHi);
     }
-    obstacles_ = Obstacles(obstacles, hubSurface_);
+    shroudSurface_ = BRep_Tool::Surface(face(A.shroud));
+    if (A.shroudFaces.size() > 1 || B.shroudFaces.size() > 1) {
+        // The tip's height by radius: the highest point of the shroud faces in bands of radius.
+        constexpr int kBands = 60;
+        std::vector<std::pair<double, double>> pts;  // radius, axial
+        double lo = 1e300, hi = 0;
+        for (const auto* blade : {&A, &B})
+            for (int id : blade->shroudFaces)
+                for (const auto& p : insidePoints(face(id), 30, 10)) {
+                    pts.push_back({frame_.radius(p), frame_.axial(p)});
+                    lo = std::min(lo, pts.back().first), hi = std::max(hi, pts.back().first);
+                }
+        std::vector<double> top(kBands, -1e300);
+        for (const auto& [r, z] : pts) {
+            const int k = std::clamp(static_cast<int>((r - lo) / std::max(hi - lo, 1e-9) * kBands), 0, kBands - 1);
+            top[k] = std::max(top[k], z);
+        }
+        for (int k = 0; k < kBands; ++k)
+            if (top[k] > -1e300) shroudR_.push_back(lo + (k + 0.5) * (hi - lo) / kBands), shroudTop_.push_back(top[k]);
+        if (shroudR_.empty()) throw inputError("impeller toolpaths: the blades' shroud faces hold no points");
+    }
+    std::vector<Handle(Geom_Surface)> hubs;
+    for (const auto& h : hub_) hubs.push_back(h.surface);
+    // The channel's own blades (the blades between, for the inducer), the nose and the rim.
+    impeller::ImpellerFeatures own = f;
+    own.blades.clear();
+    for (int k = bladeA; k <= bladeB; ++k) own.blades.push_back(f.blades[k % n]);
+    obstacles_ = Obstacles(partObstacles(faces, own), hubs);
 }
+
+const Channel::HubPiece& Channel::hubAt(const Vec3& p) const {
+    if (hub_.size() == 1) return hub_.front();
+    const HubPiece* best = &hub_.front();
+    double nearest = 1e300, u, v, d;
+    gp_Pnt on;
+    for (const auto& h : hub_)
+        if (h.projection->project(pnt(p), u, v, d, on) && d < nearest) nearest = d, best = &h;
+    return *best;
+}
+
+double Channel::middleTheta(double r) const { return 0.5 * (guessTheta(false, r) + guessTheta(true, r)); }
 
 namespace {
 
@@ -217,18 +321,34 @@ std::vector<double> heights(const Frame& fr, const Handle(Geom_Surface)& s, doub
 }  // namespace
 
 double Channel::shroudZ(double r) const {
+    if (!shroudR_.empty()) {
+        if (r <= shroudR_.front()) return shroudTop_.front();
+        if (r >= shroudR_.back()) return shroudTop_.back();
+        const size_t k = std::upper_bound(shroudR_.begin(), shroudR_.end(), r) - shroudR_.begin();
+        const double t = (r - shroudR_[k - 1]) / (shroudR_[k] - shroudR_[k - 1]);
+        return shroudTop_[k - 1] + t * (shroudTop_[k] - shroudTop_[k - 1]);
+    }
     const auto h = heights(frame_, shroudSurface_, r, 0.0);
     if (h.empty()) throw inputError("impeller toolpaths: no shroud at radius " + std::to_string(r));
     return h.front();  // the shroud is the lower sheet of its surface of revolution
 }
 
 double Channel::hubZ(double r) const {
+    double z;
+    if (!hubBelow(r, z)) throw inputError("impeller toolpaths: no hub under the shroud at radius " + std::to_string(r));
+    return z;
+}
+
+bool Channel::hubBelow(double r, double& z) const {
     const double top = shroudZ(r);
     double best = -1e300;
-    for (double z : heights(frame_, hubSurface_, r, 0.0))
-        if (z < top) best = std::max(best, z);
-    if (best == -1e300) throw inputError("impeller toolpaths: no hub under the shroud at radius " + std::to_string(r));
-    return best;
+    // A hub of pieces: each piece's surface where the channel runs (a piece need not reach
+    // round to angle 0).
+    for (const auto& piece : hub_)
+        for (double h : heights(frame_, piece.surface, r, hubOfRevolution_ ? 0.0 : middleTheta(r)))
+            if (h < top) best = std::max(best, h);
+    z = best;
+    return best > -1e300;
 }
 
 double Channel::guessTheta(bool b, double r) const {
@@ -247,13 +367,29 @@ double Channel::wallTheta(bool b, double r, double z, double guess) const {
     const gp_Ax2 ax(pnt(c), gp_Dir(zd.x(), zd.y(), zd.z()), gp_Dir(x.x(), x.y(), x.z()));
     Handle(Geom_Circle) circle = new Geom_Circle(ax, r);
     GeomAPI_IntCS hit(circle, w.surface);
-    double best = 1e300, theta = guess;
-    if (hit.IsDone())
-        for (int i = 1; i <= hit.NbPoints(); ++i) {
-            const double t = frame_.theta(vec(hit.Point(i)));
-            const double d = std::abs(wrapAngle(t - guess));
-            if (d < best) best = d, theta = guess + wrapAngle(t - guess);
+    auto nearestTo = [&](double g, double& best) {
+        best = 1e300;
+        double theta = g;
+        if (hit.IsDone())
+            for (int i = 1; i <= hit.NbPoints(); ++i) {
+                const double t = frame_.theta(vec(hit.Point(i)));
+                const double d = std::abs(wrapAngle(t - g));
+                if (d < best) best = d, theta = g + wrapAngle(t - g);
+            }
+        return theta;
+    };
+    double best;
+    double theta = nearestTo(guess, best);
+    if (best > 0.5) {
+        // A strongly wrapped blade turns further than that from one station to the next: the
+        // wall's own point nearest in radius and height is the guess then.
+        double near = 1e300, g = guess;
+        for (const auto& p : w.samples) {
+            const double d = std::hypot(frame_.radius(p) - r, frame_.axial(p) - z);
+            if (d < near) near = d, g = frame_.theta(p);
         }
+        theta = nearestTo(guess + wrapAngle(g - guess), best);
+    }
     if (best > 0.5) throw inputError("impeller toolpaths: a blade wall is not found at radius " + std::to_string(r));
     return theta;
 }
@@ -277,7 +413,8 @@ Vec3 Channel::hubNormal(const Vec3& p) const {
     double u, v;
     gp_Pnt on;
     gp_Vec du, dv;
-    return footAndNormal(*hubProjection_, hubSurface_, hub_, p, "the hub", u, v, on, du, dv);
+    const HubPiece& h = hubAt(p);
+    return footAndNormal(*h.projection, h.surface, h.face, p, "the hub", u, v, on, du, dv);
 }
 
 }  // namespace aeronc::impellerpath
@@ -297,7 +434,8 @@ double Channel::hubDistance(const Vec3& p, Vec3& normal) const {
     double u, v;
     gp_Pnt on;
     gp_Vec du, dv;
-    normal = footAndNormal(*hubProjection_, hubSurface_, hub_, p, "the hub", u, v, on, du, dv);
+    const HubPiece& h = hubAt(p);
+    normal = footAndNormal(*h.projection, h.surface, h.face, p, "the hub", u, v, on, du, dv);
     return (p - vec(on)).dot(normal);
 }
 

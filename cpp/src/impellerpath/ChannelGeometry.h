@@ -50,22 +50,29 @@ private:
 };
 
 // Faces a cutter must not cut into, with their bounding boxes for quick rejection; and the hub,
-// measured to its whole surface of revolution (the hub face carries every blade's root loop, so
-// a distance to the face itself would measure to all those edges; its surface runs on under the
-// fillets and blades, inside the material, so it is never nearer to a point in a channel than
-// the face is).
+// measured to its whole surface (the hub face carries every blade's root loop, so a distance to
+// the face itself would measure to all those edges; its surface runs on under the fillets and
+// blades, inside the material, so it is never nearer to a point in a channel than the face is).
+// A hub an exporter cut into a piece per channel is measured to each piece's surface.
 // Not for concurrent use: each thread measures with its own.
 class Obstacles {
 public:
-    Obstacles(const std::vector<TopoDS_Face>& faces, Handle(Geom_Surface) hub);
+    Obstacles(const std::vector<TopoDS_Face>& faces, const std::vector<Handle(Geom_Surface)>& hub);
     // Distance from p to the faces and the hub, up to `limit` (beyond it, `limit`); `nearest`,
     // when given, gets the nearest point found (p itself when nothing is within the limit).
     double distance(const Vec3& p, double limit, Vec3* nearest = nullptr) const;
 
 private:
     std::vector<std::unique_ptr<FaceDistance>> faces_;
-    std::unique_ptr<SurfaceProjection> hub_;
+    std::vector<std::unique_ptr<SurfaceProjection>> hub_;
 };
+
+// The faces of the part a cutter in the channels may meet besides the hub: every blade's walls,
+// fillets and shroud faces, the planes and the turned faces (a nose between the blades' inner
+// ends, the rim between their outer ends).
+std::vector<TopoDS_Face> partObstacles(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f);
+// The surfaces of every hub face (one of revolution, or a piece per channel).
+std::vector<Handle(Geom_Surface)> hubSurfaces(const TopTools_IndexedMapOfShape& faces, const impeller::ImpellerFeatures& f);
 
 // A wall face and what the paths ask of it.
 struct Wall {
@@ -88,6 +95,9 @@ public:
     double rMin() const { return rMin_; }
     double rMax() const { return rMax_; }
     double hubZ(double r) const;
+    // The hub's height at radius r; false where there is no hub under the channel (where the
+    // blades stand on a nose or a rim instead).
+    bool hubBelow(double r, double& z) const;
     double shroudZ(double r) const;
     // Angle of the wall at radius r and height z (A: pressure side of the first blade, B: the
     // suction side of the next), near `guess`.
@@ -106,11 +116,25 @@ public:
     const Obstacles& obstacles() const { return obstacles_; }
 
 private:
+    // A hub face under this channel.
+    struct HubPiece {
+        TopoDS_Face face;
+        Handle(Geom_Surface) surface;
+        std::unique_ptr<SurfaceProjection> projection;
+        double theta = 0;  // an angle inside the piece, for the heights of its surface
+    };
+    // The hub piece whose surface is nearest to p.
+    const HubPiece& hubAt(const Vec3& p) const;
+    double middleTheta(double r) const;
+
     Frame frame_;
     Wall a_, b_;
-    TopoDS_Face hub_;
-    Handle(Geom_Surface) hubSurface_, shroudSurface_;
-    std::unique_ptr<SurfaceProjection> hubProjection_;
+    std::vector<HubPiece> hub_;
+    bool hubOfRevolution_ = true;  // one hub face for every channel: its surface is of revolution
+    Handle(Geom_Surface) shroudSurface_;
+    // Without a single shroud face of revolution (a tip of several faces: a flat top, pieces
+    // following the casing): the highest point of the two blades' shroud faces by radius.
+    std::vector<double> shroudR_, shroudTop_;
     Obstacles obstacles_;
     double rMin_ = 0, rMax_ = 0;
 };
@@ -120,6 +144,7 @@ private:
 struct Clearance {
     double gouge = -1e300;
     bool holder = false;
+    double holderGap = 1.0;    // least gap of the shank and holder to the part, up to 1 mm
     Vec3 away = Vec3::Zero();  // unit: from the nearest obstacle point towards the deepest sample
 };
 // `stock`: distance the cutter must keep beyond its own radius (roughing's allowance).

@@ -51,7 +51,7 @@ void roughChannel(const Channel& ch, const CutterShape& cut, const PathOptions& 
                 if (hi < lo) continue;  // the channel is narrower than the ball here
                 const double theta = lerp(lo, hi, u);
                 const Vec3 c = ch.frame().at(r, theta, zs[j]);
-                pass.push_back(check.place(c, blendedAxis(ch, r, zs[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j]))));
+                check.add(pass, c, blendedAxis(ch, r, zs[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j])), links, out);
             }
             links.append(out, pass, check);
         }

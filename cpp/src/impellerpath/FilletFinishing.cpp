@@ -32,7 +32,7 @@ void finishFillet(const Channel& ch, bool b, const CutterShape& cut, double fill
         const Vec3 centre = x - (target - R) * (nW + nH).normalized();
         Vec3 ruling, normal;
         ch.wallFrame(b, centre, ruling, normal);
-        pass.push_back(check.place(centre, (std::cos(tilt) * ruling + std::sin(tilt) * normal).normalized()));
+        check.add(pass, centre, (std::cos(tilt) * ruling + std::sin(tilt) * normal).normalized(), links, out);
     }
     links.append(out, pass, check);
 }

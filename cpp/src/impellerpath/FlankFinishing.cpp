@@ -53,8 +53,10 @@ void finishWall(const Channel& ch, bool b, const CutterShape& cut, const PathOpt
         const double r = ch.frame().radius(P);
         // Keep the ball at the wall's foot, clear of the hub by its radius.
         const Vec3 c = P + cut.tipRadius * normal;
-        if (ch.frame().axial(c) - ch.hubZ(r) < cut.tipRadius - 1e-6) continue;
-        pass.push_back(check.place(c, axis));
+        double hub;
+        if (!ch.hubBelow(r, hub)) continue;  // the wall's foot on a nose or a rim, not in the channel
+        if (ch.frame().axial(c) - hub < cut.tipRadius - 1e-6) continue;
+        check.add(pass, c, axis, links, out);
     }
     links.append(out, pass, check);
 }

@@ -34,7 +34,7 @@ void finishHub(const Channel& ch, const CutterShape& cut, double filletRadius, c
             const double theta = lerp(lo, hi, u);
             const Vec3 onHub = ch.frame().at(r, theta, ch.hubZ(r));
             const Vec3 n = ch.hubNormal(onHub);
-            pass.push_back(check.place(onHub + R * n, blendedAxis(ch, r, zh[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j]))));
+            check.add(pass, onHub + R * n, blendedAxis(ch, r, zh[j], ta[j], tb[j], (theta - ta[j]) / (tb[j] - ta[j])), links, out);
         }
         links.append(out, pass, check);
     }

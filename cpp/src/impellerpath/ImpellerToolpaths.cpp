@@ -49,9 +49,11 @@ ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::Impe
         if (!(c->tipRadius > 0) || !(c->fluteLength > c->tipRadius) || !(c->reach >= c->fluteLength) ||
             !(c->shankRadius >= c->tipRadius) || c->taperDeg < 0 || c->taperDeg >= 15 || !(c->feed > 0) || !(c->rpm > 0))
             throw inputError("impeller toolpaths: cutter " + c->id + " has impossible dimensions or cutting data");
-    if (2 * rougher.tipRadius + 2 * opt.roughAllowance > d.minChannelWidth)
+    // Where the channel is shallower than the ball, the passes leave it (the ball does not fit there).
+    if (2 * rougher.tipRadius + 2 * opt.roughAllowance > d.channelWidth(rougher.tipRadius))
         throw inputError("impeller toolpaths: the roughing ball " + rougher.id + " with the allowance is wider than the "
-                         "narrowest channel (" + std::to_string(d.minChannelWidth) + " mm)");
+                         "narrowest channel where it is as deep as the ball's radius (" +
+                         std::to_string(d.channelWidth(rougher.tipRadius)) + " mm)");
     if (cutters.filletBall && !(d.filletRadius > 0))
         throw inputError("impeller toolpaths: fillet finishing asked for a part without root fillets");
     TopTools_IndexedMapOfShape faces;

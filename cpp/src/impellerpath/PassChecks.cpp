@@ -41,8 +41,22 @@ Move Checker::place(Vec3 centre, Vec3 axis) {
                 }
             }
     }
-    record(c, centre);
+    lastSafe_ = !c.holder && c.gouge <= kGougeLeaveOut;
+    if (!leavingOut_ || lastSafe_) record(c, centre);
     return Move{centre, axis, false};
+}
+
+void Checker::add(std::vector<Move>& pass, Vec3 centre, Vec3 axis, const Links& links, std::vector<Move>& out) {
+    leavingOut_ = true;
+    const Move m = place(centre, axis);
+    leavingOut_ = false;
+    if (lastSafe_) {
+        pass.push_back(m);
+        return;
+    }
+    ++result.leftOut;
+    links.append(out, pass, *this);
+    pass.clear();
 }
 
 void Checker::tally(const Move& m) { record(clearance(ch.obstacles(), cutter, m.centre, m.axis), m.centre); }
@@ -50,6 +64,7 @@ void Checker::tally(const Move& m) { record(clearance(ch.obstacles(), cutter, m.
 void Checker::record(const Clearance& c, const Vec3& centre) {
     ++result.positions;
     if (c.holder) ++result.holderCollisions;
+    result.minHolderGap = std::min(result.minHolderGap, c.holderGap);
     if (c.gouge > result.maxGouge) {
         result.maxGouge = c.gouge;
         result.worstAt[0] = centre.x(), result.worstAt[1] = centre.y(), result.worstAt[2] = centre.z();
@@ -67,14 +82,18 @@ Move Links::onPlane(const Move& m, const Frame& fr) const {
     return Move{m.centre + std::max(up, 0.0) / std::max(0.2, m.axis.dot(fr.z())) * m.axis, m.axis, true};
 }
 
-void Links::checkFeed(const Move& cutting, const Move& above, Checker& check) const {
+bool Links::feedTouches(const Move& cutting, const Move& above, const Checker& check) const {
     CutterShape longer = check.cutter;
     longer.reach += (above.centre - cutting.centre).norm();
     // Flutes wider than the shank sweep up through where the shank was.
     longer.shankRadius = std::max(longer.shankRadius, longer.radiusAt(longer.fluteLength - longer.tipRadius));
     const Clearance k = impellerpath::clearance(check.ch.obstacles(), longer, cutting.centre, cutting.axis);
+    return k.gouge > kGougeAim || k.holder;
+}
+
+void Links::checkFeed(const Move& cutting, const Move& above, Checker& check) const {
     ++check.result.links;
-    check.result.linkCollisions += k.gouge > kGougeAim || k.holder;
+    check.result.linkCollisions += feedTouches(cutting, above, check);
 }
 
 void Links::checkRapid(const Move& a, const Move& b, Checker& check) const {
@@ -82,7 +101,14 @@ void Links::checkRapid(const Move& a, const Move& b, Checker& check) const {
     check.result.linkCollisions += rapidClearance(stock, check.cutter, a, b) < 0;
 }
 
-void Links::append(std::vector<Move>& out, const std::vector<Move>& pass, Checker& check) const {
+void Links::append(std::vector<Move>& out, const std::vector<Move>& whole, Checker& check) const {
+    // A pass cannot start or end where the tool, moving out along its axis, would touch the part
+    // (a tilted tool deep in a narrow channel): such end positions are left out.
+    size_t first = 0, last = whole.size();
+    while (first < last && feedTouches(whole[first], outside(whole[first], check.cutter), check)) ++first, ++check.result.leftOut;
+    while (last > first && feedTouches(whole[last - 1], outside(whole[last - 1], check.cutter), check))
+        --last, ++check.result.leftOut;
+    const std::vector<Move> pass(whole.begin() + first, whole.begin() + last);
     if (pass.empty()) return;
     const Frame& fr = check.ch.frame();
     const Move in = outside(pass.front(), check.cutter), out_ = outside(pass.back(), check.cutter);
@@ -107,6 +133,8 @@ void merge(CheckResult& into, const CheckResult& r) {
     into.tilted += r.tilted;
     into.links += r.links;
     into.linkCollisions += r.linkCollisions;
+    into.minHolderGap = std::min(into.minHolderGap, r.minHolderGap);
+    into.leftOut += r.leftOut;
     if (r.maxGouge > into.maxGouge) {
         into.maxGouge = r.maxGouge;
         std::copy(r.worstAt, r.worstAt + 3, into.worstAt);

@@ -14,6 +14,11 @@ namespace aeronc::impellerpath {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kGougeAim = 0.002;  // mm: finishing positions are stepped back to at most this
+// mm: a position that still cuts deeper than this after stepping back is left out (half the
+// program check's limit of 0.01 mm: the posted program rounds its coordinates).
+constexpr double kGougeLeaveOut = 0.005;
+
+struct Links;
 
 // Cutting positions of one pass, checked; the holder cleared by tilting towards the channel's
 // middle (about the local radial direction, both ways, in growing steps).
@@ -27,9 +32,15 @@ struct Checker {
     // A position closer to the part than the cutter and the stock allow (OCCT's approximations,
     // a twisted ruling, a slanted wall) is stepped back from the nearest point of the part.
     Move place(Vec3 centre, Vec3 axis);
+    // The position placed and added to the pass; one whose holder still touches after tilting,
+    // or that still gouges, is left out (counted, not recorded as a cut): the pass ends before
+    // it (with its links to `out`) and a new one starts after it, so no move runs through it.
+    void add(std::vector<Move>& pass, Vec3 centre, Vec3 axis, const Links& links, std::vector<Move>& out);
     // A position that is not moved, measured as the program's re-check measures it.
     void tally(const Move& m);
     void record(const Clearance& c, const Vec3& centre);
+
+    bool leavingOut_ = false, lastSafe_ = true;  // add()'s state
 };
 
 // Links between passes. A pass is entered and left along the tool axis at feed, from and to the
@@ -49,9 +60,11 @@ struct Links {
     // own axis, the tool sweeps what the tool at the cutting position covers with its shank longer
     // by the distance (and no narrower than the flutes' top): one measure of that longer tool.
     void checkFeed(const Move& cutting, const Move& above, Checker& check) const;
+    bool feedTouches(const Move& cutting, const Move& above, const Checker& check) const;
     // A rapid from a to b: the tool outside the blank all along.
     void checkRapid(const Move& a, const Move& b, Checker& check) const;
-    // The pass with its entry and exit links appended to `out`.
+    // The pass with its entry and exit links appended to `out`; leading and trailing positions
+    // that cannot be left along the tool axis without touching the part are left out.
     void append(std::vector<Move>& out, const std::vector<Move>& pass, Checker& check) const;
 };
 

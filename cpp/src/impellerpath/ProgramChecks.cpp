@@ -19,13 +19,8 @@ CheckResult checkProgram(const TopoDS_Shape& part, const impeller::ImpellerFeatu
                          const std::vector<std::pair<CutterShape, std::vector<Move>>>& operations) {
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(part, TopAbs_FACE, faces);
-    std::vector<TopoDS_Face> obstacles;
-    for (const auto& b : f.blades) {
-        for (int w : b.walls) obstacles.push_back(TopoDS::Face(faces(w)));
-        for (int w : b.fillets) obstacles.push_back(TopoDS::Face(faces(w)));
-        obstacles.push_back(TopoDS::Face(faces(b.shroud)));
-    }
-    const Handle(Geom_Surface) hub = BRep_Tool::Surface(TopoDS::Face(faces(f.hub)));
+    const std::vector<TopoDS_Face> obstacles = partObstacles(faces, f);
+    const std::vector<Handle(Geom_Surface)> hub = hubSurfaces(faces, f);
     // The cutting positions in program order, measured on two threads, each half with distance
     // queries of its own (they keep state); the halves merge in order, as one thread would.
     std::vector<std::pair<const CutterShape*, const Move*>> cuts;
@@ -44,6 +39,7 @@ CheckResult checkProgram(const TopoDS_Shape& part, const impeller::ImpellerFeatu
                 const Clearance c = clearance(o, *cuts[i].first, m.centre, m.axis);
                 ++r.positions;
                 if (c.holder) ++r.holderCollisions;
+                r.minHolderGap = std::min(r.minHolderGap, c.holderGap);
                 if (c.gouge > r.maxGouge) {
                     r.maxGouge = c.gouge;
                     r.worstAt[0] = m.centre.x(), r.worstAt[1] = m.centre.y(), r.worstAt[2] = m.centre.z();

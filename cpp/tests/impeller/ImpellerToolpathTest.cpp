@@ -150,7 +150,9 @@ TEST(ImpellerToolpaths, NoGougeNoCollisionPostedUnderTraori) {
 
 // A cutter whose holder is too fat for the channel is reported, not hidden; a roughing ball
 // wider than the channel is refused.
-TEST(ImpellerToolpaths, CollisionsReportedAndTooWideRefused) {
+// A holder too fat for the channel: the positions where it still touches after tilting are
+// left out of the program (counted), never delivered; the program read back touches nowhere.
+TEST(ImpellerToolpaths, CollidingPositionsLeftOutAndTooWideRefused) {
     Programmed s;
     CutterShape fat = s.finisher;
     fat.fluteLength = 6;
@@ -160,7 +162,11 @@ TEST(ImpellerToolpaths, CollisionsReportedAndTooWideRefused) {
     o.stations = 4;
     o.maxTiltDeg = 4;
     const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, s.rougher, fat, o);
-    EXPECT_GT(prog.check.holderCollisions, 0);
+    EXPECT_GT(prog.check.leftOut, 0);
+    EXPECT_EQ(prog.check.holderCollisions, 0);
+    const std::string apt = post::writeApt(toClProgram(prog, "IMPELLER"));
+    const auto again = checkProgram(s.part.shape, s.features, movesOf(post::readApt(apt), {s.rougher, fat, fat}));
+    EXPECT_EQ(again.holderCollisions, 0);
 
     CutterShape wide = s.rougher;
     wide.tipRadius = wide.shankRadius = s.dims.minChannelWidth / 2;

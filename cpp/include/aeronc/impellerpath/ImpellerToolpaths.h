@@ -68,6 +68,12 @@ struct CheckResult {
     // the part every millimetre, and the rapids, checked against the blank (docs/impeller.md §5).
     int links = 0;             // links checked
     int linkCollisions = 0;    // feed links that touch the part, rapids that enter the blank
+    // The least gap between the shank or holder and the part over the positions (mm; negative:
+    // a collision); gaps of 1 mm or more are not measured further (1 stands for them).
+    double minHolderGap = 1.0;
+    // Positions left out of their pass (the pass split there): the holder still touched after
+    // tilting, or the cutter still cut into the part after stepping back.
+    int leftOut = 0;
 };
 
 struct ImpellerProgram {
