@@ -6,7 +6,7 @@ The addon is found on FreeCAD's Mod path (user Mods: $HOME/.local/share/FreeCAD/
 env AERONC_MOD_DIR (the folder holding aeronc/, i.e. <Mod>/AeroNC). Prints one line per test,
 then "N passed, N failed", and ends with exit code 0 when all passed, 1 otherwise. Env
 AERONC_APP_TEST_PATTERN picks other files than test_*.py (the impeller's slower tests,
-impeller_*_tests.py, run as a CTest of their own).
+impeller_*_tests.py and shared_impeller_tests.py, each run as a CTest of its own).
 freecadcmd runs this file as a module (not __main__), so the code runs at import.
 """
 import os

@@ -24,6 +24,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 
 #include <filesystem>
@@ -58,7 +60,9 @@ struct Programmed {
     impeller::ImpellerDimensions dims = impeller::measureImpeller(part.shape, features);
     CutterShape rougher, finisher, filletBall;
     Programmed() {
-        const auto path = std::filesystem::temp_directory_path() / "aeronc_impeller_paths.sqlite";
+        // Per process: two test runs at once (two checkouts) would share and remove one file.
+        const auto path = std::filesystem::temp_directory_path() /
+                          ("aeronc_impeller_paths_" + std::to_string(::getpid()) + ".sqlite");
         std::filesystem::remove(path);
         const auto kb =
             kb::KnowledgeBase::openWithSqlFolder(path.string(), [] { return std::string(AERONC_RESOURCES) + "/kb"; });
