@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 7.
+-- AeroNC machining knowledge base, schema version 8.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
