@@ -74,7 +74,11 @@ bool isHole(const FaceGraph& g, int f) {
     gp_Vec n = du.Crossed(dv);
     if (g[f].face.Orientation() == TopAbs_REVERSED) n.Reverse();
     const gp_Vec r = a.radial(p);
-    return r.Magnitude() > 1e-9 && n.Dot(r) < 0;
+    if (r.Magnitude() <= 1e-9 || n.Dot(r) >= 0) return false;
+    // A concave cylinder tangent to two faces it meets is a blend: a root fillet between a plane
+    // wall and a plane hub (a straight blade on a pump's back plate), not a hole.
+    const auto& nbs = g.neighbours(f);
+    return std::count_if(nbs.begin(), nbs.end(), [](const Neighbour& nb) { return nb.tangent; }) < 2;
 }
 
 // Angle of p about the axis from a fixed reference direction, in [0, 2π).
@@ -180,6 +184,14 @@ void bladesOnHub(const FaceGraph& g, const Axis& axis, int m, const std::set<int
         rev[f] = t.known && t.largest <= kMeridianSine;
         round[f] = t.known && t.mean >= 0.5;
         wide[f] = rev[f] && angularSpan(g, f, axis) > 0.5 * pitch;
+    }
+    // A flat tip of a blade wrapped round more than half a pitch spans as much as a hub piece, but
+    // only its blade's walls bound it: a hub piece meets the rim, a nose or the back as well.
+    for (int f = 1; f <= n; ++f) {
+        if (!wide[f]) continue;
+        const auto& nbs = g.neighbours(f);
+        if (!nbs.empty() && std::none_of(nbs.begin(), nbs.end(), [&](const Neighbour& nb) { return usable[nb.face] && rev[nb.face]; }))
+            wide[f] = 0;
     }
     // The length of boundary each wide face shares with blade faces (not of revolution): the hub
     // carries the blades' roots; the back, the rim and a nose meet at most a blade's end.
@@ -292,7 +304,11 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
             throw inputError(s.str());
         }
     }
-    std::set<int> holeSet(holes.begin(), holes.end()), planeSet(out.planes.begin(), out.planes.end());
+    // Planes across the axis (the back, a nose) are faces of revolution; a plane along it may be a
+    // blade's wall (straight radial blades), so it stays in its pattern.
+    std::set<int> holeSet(holes.begin(), holes.end()), planeSet;
+    for (int f : out.planes)
+        if (BRepAdaptor_Surface(g[f].face).Plane().Axis().Direction().IsParallel(axis.dir, 1e-3)) planeSet.insert(f);
     std::vector<std::vector<int>> groups;
     for (const auto& orbit : sym.orbits) {
         std::vector<int> grp;
