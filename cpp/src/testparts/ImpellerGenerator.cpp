@@ -299,7 +299,8 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
             const Camber c{spec.leadingRadius, spec.trailingRadius, k * pitch + kind * pitch / 2, spec.wrapDeg * kDeg};
             const double r0 = kind ? splitR0 : spec.leadingRadius;
             for (int i = -2; i <= 42; ++i) {
-                const double r = std::clamp(r0 + (spec.trailingRadius - r0) * i / 40.0, spec.noseRadius, spec.outerRadius);
+                const double r = std::clamp(r0 + (spec.trailingRadius - r0) * i / 40.0, pump ? rb : spec.noseRadius,
+                                            spec.outerRadius);
                 const double qHub = (hubZ(r) - zBottom) / (zTopSection - zBottom);
                 const double qTip = (hubZ(r) + h - zBottom) / (zTopSection - zBottom);
                 const double mid = c.theta(std::clamp(r, r0, spec.trailingRadius));

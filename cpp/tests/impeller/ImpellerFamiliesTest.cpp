@@ -114,10 +114,11 @@ void checkRecognised(const testparts::Impeller& imp, const ImpellerSpec& spec) {
     EXPECT_EQ((f.closestPair[0] + 1) % n, f.closestPair[1]);
 }
 
-void checkFamily(const ImpellerSpec& spec, TopTools_IndexedMapOfShape& faces) {
-    const auto imp = testparts::makeImpeller(spec);
+testparts::Impeller checkFamily(const ImpellerSpec& spec, TopTools_IndexedMapOfShape& faces) {
+    auto imp = testparts::makeImpeller(spec);
     checkTruth(imp, spec, faces);
     checkRecognised(imp, spec);
+    return imp;
 }
 
 ImpellerSpec straightRadial(int blades, bool splitters, double fillet) {
@@ -148,8 +149,7 @@ TEST(ImpellerFamilies, StraightRadialBlades) {
         SCOPED_TRACE(std::to_string(spec.bladeCount) + (spec.splitters ? " + splitters" : "") + ", fillet " +
                      std::to_string(spec.filletRadius));
         TopTools_IndexedMapOfShape faces;
-        checkFamily(spec, faces);
-        const auto imp = testparts::makeImpeller(spec);
+        const auto imp = checkFamily(spec, faces);
         for (const auto& b : imp.truth.blades) {
             EXPECT_EQ(typeOf(faces, b.pressure), GeomAbs_Plane);
             EXPECT_EQ(typeOf(faces, b.suction), GeomAbs_Plane);
@@ -162,8 +162,7 @@ TEST(ImpellerFamilies, HubOfOneSplineFace) {
     ImpellerSpec spec;
     spec.hubSpline = true;
     TopTools_IndexedMapOfShape faces;
-    checkFamily(spec, faces);
-    const auto imp = testparts::makeImpeller(spec);
+    const auto imp = checkFamily(spec, faces);
     BRepAdaptor_Surface hub(TopoDS::Face(faces(imp.truth.hub)));
     ASSERT_EQ(hub.GetType(), GeomAbs_SurfaceOfRevolution);
     EXPECT_EQ(hub.BasisCurve()->GetType(), GeomAbs_BSplineCurve);
@@ -180,8 +179,7 @@ TEST(ImpellerFamilies, SeamSplitsTheBladeItCrosses) {
         spec.hubSpline = true;
         spec.seamAcrossBlade = true;
         TopTools_IndexedMapOfShape faces;
-        checkFamily(spec, faces);
-        const auto imp = testparts::makeImpeller(spec);
+        const auto imp = checkFamily(spec, faces);
         EXPECT_EQ(imp.truth.seamBlade, 0);
     }
 }
@@ -193,9 +191,8 @@ TEST(ImpellerFamilies, OpenPumpImpellers) {
         SCOPED_TRACE("6 straight radial blades, sharp roots");
         const ImpellerSpec spec = pump(6, 0, 0);
         TopTools_IndexedMapOfShape faces;
-        checkFamily(spec, faces);
+        const auto imp = checkFamily(spec, faces);
         EXPECT_EQ(faces.Extent(), 34);
-        const auto imp = testparts::makeImpeller(spec);
         EXPECT_EQ(typeOf(faces, imp.truth.hub), GeomAbs_Plane);
         EXPECT_EQ(typeOf(faces, imp.truth.blades[0].shroud), GeomAbs_Plane);
     }
