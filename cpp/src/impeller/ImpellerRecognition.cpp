@@ -59,7 +59,7 @@ struct Axis {
     }
 };
 
-// A concave cylinder: its outward normal points towards its own axis.
+// A hole: a concave cylinder (its outward normal points towards its own axis) that is no blend.
 bool isHole(const FaceGraph& g, int f) {
     if (g[f].type != GeomAbs_Cylinder) return false;
     BRepAdaptor_Surface s(g[f].face);
@@ -76,9 +76,15 @@ bool isHole(const FaceGraph& g, int f) {
     const gp_Vec r = a.radial(p);
     if (r.Magnitude() <= 1e-9 || n.Dot(r) >= 0) return false;
     // A concave cylinder tangent to two faces it meets is a blend: a root fillet between a plane
-    // wall and a plane hub (a straight blade on a pump's back plate), not a hole.
+    // wall and a plane hub (a straight blade on a pump's back plate), not a hole. Pieces of the
+    // same cylinder (a bore an exporter split at its seams) do not count.
     const auto& nbs = g.neighbours(f);
-    return std::count_if(nbs.begin(), nbs.end(), [](const Neighbour& nb) { return nb.tangent; }) < 2;
+    return std::count_if(nbs.begin(), nbs.end(), [&](const Neighbour& nb) {
+               if (!nb.tangent) return false;
+               if (g[nb.face].type != GeomAbs_Cylinder) return true;
+               const gp_Cylinder o = BRepAdaptor_Surface(g[nb.face].face).Cylinder();
+               return std::abs(o.Radius() - c.Radius()) > 1e-6 || !o.Axis().IsCoaxial(c.Axis(), 1e-6, 1e-6);
+           }) < 2;
 }
 
 // Angle of p about the axis from a fixed reference direction, in [0, 2π).
