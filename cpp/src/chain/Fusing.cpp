@@ -350,6 +350,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             }
             MachiningUnit& u = addUnit(e, step, Operation::Rest, c, top, bottom);
             u.previousCutter = before;
+            u.previousAllowance = chain_.units[static_cast<std::size_t>(st.roughUnit)].radialAllowance;
             // Where it reaches the floor's final height it finishes the floor in the corners: no
             // wider a step-over than leaves the floor's scallop.
             if (u.axialAllowance <= 1e-9 && e.type != ElementType::Opening)
