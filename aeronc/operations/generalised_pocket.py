@@ -10,5 +10,5 @@ class GeneralisedPocket(MachiningOperation):
     PARAMETERS = [STEP_DOWN, STEP_OVER, RADIAL, AXIAL, SAFE, CLEARANCE, RAMP]
     GEOMETRY_KEYS = ("top", "bottom", "contour", "islands", "islandTops", "faceIslandTops", "openEdges",
                      "floorFilletRadius", "finishingPass",
-                     "finishingAllowance", "previousCutter")
+                     "finishingAllowance", "previousCutter", "previousAllowance")
     ICON = "GeneralisedPocket"

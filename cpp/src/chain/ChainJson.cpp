@@ -72,6 +72,7 @@ json unitJson(const MachiningUnit& u) {
             {"toolNumber", u.toolNumber},
             {"cutter", cutter(u.cutter)},
             {"previousCutter", u.previousCutter ? cutter(*u.previousCutter) : json(nullptr)},
+            {"previousAllowance", u.previousAllowance ? json(*u.previousAllowance) : json(nullptr)},
             {"setting",
              {{"spindleRpm", num(u.setting.spindleRpm)},
               {"feedMmMin", num(u.setting.feedMmMin)},
@@ -216,6 +217,7 @@ MachiningUnit readUnit(const In& in) {
     u.toolNumber = in["toolNumber"].integer();
     u.cutter = readCutter(in["cutter"]);
     if (in.has("previousCutter")) u.previousCutter = readCutter(in["previousCutter"]);
+    if (in.has("previousAllowance")) u.previousAllowance = in["previousAllowance"].number();
     const In s = in["setting"];
     u.setting = {s["spindleRpm"].numberOr(NAN), s["feedMmMin"].numberOr(NAN), s["plungeFeedMmMin"].numberOr(NAN)};
     u.top = in["top"].number();

@@ -364,8 +364,9 @@ MachiningChain checkChain(MachiningChain c) {
         if (!u.enabled) continue;
         if (u.operation == Operation::Rest) {
             u.previousCutter.reset();
+            u.previousAllowance.reset();
             for (const MachiningUnit* p : pockets[u.element])
-                if (p->top >= u.top - kEps) u.previousCutter = p->cutter;
+                if (p->top >= u.top - kEps) u.previousCutter = p->cutter, u.previousAllowance = p->radialAllowance;
         }
         if (u.operation == Operation::Pocket) pockets[u.element].push_back(&u);
     }

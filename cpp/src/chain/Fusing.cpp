@@ -312,10 +312,11 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             const int c = tools_.finisher(e, why);
             if (c < 0) return;  // the wall steps report it
             // Corners no tool fits: the walls' passes take what the roughing left in them. A rest
-            // unit's toolpath (toolpath::restCorners) takes the region the previous cutter
-            // cleared as cleared down to the rest unit's own radial allowance; after a roughing
-            // that left more, its links pass through that band (rapids through material on the
-            // small sharp pockets of CTC-03 and CTC-05), so none is made for them yet.
+            // unit's toolpath took the region the previous cutter cleared as cleared down to the
+            // rest unit's own radial allowance, and its entries came through the band between
+            // (rapids through material on the small sharp pockets of CTC-03 and CTC-05). It now
+            // takes the roughing's allowance (previousAllowance below); rest units for these
+            // corners are not made again until measured on those parts.
             if (tools_.leaves(e.id).corners) return;
             const Cutter before = chain_.units[static_cast<std::size_t>(st.roughUnit)].cutter;
             const Tool& ct = tools_.tool(c);
@@ -350,6 +351,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             }
             MachiningUnit& u = addUnit(e, step, Operation::Rest, c, top, bottom);
             u.previousCutter = before;
+            u.previousAllowance = chain_.units[static_cast<std::size_t>(st.roughUnit)].radialAllowance;
             // Where it reaches the floor's final height it finishes the floor in the corners: no
             // wider a step-over than leaves the floor's scallop.
             if (u.axialAllowance <= 1e-9 && e.type != ElementType::Opening)

@@ -9,13 +9,17 @@
 #include <aeronc/toolpath/Levels.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace aeronc::toolpath {
 
-Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutter& cutter, const PocketParameters& p) {
+Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutter& cutter, const PocketParameters& p,
+                     std::optional<double> previousAllowance) {
     const double s = checkMilling(p, cutter, unit.top, unit.bottom);
     checkCutter(previous, "the previous cutter");
     const double R = cutter.radius(), R0 = previous.radius(), a = p.radialAllowance, tol = p.chordTolerance;
+    const double a0 = previousAllowance.value_or(a);
+    if (!std::isfinite(a0) || a0 < 0) throw inputError("the previous unit's radial allowance must be a length >= 0");
     if (!(R < R0)) throw inputError("rest machining needs a cutter smaller than the previous one");
     // The same extension as the previous cutter's clearing had.
     const PocketArea area = pocketArea(unit, 2 * (R0 + a) + p.clearance);
@@ -27,19 +31,24 @@ Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutte
     // large cutters several times faster.
     const double coarse = 10 * tol;
     const clip::Paths reached = clip::offset(centres, R, coarse);
-    const double filletBefore = floorFilletOffset(unit.floorFilletRadius, previous.cornerRadius, a);
+    // What the previous cutter cleared: its centres kept R0 + its own allowance (and its fillet
+    // offset) off the walls, and it swept R0 round them. The coarse arcs of the erosion cut up to
+    // `coarse` into the corners' circles, so the sweep is taken `coarse` narrower: the region is
+    // never larger than what was cut.
+    const double filletBefore = floorFilletOffset(unit.floorFilletRadius, previous.cornerRadius, a0);
     const clip::Paths reachedBefore =
-        clip::offset(clip::offset(area.region, -(R0 + a + filletBefore), coarse), R0 + filletBefore, coarse);
+        clip::offset(clip::offset(area.region, -(R0 + a0 + filletBefore), coarse), R0 - coarse, coarse);
     // What is left, without the slivers that only rounding makes.
     const clip::Paths rest =
         clip::offset(clip::offset(clip::subtract(reached, reachedBefore), -2 * coarse, coarse), 2 * coarse, coarse);
     Toolpath tp;
     if (rest.empty()) return tp;
 
-    // The centres from which the cutter touches the rest; outside them it meets only what the
-    // previous cutter cleared, so a plunge there is safe.
+    // The centres from which the cutter touches the rest. Entries come down only where the
+    // whole cutter stands in what the previous cutter cleared (its region eroded by R, and by
+    // `coarse` for the arcs): the slivers dropped from the rest above are material too.
     const clip::Paths touching = clip::intersect(clip::offset(rest, R, coarse), centres);
-    const clip::Paths cleared = clip::subtract(centres, clip::offset(rest, R + 2 * coarse, coarse));
+    const clip::Paths cleared = clip::intersect(centres, clip::offset(reachedBefore, -(R + coarse), coarse));
     ClearingOptions o;
     o.stepOver = s;
     o.reach = R - cutter.cornerRadius > 0.1 * R ? R - cutter.cornerRadius : R;

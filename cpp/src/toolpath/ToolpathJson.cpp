@@ -30,7 +30,7 @@ std::set<std::string> keysOf(const std::string& op) {
     auto add = [&](std::initializer_list<const char*> more) { k.insert(more.begin(), more.end()); };
     if (op == "pocket" || op == "rest") add({"contour", "islands", "islandTops", "faceIslandTops", "openEdges", "floorFilletRadius", "finishingPass",
                                              "finishingAllowance"});
-    if (op == "rest") add({"previousCutter"});
+    if (op == "rest") add({"previousCutter", "previousAllowance"});
     if (op == "profile")
         add({"contour", "closed", "side", "lead", "leadRadius", "startLimit", "endLimit", "floorFilletRadius", "clearOf"});
     if (op == "helix") add({"holes", "finishingAllowance", "breakThrough"});
@@ -142,7 +142,12 @@ Toolpath compute(const json& j) {
         const PocketUnit u = pocketUnit(j);
         if (op == "pocket") return pocketClearing(u, c, p);
         if (!j.contains("previousCutter")) throw inputError("missing \"previousCutter\"");
-        return restCorners(u, cutter(j.at("previousCutter")), c, p);
+        std::optional<double> before;
+        if (j.contains("previousAllowance") && !j.at("previousAllowance").is_null()) {
+            if (!j.at("previousAllowance").is_number()) throw inputError("\"previousAllowance\" must be a number");
+            before = j.at("previousAllowance").get<double>();
+        }
+        return restCorners(u, cutter(j.at("previousCutter")), c, p, before);
     }
     if (op == "profile") {
         ProfileParameters p;

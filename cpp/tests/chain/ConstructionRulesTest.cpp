@@ -81,6 +81,10 @@ TEST(ConstructionRules, TheFusedChainIsTheOneWorkedOutByHand) {
     EXPECT_EQ(c0.tool, "F10");
     ASSERT_TRUE(c0.previousCutter.has_value());
     EXPECT_DOUBLE_EQ(c0.previousCutter->diameter, 20);
+    // What that cutter left on the walls: the rest toolpath takes the band between it and its
+    // own allowance as material (toolpath::restCorners).
+    ASSERT_TRUE(c0.previousAllowance.has_value());
+    EXPECT_DOUBLE_EQ(*c0.previousAllowance, r0.radialAllowance);
     for (const MachiningUnit& u : c.units) EXPECT_FALSE(u.element == 1 && u.step == StepCode::Corner);
     const MachiningUnit& fs0 = unitOf(c, 0, StepCode::FinishWall);
     EXPECT_EQ(fs0.operation, Operation::Profile);

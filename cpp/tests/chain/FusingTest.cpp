@@ -307,6 +307,8 @@ TEST(Fusing, GeneratedDoubleSidedPanel) {
             // Only where the roughing tool could not follow the corners.
             ASSERT_TRUE(u.previousCutter.has_value());
             EXPECT_LT(u.cutter.diameter, u.previousCutter->diameter);
+            ASSERT_TRUE(u.previousAllowance.has_value());
+            EXPECT_GE(*u.previousAllowance, u.radialAllowance);
             EXPECT_TRUE(e.minCornerRadius < 0 || 0.5 * u.previousCutter->diameter + u.radialAllowance > e.minCornerRadius)
                 << "unit " << u.id;
             ++rests;

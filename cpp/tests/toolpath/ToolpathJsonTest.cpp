@@ -94,6 +94,24 @@ TEST(ToolpathJson, EveryOperationAnswers) {
     }
 }
 
+// A rest unit after a roughing that left more than it leaves: "previousAllowance" makes the band
+// between the two part of its rest, so it cuts more than when the roughing left the same.
+TEST(ToolpathJson, RestTakesThePreviousUnitsAllowance) {
+    const json square = {{0, 0}, {50, 0}, {50, 50}, {0, 50}};
+    json unit = {{"operation", "rest"}, {"contour", square}, {"top", 0}, {"bottom", -4},
+                 {"cutter", {{"diameter", 4}}}, {"previousCutter", {{"diameter", 10}}}, {"stepOver", 2},
+                 {"radialAllowance", 0.2}};
+    const double same = json::parse(toolpathJson(unit.dump()))["cutLength"].get<double>();
+    unit["previousAllowance"] = 1.0;
+    const double more = json::parse(toolpathJson(unit.dump()))["cutLength"].get<double>();
+    EXPECT_GT(more, 2 * same);
+    unit["previousAllowance"] = "much";
+    EXPECT_NE(inputErrorOf([&] { toolpathJson(unit.dump()); }).find("previousAllowance"), std::string::npos);
+    unit["previousAllowance"] = -1;
+    EXPECT_NE(inputErrorOf([&] { toolpathJson(unit.dump()); }).find("previous unit's radial allowance"),
+              std::string::npos);
+}
+
 TEST(ToolpathJson, MistakesAreNamed) {
     auto err = [](const std::string& text) { return inputErrorOf([&] { toolpathJson(text); }); };
     EXPECT_NE(err("{not json").find("not valid JSON"), std::string::npos);

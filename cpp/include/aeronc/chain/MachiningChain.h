@@ -53,6 +53,7 @@ struct MachiningUnit {
     int toolNumber = 0;
     Cutter cutter;
     std::optional<Cutter> previousCutter;  // rest: the cutter that went before
+    std::optional<double> previousAllowance;  // rest: the radial allowance that cutter left
     Setting setting;
     double top = 0, bottom = 0;  // heights along w
     std::optional<double> stockTop;  // the material may stand this high over the unit (StockTops.h)
