@@ -170,6 +170,36 @@ TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
 }
 
+// Lettering: grooves 0.36 mm wide and 0.5 mm deep. The D0.5 end mill fits in none; the D0.2 micro
+// end mill of schema version 9 roughs and finishes them with an allowance it can leave.
+TEST(ToolCrib, LetteringNarrowerThanHalfAMillimetreIsCutWithTheMicroEndMill) {
+    testparts::PanelSpec s = pocketsOnly(9, 8.5, 0.12);
+    s.pitch = 1.86;  // grooves 1.86 - 1.5 = 0.36 mm wide
+    s.ribThickness = 1.5;
+    const auto tree = recogniseUp(s);
+    const test::KbDir dir("crib_lettering");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.minWidth, 0.36, 1e-2);
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        std::set<StepCode> steps;
+        for (const MachiningUnit& u : c.units) {
+            if (u.element != e.id) continue;
+            steps.insert(u.step);
+            EXPECT_LE(u.cutter.diameter, 0.3 + 1e-9) << toString(u.step) << " " << u.tool;
+            EXPECT_LE(u.cutter.diameter + 2 * u.radialAllowance, e.minWidth + 1e-6) << toString(u.step) << " " << u.tool;
+        }
+        EXPECT_TRUE(steps.count(StepCode::Rough));
+        EXPECT_TRUE(steps.count(StepCode::FinishWall));
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
 namespace {
 
 // The crib's end mills as the selector sees them (id, type, diameter, corner radius, reach).
