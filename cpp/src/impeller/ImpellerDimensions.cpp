@@ -1,5 +1,6 @@
 // Dimension analysis (impeller paper §2): bore, channel width, root fillet radius, blade height.
 #include <aeronc/impeller/ImpellerDimensions.h>
+#include <aeronc/impeller/FaceSampling.h>
 
 #include <aeronc/core/Error.h>
 
@@ -9,7 +10,6 @@
 #include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepTools.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <GProp_GProps.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -68,21 +68,6 @@ double distance(const TopoDS_Shape& a, const TopoDS_Shape& b, gp_Pnt* onA = null
     return d.Value();
 }
 
-// Points inside a face on a grid over its parameter range.
-std::vector<gp_Pnt> facePoints(const TopoDS_Face& f, int nu, int nv) {
-    double u0, u1, v0, v1;
-    BRepTools::UVBounds(f, u0, u1, v0, v1);
-    BRepAdaptor_Surface s(f);
-    BRepTopAdaptor_FClass2d inside(f, 1e-7);
-    std::vector<gp_Pnt> out;
-    for (int i = 0; i <= nu; ++i)
-        for (int j = 0; j <= nv; ++j) {
-            const gp_Pnt2d uv(u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv);
-            if (inside.Perform(uv) == TopAbs_IN) out.push_back(s.Value(uv.X(), uv.Y()));
-        }
-    return out;
-}
-
 // The channel from blade a to the next, b, station by station along the radius: the depth is
 // the axial extent of a's walls in the station's band (its walls run from the hub, or the
 // fillets, to the tip), the width the least distance from a point of a's walls to b's walls
@@ -100,7 +85,7 @@ std::vector<ChannelStation> channelStations(const TopTools_IndexedMapOfShape& fa
     // Inside the walls, and along their edges (the narrowest gap is often at a wall's top, root
     // or end).
     for (int id : a.walls) {
-        auto pts = facePoints(TopoDS::Face(faces(id)), 60, 12);
+        auto pts = pointsInsideFace(TopoDS::Face(faces(id)), 60, 12);
         const auto rim = edgePoints(faces(id), 60);
         pts.insert(pts.end(), rim.begin(), rim.end());
         for (const auto& p : pts) {

@@ -1,13 +1,13 @@
 #include "ChannelGeometry.h"
 
 #include <aeronc/core/Error.h>
+#include <aeronc/impeller/FaceSampling.h>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_IntCS.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
@@ -46,16 +46,8 @@ double wrapAngle(double a) { return std::remainder(a, 2 * kPi); }
 
 // Points inside a face on a grid over its parameter range.
 std::vector<Vec3> insidePoints(const TopoDS_Face& f, int nu, int nv) {
-    double u0, u1, v0, v1;
-    BRepTools::UVBounds(f, u0, u1, v0, v1);
-    BRepAdaptor_Surface s(f);
-    BRepTopAdaptor_FClass2d inside(f, 1e-7);
     std::vector<Vec3> out;
-    for (int i = 0; i <= nu; ++i)
-        for (int j = 0; j <= nv; ++j) {
-            const gp_Pnt2d uv(u0 + (u1 - u0) * i / nu, v0 + (v1 - v0) * j / nv);
-            if (inside.Perform(uv) == TopAbs_IN) out.push_back(vec(s.Value(uv.X(), uv.Y())));
-        }
+    for (const auto& p : impeller::pointsInsideFace(f, nu, nv)) out.push_back(vec(p));
     return out;
 }
 
