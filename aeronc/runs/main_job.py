@@ -17,6 +17,7 @@ A second run replaces the outputs of the first (the files it listed in .aeronc-o
 """
 import json
 import os
+import re
 
 from aeronc.pipeline.setup_job import part_zero  # noqa: F401  (the main job's part zero, also for its callers)
 from aeronc.runs.stages import Run, RunError
@@ -471,6 +472,12 @@ def _write_reports(job):
     job.run.finish()
 
 
+def _element_of_label(label):
+    """"15" for an operation label such as "Pocket E15 r U0", or None."""
+    m = re.search(r"\bE(\d+)\b", label or "")
+    return m.group(1) if m else None
+
+
 def run_summary(data):
     """The run's figures in one small dict: what was recognised and machined, what is left
     against the part, what the gate left out, the simulation of the delivered programs, the
@@ -481,6 +488,12 @@ def run_summary(data):
     not_machined = {}
     for gap in chain.get("unmachined", []):
         not_machined.setdefault(str(gap.get("element")), gap.get("reason", ""))
+    # An element one of whose operations the gate left out is not machined either.
+    for op in data.get("leftOut") or []:
+        element = _element_of_label(op.get("label", ""))
+        if element is not None:
+            not_machined.setdefault(element, "{} left out of the programs: {}".format(
+                op.get("label"), op.get("reason", "")))
     left = data.get("materialLeft") or []
     areas = [e["area"] for e in left if e.get("area") is not None]
     thick = [e["maxLeft"] for e in left if e.get("maxLeft") is not None]

@@ -32,12 +32,15 @@ namespace {
 
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
 // 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib and the
-// 5 extra-long-neck end mills, and the long-reach D3 ball of schema version 8.
-constexpr std::size_t kShippedTools = 96;
+// 5 extra-long-neck end mills, the long-reach D3 ball of schema version 8, and version 9's two
+// micro end mills.
+constexpr std::size_t kShippedTools = 98;
 // The crib's tools added by schema versions 6 and 7 (docs/tool-crib.md).
 constexpr std::size_t kCribTools = 35;
 // The extra-long-neck series schema version 7 added (8 x D).
 const std::vector<std::string> kExtraLongNeck = {"EM-F1.5x12", "EM-F2x16", "EM-F3x24", "EM-F4x32", "EM-F6x48"};
+// Schema version 9: micro end mills for lettering 0.25-0.4 mm wide.
+const std::vector<std::string> kVersion9 = {"EM-F0.2", "EM-F0.3"};
 
 // What schema version 6 added to a new file (docs/tool-crib.md), removed again: the layout and
 // rows of a version-5 file, from which a test makes the older ones.
@@ -804,7 +807,9 @@ TEST_F(KnowledgeBaseTest, MigratesVersionSevenAddingTheLongReachSmallBall) {
         SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
         const fs::path p = dir_ / (ownCrib ? "own7.sqlite" : "shipped7.sqlite");
         { openDefault(p); }
-        rawExec(p, std::string("DELETE FROM tool WHERE id = 'EM-BALL3x30'; UPDATE schema_version SET version = 7;") +
+        std::string dropLater = "DELETE FROM tool WHERE id IN ('EM-BALL3x30'";
+        for (const std::string& id : kVersion9) dropLater += ", '" + id + "'";
+        rawExec(p, dropLater + "); UPDATE schema_version SET version = 7;" +
                        (ownCrib ? "DELETE FROM tool;" : "") +
                        "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
                        "VALUES ('MY-BALL5', 'ball', 'carbide', 5, 2.5, 2, 10, 25);");
@@ -815,6 +820,7 @@ TEST_F(KnowledgeBaseTest, MigratesVersionSevenAddingTheLongReachSmallBall) {
         EXPECT_TRUE(byId.count("MY-BALL5"));
         EXPECT_EQ(byId.size(), ownCrib ? 1u : kShippedTools + 1);
         if (ownCrib) continue;
+        for (const std::string& id : kVersion9) EXPECT_TRUE(byId.count(id)) << id;
         ASSERT_TRUE(byId.count("EM-BALL3x30"));
         const Tool& b = byId["EM-BALL3x30"];
         EXPECT_EQ(b.type, "ball");
@@ -824,6 +830,46 @@ TEST_F(KnowledgeBaseTest, MigratesVersionSevenAddingTheLongReachSmallBall) {
         EXPECT_DOUBLE_EQ(b.usableLength(), 30);  // necked: it cuts down to its reach
         // Cutting data for it: the carbide rows for tools below 6 mm.
         EXPECT_GT(kb.cuttingCondition("7050-T7451", "carbide", "roughing", 3.0).fz, 0);
+    }
+}
+
+// Version 8 to 9: the micro end mills join a file that carries the shipped crib, as
+// a new file has them, and not a user's own; the user's rows stay.
+TEST_F(KnowledgeBaseTest, MigratesVersionEightAddingTheMicroEndMills) {
+    KnowledgeBase shipped = openDefault(dir_ / "fresh9.sqlite");
+    std::map<std::string, Tool> made;
+    for (const Tool& t : shipped.tools()) made[t.id] = t;
+    for (bool ownCrib : {false, true}) {
+        SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
+        const fs::path p = dir_ / (ownCrib ? "own8.sqlite" : "shipped8.sqlite");
+        { openDefault(p); }
+        std::string drop = "DELETE FROM tool WHERE id IN (";
+        for (std::size_t i = 0; i < kVersion9.size(); ++i) drop += (i ? ", '" : "'") + kVersion9[i] + "'";
+        rawExec(p, drop + "); UPDATE schema_version SET version = 8;" + (ownCrib ? "DELETE FROM tool;" : "") +
+                       "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
+                       "VALUES ('MY-F30', 'flat', 'carbide', 30, 0, 4, 45, 90);");
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+        EXPECT_TRUE(fs::exists(p.string() + ".v8.bak"));
+        std::map<std::string, Tool> byId;
+        for (const Tool& t : kb.tools()) byId[t.id] = t;
+        EXPECT_TRUE(byId.count("MY-F30"));
+        EXPECT_EQ(byId.size(), ownCrib ? 1u : kShippedTools + 1);
+        if (ownCrib) continue;
+        for (const std::string& id : kVersion9) {
+            ASSERT_TRUE(byId.count(id)) << id;
+            const Tool& t = byId[id];
+            EXPECT_NO_THROW(t.validate()) << id;
+            EXPECT_TRUE(t.necked()) << id;
+            EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;  // necked: it cuts down to its reach
+            EXPECT_DOUBLE_EQ(t.reach, made.at(id).reach) << id;
+            EXPECT_DOUBLE_EQ(t.neckDiameter, made.at(id).neckDiameter) << id;
+            EXPECT_GT(kb.cuttingCondition("7050-T7451", "carbide", "roughing", t.diameter).fz, 0) << id;
+        }
+        EXPECT_DOUBLE_EQ(byId["EM-F0.2"].diameter, 0.2);
+        EXPECT_DOUBLE_EQ(byId["EM-F0.3"].diameter, 0.3);
+        for (const std::string& id : kVersion9)  // one layer cuts lettering 0.5 mm deep
+            EXPECT_GE(byId[id].passHeight(), 0.52) << id;
     }
 }
 
@@ -842,7 +888,7 @@ TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
             EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
             EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
         }
-    EXPECT_EQ(necked, kCribTools - 1 + 1);  // all but EM-BALL16, and version 8's EM-BALL3x30
+    EXPECT_EQ(necked, kCribTools - 1 + 1 + kVersion9.size());  // all but EM-BALL16; EM-BALL3x30; version 9's
     for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
         EXPECT_TRUE(byId.count(id)) << id;
     // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.

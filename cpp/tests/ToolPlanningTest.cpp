@@ -253,7 +253,7 @@ TEST_F(ToolPlanningTest, NistPartToolsFollowTheRulesByHand) {
             if (!(t.type == "flat" || t.type == "bull" || t.type == "ball") || !hasData(t, "finishing")) continue;
             if (g.minCornerRadius >= 0 && t.diameter / 2 > g.minCornerRadius + 1e-6) continue;
             if (t.cornerRadius > fillet + 1e-6) continue;
-            if (std::min(t.fluteLength, t.reach) < g.depth - 1e-6) continue;
+            if (t.usableLength() < g.depth - 1e-6) continue;
             const bool matches = fillet > 0 && std::fabs(t.cornerRadius - fillet) <= 1e-6;
             if (expected.empty() || (matches && !expectedMatches) ||
                 (matches == expectedMatches && t.diameter > expectedD + 1e-6))
@@ -274,7 +274,7 @@ TEST_F(ToolPlanningTest, NistPartToolsFollowTheRulesByHand) {
         EXPECT_NEAR(machinableRatio(g, chosen.radius()).eta, c.ratio.eta, 1e-9);
         for (const Tool& t : plan.tools) {
             if (!(t.type == "flat" || t.type == "bull" || t.type == "ball") || !hasData(t, "roughing")) continue;
-            if (t.diameter <= chosen.diameter + 1e-9 || std::min(t.fluteLength, t.reach) < g.depth - 1e-6) continue;
+            if (t.diameter <= chosen.diameter + 1e-9 || t.usableLength() < g.depth - 1e-6) continue;
             EXPECT_LT(machinableRatio(g, t.radius()).eta, etaMin) << "element " << c.element << ": " << t.id
                                                                   << " is larger and would do";
         }

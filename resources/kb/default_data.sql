@@ -138,7 +138,10 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-BALL10x50','ball','carbide',  10,   5,  2, 15.0, 110,  50, 108, 9.5),
 -- A small long-reach ball for deep narrow channels (schema version 8, migrations/v7_to_v8.sql):
 -- an impeller's channels of 4-5 mm width 26 mm deep.
-  ('EM-BALL3x30','ball', 'carbide',   3, 1.5,  2,  4.5,  75,  30,  56, 2.85);
+  ('EM-BALL3x30','ball', 'carbide',   3, 1.5,  2,  4.5,  75,  30,  56, 2.85),
+-- Micro flat end mills for lettering and engraving 0.25-0.4 mm wide (schema version 9).
+  ('EM-F0.2',    'flat', 'carbide', 0.2,   0,  2,  0.6,  38, 1.0,  32, 0.18),
+  ('EM-F0.3',    'flat', 'carbide', 0.3,   0,  2,  0.9,  38, 1.5,  30, 0.28);
 
 -- Chamfer and corner-rounding mills (docs/tool-crib.md).
 INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach, cost) VALUES

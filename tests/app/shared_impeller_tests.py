@@ -4,7 +4,6 @@ to end by the impeller run (its bodies fused in FreeCAD, recognised with every r
 blank, route, 5-axis toolpaths, the posted 840D program read back and checked, the report).
 The run is made once for every test (one channel, four stations a pass)."""
 import glob
-import json
 import math
 import os
 import shutil
@@ -58,6 +57,15 @@ class SharedImpellerTest(unittest.TestCase):
         self.assertEqual(bore.Surface.__class__.__name__, "Cylinder")
         axis = FreeCAD.Vector(*r["axis"]["direction"])
         self.assertAlmostEqual(abs(axis.dot(bore.Surface.Axis)), 1.0, places=6)
+        # The bore runs the hub's length: its pieces (the faces on the 4 mm cylinder about the
+        # axis), by their area, are about 40 mm long; a short piece taken for the bore is not.
+        faces = self.fused.Shape.Faces
+        pieces = [i for i, f in enumerate(faces) if f.Surface.__class__.__name__ == "Cylinder"
+                  and abs(f.Surface.Radius - 4.0) < 1e-3 and abs(axis.dot(f.Surface.Axis)) > 1 - 1e-6]
+        length = sum(faces[i].Area for i in pieces) / (2 * math.pi * 4.0)
+        self.assertGreater(length, 39.0)
+        self.assertAlmostEqual(r["dimensions"]["boreDepth"], length, delta=0.5)
+        self.assertIn(r["bore"] - 1, pieces)
 
     def test_blades_are_nine_copies_forty_degrees_apart(self):
         angles = sorted(b["angleDeg"] for b in self.result["blades"])

@@ -218,6 +218,11 @@ class MainJobTest(unittest.TestCase):
         self.assertEqual(run["verdict"]["status"], "NOT READY")
         self.assertIn("left out", run["verdict"]["text"])
         self.assertIn(picked["deep"], run["verdict"]["text"])
+        # The run's summary counts an element whose operation was left out as not machined.
+        with open(os.path.join(out, "run.json")) as f:
+            summary = json.load(f)
+        why = summary["notMachined"].get(str(picked["element"]), "")
+        self.assertIn("{} left out of the programs".format(picked["refused"]), why)
         self.assertTrue(_banner(out).startswith("NOT READY"))
         self.assertTrue(lines[-1].strip().startswith("NOT READY"), lines[-1])
         # What is delivered is safe: re-verified, and every left-out operation named in it.

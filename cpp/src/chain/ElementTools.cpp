@@ -299,16 +299,22 @@ int ElementTools::floorTool(const DomainElement& e, const TemplateStep& step, st
     if (f >= 0 && mismatch(tool(f), e, step, Operation::Pocket, e.level).empty()) return f;
     // No end mill whose corner fits the fillet reaches the floor: the one with the smallest
     // corner radius that does (then the widest) finishes it and leaves the fillet's foot.
+    std::string nearest;
     {
         const int r = roughingTool(e);
         // Between the walls' tool and the roughing tool: the diameters never grow along the steps.
         const double maxD = r >= 0 ? tool(r).diameter : kInf, minD = f >= 0 ? tool(f).diameter : 0.0;
         int best = -1;
+        double nearestD = kInf;
         for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
             const Tool& t = plan_.tools[i];
             if (!t.isEndMill() || t.type == "ball" || t.diameter > maxD + 1e-9 || t.diameter < minD - 1e-9) continue;
             if (!hasSetting(static_cast<int>(i), "finishing")) continue;
-            if (!mismatch(t, e, step, Operation::Pocket, e.level, {false, true}).empty()) continue;
+            if (const std::string m = mismatch(t, e, step, Operation::Pocket, e.level, {false, true}); !m.empty()) {
+                // The smallest tool's reason says what the floor lacks (reach, width, corner).
+                if (t.diameter < nearestD - 1e-9) nearestD = t.diameter, nearest = m;
+                continue;
+            }
             if (best < 0 || t.cornerRadius < tool(best).cornerRadius - 1e-9 ||
                 (std::fabs(t.cornerRadius - tool(best).cornerRadius) <= 1e-9 && t.diameter > tool(best).diameter + 1e-9))
                 best = static_cast<int>(i);
@@ -320,6 +326,7 @@ int ElementTools::floorTool(const DomainElement& e, const TemplateStep& step, st
     }
     why = "no end mill with a corner radius of at most " + fmt(std::max(0.0, e.floorFilletRadius)) +
           " mm reaches the " + fmt(e.depth) + " mm deep floor of " + elementName(e);
+    if (!nearest.empty()) why += " (the smallest that might: " + nearest + ")";
     return -1;
 }
 

@@ -247,7 +247,7 @@ Panel makePanel(const PanelSpec& s) {
     const double pw = s.pitch - s.ribThickness;
     if (nx < 1 || ny < 1) fail("need at least one pocket");
     if (s.ribThickness <= 0 || s.border <= 0) fail("rib thickness and border must be positive");
-    if (R < 0 || pw < 2 * R + 0.5) fail("pockets too small for the corner radius");
+    if (R < 0 || pw < 2 * R + 0.05) fail("pockets too small for the corner radius");
     if (Z <= 0 || Z >= T) fail("webZ must lie inside the thickness");
     if (ff < 0 || (ff > 0 && (ff >= R || ff >= T - Z))) fail("floor fillet must be < cornerRadius");
     if (s.bottomPockets && (s.bottomDepth <= 0 || Z - s.bottomDepth < 1))

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <set>
 
 using namespace aeronc;
@@ -139,28 +140,31 @@ TEST(ToolCrib, OneMillimetreDeepPocketIsFinishedWithTheOneMillimetreEndMill) {
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
 }
 
-// Grooves 2 mm wide and 1 mm deep (engraving): the roughing step's 1 mm allowance leaves no room
-// for any cutter (0.5 + 2 x 1 > 2); capped at a quarter of the tool's diameter, the 1 mm end
-// mill roughs them with 0.25 mm and every step fits the groove.
-TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
-    testparts::PanelSpec s = pocketsOnly(9, 8, 0.5);
-    s.pitch = 3.5;  // grooves 3.5 - 1.5 = 2 mm wide
+namespace {
+
+// Two closed pockets as grooves `width` wide and `depth` deep in a 9 mm plate, planned with the
+// shipped crib: each is machined (roughed and wall-finished) by units that fit the groove with
+// their allowance; unitCheck adds what the test asks of every unit.
+void expectGroovesCut(double width, double depth, double cornerRadius, const char* kbName,
+                      const std::function<void(const MachiningUnit&)>& unitCheck) {
+    testparts::PanelSpec s = pocketsOnly(9, 9 - depth, cornerRadius);
     s.ribThickness = 1.5;
+    s.pitch = s.ribThickness + width;
     const auto tree = recogniseUp(s);
-    const test::KbDir dir("crib_grooves");
+    const test::KbDir dir(kbName);
     const auto kb = dir.open();
     const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
     int pockets = 0;
     for (const auto& e : tree.elements) {
         if (e.type != recognition::ElementType::ClosedPocket) continue;
         ++pockets;
-        EXPECT_NEAR(e.minWidth, 2.0, 1e-2);  // measured on the faceted outline
+        EXPECT_NEAR(e.minWidth, width, 1e-2);  // measured on the faceted outline
         for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
         std::set<StepCode> steps;
         for (const MachiningUnit& u : c.units) {
             if (u.element != e.id) continue;
             steps.insert(u.step);
-            EXPECT_LE(u.radialAllowance, 0.25 * u.cutter.diameter + 1e-9) << toString(u.step);
+            unitCheck(u);
             EXPECT_LE(u.cutter.diameter + 2 * u.radialAllowance, e.minWidth + 1e-6) << toString(u.step) << " " << u.tool;
         }
         EXPECT_TRUE(steps.count(StepCode::Rough));
@@ -168,6 +172,25 @@ TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
     }
     EXPECT_EQ(pockets, 2);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+}  // namespace
+
+// Grooves 2 mm wide and 1 mm deep (engraving): the roughing step's 1 mm allowance leaves no room
+// for any cutter (0.5 + 2 x 1 > 2); capped at a quarter of the tool's diameter, the 1 mm end
+// mill roughs them with 0.25 mm and every step fits the groove.
+TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
+    expectGroovesCut(2.0, 1.0, 0.5, "crib_grooves", [](const MachiningUnit& u) {
+        EXPECT_LE(u.radialAllowance, 0.25 * u.cutter.diameter + 1e-9) << toString(u.step);
+    });
+}
+
+// Lettering: grooves 0.36 mm wide and 0.5 mm deep. The D0.5 end mill fits in none; the D0.2 micro
+// end mill of schema version 9 roughs and finishes them with an allowance it can leave.
+TEST(ToolCrib, LetteringNarrowerThanHalfAMillimetreIsCutWithTheMicroEndMill) {
+    expectGroovesCut(0.36, 0.5, 0.12, "crib_lettering", [](const MachiningUnit& u) {
+        EXPECT_LE(u.cutter.diameter, 0.3 + 1e-9) << toString(u.step) << " " << u.tool;
+    });
 }
 
 namespace {

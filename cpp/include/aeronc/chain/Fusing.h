@@ -32,7 +32,8 @@ struct ChainOptions {
     double helixMaxRatio = 0.8;  // ... to; below half the hole the helix clears it in rings
     double floorScallop = 0.01;  // a floor (web) pass leaves scallops at most this high, mm
     // A unit's radial allowance is at most this times its tool's diameter: a 1 mm end mill cannot
-    // leave the 1 mm a roughing step asks for in a groove it just fits (engraving).
+    // leave the 1 mm a roughing step asks for in a groove it just fits (engraving). Below it, every
+    // step's allowance is scaled alike (ElementTools::allowanceOf).
     double allowanceRatio = std::numeric_limits<double>::infinity();
     // The chamfer mills the edge step may use, with their cutting data (docs/edges.md); none:
     // chamfers and countersinks are listed, not cut.
