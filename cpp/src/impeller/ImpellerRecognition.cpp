@@ -27,6 +27,7 @@
 #include <Bnd_Box.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <ElCLib.hxx>
 #include <gp_Cylinder.hxx>
@@ -59,6 +60,22 @@ struct Axis {
     }
 };
 
+// Whether two faces share an edge running along dir (a ruling of a cylinder with that axis), as
+// a root fillet meets its wall and hub; a bore meets its end rounds along circles instead.
+bool meetAlongRuling(const TopoDS_Face& a, const TopoDS_Face& b, const gp_Dir& dir) {
+    TopTools_IndexedMapOfShape edgesOfB;
+    TopExp::MapShapes(b, TopAbs_EDGE, edgesOfB);
+    for (TopExp_Explorer e(a, TopAbs_EDGE); e.More(); e.Next()) {
+        if (!edgesOfB.Contains(e.Current())) continue;
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        if (BRep_Tool::Degenerated(edge)) continue;
+        BRepAdaptor_Curve curve(edge);
+        const gp_Vec chord(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
+        if (chord.Magnitude() > 1e-6 && std::abs(chord.Normalized().Dot(gp_Vec(dir))) > 0.98) return true;
+    }
+    return false;
+}
+
 // A hole: a concave cylinder (its outward normal points towards its own axis) that is no blend.
 bool isHole(const FaceGraph& g, int f) {
     if (g[f].type != GeomAbs_Cylinder) return false;
@@ -75,15 +92,19 @@ bool isHole(const FaceGraph& g, int f) {
     if (g[f].face.Orientation() == TopAbs_REVERSED) n.Reverse();
     const gp_Vec r = a.radial(p);
     if (r.Magnitude() <= 1e-9 || n.Dot(r) >= 0) return false;
-    // A concave cylinder tangent to two faces it meets is a blend: a root fillet between a plane
-    // wall and a plane hub (a straight blade on a pump's back plate), not a hole. Pieces of the
-    // same cylinder (a bore an exporter split at its seams) do not count.
+    // A concave cylinder tangent to two faces along its rulings is a blend: a root fillet between
+    // a plane wall and a plane hub (a straight blade on a pump's back plate), not a hole. A bore
+    // meets its end rounds along circles, and pieces of the same cylinder (a bore an exporter
+    // split at its seams) do not count.
     const auto& nbs = g.neighbours(f);
     return std::count_if(nbs.begin(), nbs.end(), [&](const Neighbour& nb) {
                if (!nb.tangent) return false;
-               if (g[nb.face].type != GeomAbs_Cylinder) return true;
-               const gp_Cylinder o = BRepAdaptor_Surface(g[nb.face].face).Cylinder();
-               return std::abs(o.Radius() - c.Radius()) > 1e-6 || !o.Axis().IsCoaxial(c.Axis(), 1e-6, 1e-6);
+               if (g[nb.face].type == GeomAbs_Cylinder) {
+                   const gp_Cylinder o = BRepAdaptor_Surface(g[nb.face].face).Cylinder();
+                   if (std::abs(o.Radius() - c.Radius()) <= 1e-6 && o.Axis().IsCoaxial(c.Axis(), 1e-6, 1e-6))
+                       return false;
+               }
+               return meetAlongRuling(g[f].face, g[nb.face].face, c.Axis().Direction());
            }) < 2;
 }
 

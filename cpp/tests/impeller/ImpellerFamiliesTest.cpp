@@ -8,14 +8,20 @@
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/testparts/ImpellerGenerator.h>
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -206,6 +212,43 @@ TEST(ImpellerFamilies, OpenPumpImpellers) {
         TopTools_IndexedMapOfShape faces;
         checkFamily(pump(7, 0, 1.5), faces);
     }
+}
+
+// A bore with rounded ends meets its rounds tangentially along circles: still a bore, not a root
+// fillet (a fillet meets its wall and hub along lines of its cylinder).
+TEST(ImpellerFamilies, BoreWithRoundedEndsStaysTheBore) {
+    const ImpellerSpec spec = pump(7, 0, 1.5);
+    const auto imp = testparts::makeImpeller(spec);
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(imp.shape, TopAbs_FACE, faces);
+    BRepFilletAPI_MakeFillet rounds(imp.shape);
+    int circles = 0;
+    for (TopExp_Explorer e(faces(imp.truth.bore), TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        if (BRep_Tool::Degenerated(edge) || BRepAdaptor_Curve(edge).GetType() != GeomAbs_Circle) continue;
+        rounds.Add(1.0, edge);
+        ++circles;
+    }
+    ASSERT_EQ(circles, 2);
+    rounds.Build();
+    ASSERT_TRUE(rounds.IsDone());
+    const TopoDS_Shape part = rounds.Shape();
+    const auto f = recogniseImpeller(part);
+    const auto d = measureImpeller(part, f);
+    EXPECT_EQ(f.bladeCount, 7);
+    EXPECT_EQ(f.splitterCount, 0);
+    EXPECT_TRUE(f.holes.empty());
+    TopTools_IndexedMapOfShape rounded;
+    TopExp::MapShapes(part, TopAbs_FACE, rounded);
+    ASSERT_GE(f.bore, 1);
+    BRepAdaptor_Surface bore(TopoDS::Face(rounded(f.bore)));
+    ASSERT_EQ(bore.GetType(), GeomAbs_Cylinder);
+    const gp_Ax1 axis = bore.Cylinder().Axis();  // the part's axis, either way
+    EXPECT_NEAR(std::abs(axis.Direction().Z()), 1, 1e-9);
+    EXPECT_NEAR(axis.Location().X(), 0, 1e-9);
+    EXPECT_NEAR(axis.Location().Y(), 0, 1e-9);
+    EXPECT_NEAR(d.boreDiameter, spec.boreDiameter, kDimTol);
+    EXPECT_NEAR(d.boreDepth, spec.plateThickness - 2 * 1.0, kDimTol);  // the rounds take 1 mm off each end
 }
 
 // Bad input in the new families still gets its reason: a splitter left out of a hub of one
