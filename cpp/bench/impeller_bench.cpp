@@ -4,7 +4,9 @@
 // clock); the median of five runs. Then the 5-axis toolpaths of the 2 x 9 impeller (every
 // channel and the inducers, 24 stations a pass, fillet finishing included) with the route's
 // tools, once: generation and check time.
-// Usage: aeronc_impeller_bench [--blades 9] [--no-paths]
+// With --families, the wider families of docs/impeller.md (recognition time and face count each)
+// instead of the sizes.
+// Usage: aeronc_impeller_bench [--blades 9] [--no-paths] [--families]
 #include <aeronc/impeller/ImpellerDimensions.h>
 #include <aeronc/impeller/ImpellerFeatures.h>
 #include <aeronc/impellerpath/AxialOperations.h>
@@ -30,9 +32,7 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-void run(int blades) {
-    aeronc::testparts::ImpellerSpec spec;
-    spec.bladeCount = blades;
+void recognition(const aeronc::testparts::ImpellerSpec& spec, const std::string& name) {
     auto t0 = Clock::now();
     const auto imp = aeronc::testparts::makeImpeller(spec);
     const double gen = secs(t0);
@@ -48,8 +48,14 @@ void run(int blades) {
         aeronc::impeller::measureImpeller(imp.shape, f);
         measure.push_back(secs(t0));
     }
-    std::printf("%2d x 2 blades  %4d faces  generate %6.2f s  recognise %6.3f s (cpu %6.3f s)  measure %6.3f s\n",
-                blades, f.faceCount, gen, median(wall), median(proc), median(measure));
+    std::printf("%-14s %4d faces  generate %6.2f s  recognise %6.3f s (cpu %6.3f s)  measure %6.3f s\n",
+                name.c_str(), f.faceCount, gen, median(wall), median(proc), median(measure));
+}
+
+void run(int blades) {
+    aeronc::testparts::ImpellerSpec spec;
+    spec.bladeCount = blades;
+    recognition(spec, std::to_string(blades) + " x 2 blades");
 }
 
 // The tools the default route picks for the 2 x 9 impeller (tests/impeller check the choice).
@@ -85,14 +91,36 @@ void paths() {
                 a.check.holderCollisions);
 }
 
+// The wider families (the specs of cpp/tests/impeller/ImpellerFamiliesTest.cpp).
+void families() {
+    using aeronc::testparts::ImpellerSpec;
+    ImpellerSpec radial;
+    radial.wrapDeg = 0, radial.leanDeg = 0;
+    recognition(radial, "radial 2 x 9");
+    ImpellerSpec seam;
+    seam.hubSpline = true, seam.seamAcrossBlade = true;
+    recognition(seam, "seam 2 x 9");
+    ImpellerSpec pump;
+    pump.pumpPlate = true, pump.splitters = false, pump.bladeCount = 6, pump.wrapDeg = 0, pump.leanDeg = 0;
+    pump.filletRadius = 0, pump.boreDiameter = 16, pump.leadingRadius = 16, pump.bladeHeight = 14;
+    recognition(pump, "pump 6 radial");
+    pump.bladeCount = 9, pump.wrapDeg = 25, pump.filletRadius = 1.5;
+    recognition(pump, "pump 9 curved");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<int> sizes{5, 7, 9};
-    bool withPaths = true;
+    bool withPaths = true, withFamilies = false;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--blades") == 0 && i + 1 < argc) sizes = {std::stoi(argv[++i])};
         else if (std::strcmp(argv[i], "--no-paths") == 0) withPaths = false;
+        else if (std::strcmp(argv[i], "--families") == 0) withFamilies = true;
+    }
+    if (withFamilies) {
+        families();
+        return 0;
     }
     std::printf("impeller recognition (target: 2 x 9 blades under 1 s)\n");
     for (int n : sizes) run(n);

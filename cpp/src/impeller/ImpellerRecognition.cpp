@@ -27,6 +27,7 @@
 #include <Bnd_Box.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepTools.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <ElCLib.hxx>
 #include <gp_Cylinder.hxx>
@@ -59,7 +60,23 @@ struct Axis {
     }
 };
 
-// A concave cylinder: its outward normal points towards its own axis.
+// Whether two faces share an edge running along dir (a ruling of a cylinder with that axis), as
+// a root fillet meets its wall and hub; a bore meets its end rounds along circles instead.
+bool meetAlongRuling(const TopoDS_Face& a, const TopoDS_Face& b, const gp_Dir& dir) {
+    TopTools_IndexedMapOfShape edgesOfB;
+    TopExp::MapShapes(b, TopAbs_EDGE, edgesOfB);
+    for (TopExp_Explorer e(a, TopAbs_EDGE); e.More(); e.Next()) {
+        if (!edgesOfB.Contains(e.Current())) continue;
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        if (BRep_Tool::Degenerated(edge)) continue;
+        BRepAdaptor_Curve curve(edge);
+        const gp_Vec chord(curve.Value(curve.FirstParameter()), curve.Value(curve.LastParameter()));
+        if (chord.Magnitude() > 1e-6 && std::abs(chord.Normalized().Dot(gp_Vec(dir))) > 0.98) return true;
+    }
+    return false;
+}
+
+// A hole: a concave cylinder (its outward normal points towards its own axis) that is no blend.
 bool isHole(const FaceGraph& g, int f) {
     if (g[f].type != GeomAbs_Cylinder) return false;
     BRepAdaptor_Surface s(g[f].face);
@@ -74,7 +91,21 @@ bool isHole(const FaceGraph& g, int f) {
     gp_Vec n = du.Crossed(dv);
     if (g[f].face.Orientation() == TopAbs_REVERSED) n.Reverse();
     const gp_Vec r = a.radial(p);
-    return r.Magnitude() > 1e-9 && n.Dot(r) < 0;
+    if (r.Magnitude() <= 1e-9 || n.Dot(r) >= 0) return false;
+    // A concave cylinder tangent to two faces along its rulings is a blend: a root fillet between
+    // a plane wall and a plane hub (a straight blade on a pump's back plate), not a hole. A bore
+    // meets its end rounds along circles, and pieces of the same cylinder (a bore an exporter
+    // split at its seams) do not count.
+    const auto& nbs = g.neighbours(f);
+    return std::count_if(nbs.begin(), nbs.end(), [&](const Neighbour& nb) {
+               if (!nb.tangent) return false;
+               if (g[nb.face].type == GeomAbs_Cylinder) {
+                   const gp_Cylinder o = BRepAdaptor_Surface(g[nb.face].face).Cylinder();
+                   if (std::abs(o.Radius() - c.Radius()) <= 1e-6 && o.Axis().IsCoaxial(c.Axis(), 1e-6, 1e-6))
+                       return false;
+               }
+               return meetAlongRuling(g[f].face, g[nb.face].face, c.Axis().Direction());
+           }) < 2;
 }
 
 // Angle of p about the axis from a fixed reference direction, in [0, 2π).
@@ -180,6 +211,14 @@ void bladesOnHub(const FaceGraph& g, const Axis& axis, int m, const std::set<int
         rev[f] = t.known && t.largest <= kMeridianSine;
         round[f] = t.known && t.mean >= 0.5;
         wide[f] = rev[f] && angularSpan(g, f, axis) > 0.5 * pitch;
+    }
+    // A flat tip of a blade wrapped round more than half a pitch spans as much as a hub piece, but
+    // only its blade's walls bound it: a hub piece meets the rim, a nose or the back as well.
+    for (int f = 1; f <= n; ++f) {
+        if (!wide[f]) continue;
+        const auto& nbs = g.neighbours(f);
+        if (!nbs.empty() && std::none_of(nbs.begin(), nbs.end(), [&](const Neighbour& nb) { return usable[nb.face] && rev[nb.face]; }))
+            wide[f] = 0;
     }
     // The length of boundary each wide face shares with blade faces (not of revolution): the hub
     // carries the blades' roots; the back, the rim and a nose meet at most a blade's end.
@@ -292,7 +331,11 @@ ImpellerFeatures recogniseImpeller(const TopoDS_Shape& shape) {
             throw inputError(s.str());
         }
     }
-    std::set<int> holeSet(holes.begin(), holes.end()), planeSet(out.planes.begin(), out.planes.end());
+    // Planes across the axis (the back, a nose) are faces of revolution; a plane along it may be a
+    // blade's wall (straight radial blades), so it stays in its pattern.
+    std::set<int> holeSet(holes.begin(), holes.end()), planeSet;
+    for (int f : out.planes)
+        if (BRepAdaptor_Surface(g[f].face).Plane().Axis().Direction().IsParallel(axis.dir, 1e-3)) planeSet.insert(f);
     std::vector<std::vector<int>> groups;
     for (const auto& orbit : sym.orbits) {
         std::vector<int> grp;

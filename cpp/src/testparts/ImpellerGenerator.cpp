@@ -18,6 +18,11 @@
 // and so one fillet face more than its copies. The body is therefore revolved from the meridian
 // with the widest clearance to every blade footprint, and a spec whose blades leave none is
 // refused.
+// The wider families: a hub meridian interpolated by a B-spline (the hub one revolved B-spline
+// face), the hub's seam under blade 0 (its root edges and fillets split there, as a revolved hub
+// fused with blades comes from other CAD systems), straight radial blades (wrap 0: side walls
+// ruled between straight lines, planes without lean) and an open pump impeller (a flat back plate
+// from the bore to the rim whose top plane is the hub, no nose, a flat blade tip).
 // The truth follows every face through the operations' histories; the minimum channel width is
 // OCCT's distance between the wall faces of two adjacent blades of the finished part.
 #include <aeronc/testparts/ImpellerGenerator.h>
@@ -87,9 +92,22 @@ struct HubProfile {
         rho = zc - rimZ;
     }
     double z(double r) const { return zc - std::sqrt(rho * rho - (r - r2) * (r - r2)); }
-    // The arc raised by dz, as an edge in the XZ plane.
-    TopoDS_Edge edge(double dz) const {
+    // The arc raised by dz, as an edge in the XZ plane; with `spline`, a B-spline interpolating
+    // it (within 1e-7 mm).
+    TopoDS_Edge edge(double dz, bool spline = false) const {
         const double rm = 0.5 * (r1 + r2);
+        if (spline) {
+            constexpr int kPoints = 61;
+            Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, kPoints);
+            for (int i = 0; i < kPoints; ++i) {
+                const double r = r2 + (r1 - r2) * i / (kPoints - 1);
+                pts->SetValue(i + 1, gp_Pnt(r, 0, z(r) + dz));
+            }
+            GeomAPI_Interpolate in(pts, false, 1e-9);
+            in.Perform();
+            if (!in.IsDone()) throw geometryError("makeImpeller: hub meridian spline");
+            return BRepBuilderAPI_MakeEdge(in.Curve());
+        }
         Handle(Geom_TrimmedCurve) arc = GC_MakeArcOfCircle(gp_Pnt(r2, 0, rimZ + dz), gp_Pnt(rm, 0, z(rm) + dz),
                                                            gp_Pnt(r1, 0, zTop + dz))
                                             .Value();
@@ -163,6 +181,11 @@ struct Camber {
 BladeSection section(const Camber& c, double r0, double r1, double t) {
     const double h = t / 2;
     auto side = [&](double sign) {
+        if (c.wrap == 0) {  // a straight radial blade: its sides are straight lines
+            const gp_Vec n(-c.tangent(r0).Y(), c.tangent(r0).X(), 0);
+            return TopoDS_Edge(BRepBuilderAPI_MakeEdge(c.point(r0).Translated(n * (sign * h)),
+                                                       c.point(r1).Translated(n * (sign * h))));
+        }
         Handle(TColgp_HArray1OfPnt) pts = new TColgp_HArray1OfPnt(1, kCamberSamples);
         for (int i = 0; i < kCamberSamples; ++i) {
             const double r = r0 + (r1 - r0) * i / (kCamberSamples - 1);
@@ -216,6 +239,23 @@ TopoDS_Compound compoundOf(const std::vector<TopoDS_Shape>& shapes) {
 
 void checkSpec(const ImpellerSpec& s) {
     if (s.bladeCount < 3 || s.bladeCount > 40) fail("blade count must be 3 to 40");
+    if (s.pumpPlate) {
+        if (!(s.plateThickness > 0)) fail("the back plate's thickness must be positive");
+        if (s.hubSpline || s.seamAcrossBlade) fail("a pump impeller's hub is a plane: no hub spline, no seam");
+        if (!(s.boreDiameter > 0) || !(s.boreDiameter / 2 + 1 < s.leadingRadius))
+            fail("the bore must be narrower than the blades' inlet");
+        if (!(s.bladeThickness > 0) || !(s.bladeHeight > 0)) fail("blade thickness and height must be positive");
+        if (s.filletRadius < 0) fail("the fillet radius cannot be negative");
+        const double reach = s.bladeThickness / 2 + s.filletRadius;
+        if (!(s.leadingRadius - reach > s.boreDiameter / 2 + 0.5) || !(s.trailingRadius + reach < s.outerRadius - 0.5) ||
+            !(s.leadingRadius < s.trailingRadius))
+            fail("the blades with their fillets must stand on the plate (bore radius < leading < trailing < outer radius)");
+        if (!(s.splitterStart > 0 && s.splitterStart < 0.9)) fail("splitterStart must be between 0 and 0.9");
+        if (std::abs(s.wrapDeg) > 90 || std::abs(s.leanDeg) > 20) fail("wrap up to 90 and lean up to 20 degrees");
+        if (s.omitSplitter >= s.bladeCount || (s.omitSplitter >= 0 && !s.splitters))
+            fail("omitSplitter must name one of the splitters");
+        return;
+    }
     if (!(s.boreDiameter > 0) || s.boreDiameter / 2 >= s.noseRadius) fail("the bore must be narrower than the nose");
     if (!(s.noseRadius < s.outerRadius)) fail("the nose radius must be below the outer radius");
     if (!(s.rimHeight > 0 && s.rimHeight < s.noseHeight)) fail("the rim height must be between 0 and the nose height");
@@ -240,9 +280,12 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
     const int m = spec.bladeCount;
     const double pitch = 2 * kPi / m;
     const double rb = spec.boreDiameter / 2, t = spec.bladeThickness, h = spec.bladeHeight;
+    const bool pump = spec.pumpPlate;
     const HubProfile hub(spec.noseRadius, spec.noseHeight, spec.outerRadius, spec.rimHeight);
-    const double zBottom = spec.rimHeight / 2;               // blade sections: below the hub ...
-    const double zTopSection = spec.noseHeight + h + 2;      // ... and above the shroud
+    const double plateTop = spec.plateThickness;
+    auto hubZ = [&](double r) { return pump ? plateTop : hub.z(r); };
+    const double zBottom = pump ? plateTop / 2 : spec.rimHeight / 2;                   // blade sections: below the hub ...
+    const double zTopSection = (pump ? plateTop : spec.noseHeight) + h + 2;            // ... and above the shroud
     const double lean = spec.leanDeg * kDeg;
     const double splitR0 = spec.leadingRadius + spec.splitterStart * (spec.trailingRadius - spec.leadingRadius);
 
@@ -256,9 +299,10 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
             const Camber c{spec.leadingRadius, spec.trailingRadius, k * pitch + kind * pitch / 2, spec.wrapDeg * kDeg};
             const double r0 = kind ? splitR0 : spec.leadingRadius;
             for (int i = -2; i <= 42; ++i) {
-                const double r = std::clamp(r0 + (spec.trailingRadius - r0) * i / 40.0, spec.noseRadius, spec.outerRadius);
-                const double qHub = (hub.z(r) - zBottom) / (zTopSection - zBottom);
-                const double qTip = (hub.z(r) + h - zBottom) / (zTopSection - zBottom);
+                const double r = std::clamp(r0 + (spec.trailingRadius - r0) * i / 40.0, pump ? rb : spec.noseRadius,
+                                            spec.outerRadius);
+                const double qHub = (hubZ(r) - zBottom) / (zTopSection - zBottom);
+                const double qTip = (hubZ(r) + h - zBottom) / (zTopSection - zBottom);
                 const double mid = c.theta(std::clamp(r, r0, spec.trailingRadius));
                 const double half = std::asin(std::min(1.0, reach / r));
                 covered.push_back({mid + lean * std::min(qHub, qTip) - half, mid + lean * std::max(qHub, qTip) + half});
@@ -280,31 +324,46 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
     }
     if (best <= 0)
         fail("no meridian clear of the blades for the hub's seam: lower the wrap, lean, blade count or thickness");
+    // The shroud envelope keeps its seam clear (the blades' tips stay one face each); the body's
+    // may run under blade 0's middle, where the hub meets it.
+    double hubSeam = seam;
+    if (spec.seamAcrossBlade) {
+        const Camber c0{spec.leadingRadius, spec.trailingRadius, 0, spec.wrapDeg * kDeg};
+        const double rMid = 0.5 * (spec.leadingRadius + spec.trailingRadius);
+        hubSeam = c0.theta(rMid) + lean * (hubZ(rMid) - zBottom) / (zTopSection - zBottom);
+    }
 
-    // Body of revolution.
-    const gp_Pnt A(rb, 0, 0), B(spec.outerRadius, 0, 0), C(spec.outerRadius, 0, spec.rimHeight),
-        D(spec.noseRadius, 0, spec.noseHeight), E(rb, 0, spec.noseHeight);
-    TopoDS_Edge back = line(A, B), rim = line(B, C), hubArc = hub.edge(0), nose = line(D, E), bore = line(E, A);
-    BRepBuilderAPI_MakeFace bodyFace(wireOf({&back, &rim, &hubArc, &nose, &bore}), true);
-    gp_Trsf seamRot;
-    seamRot.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), seam);
-    const TopLoc_Location seamLoc(seamRot);
+    // Body of revolution (a pump impeller's: the plate, its top the hub, no nose).
+    const gp_Pnt A(rb, 0, 0), B(spec.outerRadius, 0, 0), C(spec.outerRadius, 0, pump ? plateTop : spec.rimHeight),
+        D(spec.noseRadius, 0, spec.noseHeight), E(rb, 0, pump ? plateTop : spec.noseHeight);
+    TopoDS_Edge back = line(A, B), rim = line(B, C), hubArc = pump ? line(C, E) : hub.edge(0, spec.hubSpline),
+                nose = pump ? TopoDS_Edge() : line(D, E), bore = line(E, A);
+    BRepBuilderAPI_MakeFace bodyFace(pump ? wireOf({&back, &rim, &hubArc, &bore})
+                                          : wireOf({&back, &rim, &hubArc, &nose, &bore}),
+                                     true);
+    auto turnAbout = [](double angle) {
+        gp_Trsf t;
+        t.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), angle);
+        return TopLoc_Location(t);
+    };
+    const TopLoc_Location seamLoc = turnAbout(seam), hubSeamLoc = turnAbout(hubSeam);
     const gp_Ax1 axis(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
     BRepPrimAPI_MakeRevol bodyRev(bodyFace.Face(), axis, 2 * kPi, true);  // copy: full history
     if (!bodyRev.IsDone()) broken("body of revolution");
-    const TopoDS_Shape body = bodyRev.Shape().Moved(seamLoc);
+    const TopoDS_Shape body = bodyRev.Shape().Moved(hubSeamLoc);
     auto sweptFace = [&](const TopoDS_Edge& e) {
         const TopTools_ListOfShape& g = bodyRev.Generated(e);
         if (g.Extent() != 1) broken("body face of a profile edge");
-        return g.First().Moved(seamLoc);
+        return g.First().Moved(hubSeamLoc);
     };
     const TopoDS_Shape backFace = sweptFace(back), rimFace = sweptFace(rim), hubFace = sweptFace(hubArc),
-                       noseFace = sweptFace(nose), boreFace = sweptFace(bore);
+                       noseFace = pump ? TopoDS_Shape() : sweptFace(nose), boreFace = sweptFace(bore);
 
     // Envelope under the shroud.
     const double rIn = 1, rOut = spec.outerRadius + 10, zLow = -1;
-    TopoDS_Edge shroudArc = hub.edge(h);
-    const gp_Pnt s0(spec.outerRadius, 0, spec.rimHeight + h), s1(spec.noseRadius, 0, spec.noseHeight + h);
+    const gp_Pnt s0(spec.outerRadius, 0, (pump ? plateTop : spec.rimHeight) + h),
+        s1(pump ? rb : spec.noseRadius, 0, (pump ? plateTop : spec.noseHeight) + h);
+    TopoDS_Edge shroudArc = pump ? line(s0, s1) : hub.edge(h, spec.hubSpline);
     TopoDS_Edge e1 = line(gp_Pnt(rIn, 0, zLow), gp_Pnt(rOut, 0, zLow)), e2 = line(gp_Pnt(rOut, 0, zLow), gp_Pnt(rOut, 0, s0.Z())),
                 e3 = line(gp_Pnt(rOut, 0, s0.Z()), s0), e4 = line(s1, gp_Pnt(rIn, 0, s1.Z())),
                 e5 = line(gp_Pnt(rIn, 0, s1.Z()), gp_Pnt(rIn, 0, zLow));
@@ -396,8 +455,14 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
                     if (f.IsSame(fusedWalls[i][w])) roots.push_back({e, i, w});
         }
     }
-    if (roots.size() != 4 * blades.size())
-        broken("expected 4 root edges per blade, found " + std::to_string(roots.size()));
+    // Four or more per blade: the hub's seam splits those of the blade it crosses, and OCCT's
+    // intersection may split the curve where a plane wall meets a torus hub.
+    std::vector<int> rootsOf(blades.size(), 0);
+    for (const auto& r : roots) ++rootsOf[r.blade];
+    for (size_t i = 0; i < blades.size(); ++i)
+        if (rootsOf[i] < 4) broken("blade " + std::to_string(i) + " has " + std::to_string(rootsOf[i]) + " root edges");
+    const int seamBlade = spec.seamAcrossBlade ? 0 : -1;
+    if (spec.seamAcrossBlade && rootsOf[0] == 4) broken("the hub's seam does not split blade 0's root");
 
     // Root fillets.
     std::unique_ptr<BRepFilletAPI_MakeFillet> fillet;
@@ -433,8 +498,9 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
     tr.hub = index(final(fusedHub, "hub"), "hub");
     tr.bore = index(final(image(fuse, boreFace, "bore"), "bore"), "bore");
     tr.rim = index(final(image(fuse, rimFace, "rim"), "rim"), "rim");
-    tr.planes = {index(final(image(fuse, noseFace, "nose"), "nose"), "nose"),
-                 index(final(image(fuse, backFace, "back"), "back"), "back")};
+    if (!pump) tr.planes.push_back(index(final(image(fuse, noseFace, "nose"), "nose"), "nose"));
+    tr.planes.push_back(index(final(image(fuse, backFace, "back"), "back"), "back"));
+    tr.seamBlade = seamBlade;
     std::vector<std::vector<TopoDS_Shape>> wallShapes(blades.size());
     for (size_t i = 0; i < blades.size(); ++i) {
         BladeTruth bt;
@@ -460,7 +526,7 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
         tr.blades.push_back(bt);
     }
     tr.boreDiameter = spec.boreDiameter;
-    tr.boreDepth = spec.noseHeight;
+    tr.boreDepth = pump ? plateTop : spec.noseHeight;
     tr.filletRadius = spec.filletRadius;
     tr.bladeHeight = h;
     tr.minChannelWidth = 1e300;
@@ -490,6 +556,7 @@ std::string truthToJson(const ImpellerTruth& t) {
                 {"bore", t.bore},
                 {"rim", t.rim},
                 {"planes", t.planes},
+                {"seamBlade", t.seamBlade},
                 {"blades", blades},
                 {"boreDiameter", t.boreDiameter},
                 {"boreDepth", t.boreDepth},
@@ -538,6 +605,11 @@ ImpellerSpec impellerSpecFromJson(const std::string& text) {
         else if (k == "wrapDeg") number(s.wrapDeg);
         else if (k == "leanDeg") number(s.leanDeg);
         else if (k == "filletRadius") number(s.filletRadius);
+        else if (k == "plateThickness") number(s.plateThickness);
+        else if (k == "hubSpline" || k == "seamAcrossBlade" || k == "pumpPlate") {
+            if (!v.is_boolean()) throw inputError("impeller spec: " + k + " must be true or false");
+            (k == "hubSpline" ? s.hubSpline : k == "seamAcrossBlade" ? s.seamAcrossBlade : s.pumpPlate) = v.get<bool>();
+        }
         else throw inputError("impeller spec: unknown key " + k);
     }
     return s;

@@ -26,6 +26,14 @@ struct ImpellerSpec {
     double leanDeg = 4;           // rotation of the top section about the axis: ruled, non-developable walls
     double filletRadius = 2;      // root fillet; 0 leaves the roots sharp
     int omitSplitter = -1;        // a defective part: this splitter left out (unequal blade groups)
+    // The wider families, as other CAD systems write impellers (the defaults keep the part above).
+    // wrapDeg 0 makes straight radial blades: their side walls are ruled between straight lines
+    // (planes when leanDeg is 0 too).
+    bool hubSpline = false;       // the hub meridian is a B-spline: the hub is one revolved B-spline face
+    bool seamAcrossBlade = false; // the hub's seam meridian runs under main blade 0 and splits its root
+    bool pumpPlate = false;       // open pump impeller: the blades stand on a flat back plate (no nose
+                                  // cone; the hub is the plate's top plane) and have a flat tip
+    double plateThickness = 8;    // the back plate of a pump impeller (pumpPlate)
 };
 
 // One blade's faces, numbered 1-based as TopExp::MapShapes(shape, TopAbs_FACE) numbers them
@@ -34,15 +42,16 @@ struct ImpellerSpec {
 struct BladeTruth {
     bool splitter = false;
     int pressure = 0, suction = 0, leading = 0, trailing = 0, shroud = 0;
-    std::vector<int> fillets;
+    std::vector<int> fillets;     // a blade that the hub's seam crosses has one or two more
     double angleDeg = 0;  // angle of the camber-line start about the axis
 };
 
 struct ImpellerTruth {
     int bladeCount = 0;
     int hub = 0, bore = 0, rim = 0;
-    std::vector<int> planes;          // nose top and back face
+    std::vector<int> planes;          // nose top and back face (a pump impeller: the back face only)
     std::vector<BladeTruth> blades;   // in angular order: main 0, splitter 0, main 1, ...
+    int seamBlade = -1;               // the blade (index into blades) whose root the hub's seam splits
     double boreDiameter = 0, boreDepth = 0, filletRadius = 0, bladeHeight = 0;
     // The narrowest gap between the side and edge walls of two adjacent blades, by OCCT's
     // distance between the blades' wall faces.
