@@ -14,6 +14,7 @@
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -160,6 +161,43 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
     double xmin = HUGE_VAL;
     for (const auto& p : floor->contour) xmin = std::min(xmin, p[0]);
     EXPECT_NEAR(xmin, 60, 0.02);
+}
+
+// A boss on a plate whose sides lean out as they rise (20 x 20 at the plate's top, 10, and
+// 24 x 24 at its own, 30: a drafted island wider at the top, as CTC-02's bosses round its
+// flange). A tool from above clearing the plate's top must keep off the boss's top edge: the
+// island of the region there is the boss seen from above, not its section at the slice (that
+// put the roughing 0.1 mm and the finishing 1.1 mm into CTC-02's bosses).
+TEST(Recognition, IslandWiderAtItsTopIsItsOutlineFromAbove) {
+    auto square = [](double half, double z) {
+        BRepBuilderAPI_MakePolygon p;
+        for (const gp_Pnt& q : {gp_Pnt(50 - half, 30 - half, z), gp_Pnt(50 + half, 30 - half, z),
+                                gp_Pnt(50 + half, 30 + half, z), gp_Pnt(50 - half, 30 + half, z)})
+            p.Add(q);
+        p.Close();
+        return p.Wire();
+    };
+    BRepOffsetAPI_ThruSections boss(true, true);
+    boss.AddWire(square(10, 10));
+    boss.AddWire(square(12, 30));
+    boss.Build();
+    ASSERT_TRUE(boss.IsDone());
+    const TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(100, 60, 10).Shape(), boss.Shape()).Shape();
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* flange = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 10) < 1e-6 && e.islands.size() == 1) flange = &e;
+    ASSERT_NE(flange, nullptr);
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    for (const auto& p : flange->islands[0])
+        x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+    EXPECT_LT(x0, 38 + 0.02);
+    EXPECT_GT(x1, 62 - 0.02);
+    EXPECT_LT(y0, 18 + 0.02);
+    EXPECT_GT(y1, 42 - 0.02);
+    // Not much wider than the top either.
+    EXPECT_GT(x0, 38 - 0.5);
+    EXPECT_LT(x1, 62 + 0.5);
 }
 
 // A slot whose floor rounds (R5, as deep as the slot is wide less its 3 mm floor) rise to 1 mm

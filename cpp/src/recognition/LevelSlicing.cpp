@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <map>
 
 namespace aeronc::recognition {
 using namespace ClipperLib;
@@ -113,6 +114,48 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     return out;
 }
 
+Paths LevelSlicing::overhangingMaterial(const VoidRegion& c, double z, double top) const {
+    const std::vector<FaceInSetup>& fs = view_.fs;
+    const double tol = 10 * view_.tol.linear;
+    if (!(top - z > 2 * tol)) return {};
+    // The faces bounding the region and its islands.
+    std::vector<int> bounding = c.contourFaces;
+    for (const SectionLoop* L : c.contourLoops)
+        for (int f : L->faces) pushUnique(bounding, f);
+    for (const SectionLoop* L : c.islandLoops)
+        if (L)
+            for (int f : L->faces) pushUnique(bounding, f);
+    // Height (rounded to 0.01 mm) -> boxes of the faces whose material is sampled there.
+    std::map<long long, Paths> boxesAt;
+    for (int f : bounding) {
+        const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
+        // A plane facing down leans over the region, widest at its top; a curved face (a drafted
+        // corner round) may lean either way: sampled through its height.
+        const bool facesDown = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) < 0;
+        if (!facesDown && s.att != Attitude::Curved) continue;
+        const double a = std::max(z, s.lo), b = std::min(top, s.hi);
+        if (!(b - a > 2 * tol)) continue;
+        P2 lo, hi;
+        view_.faceBox(f, lo, hi);
+        const Path box{toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})};
+        const int samples = facesDown ? 1 : 4;
+        for (int k = 0; k < samples; ++k) {
+            const double at = b - tol - (b - a - 2 * tol) * k / samples;
+            boxesAt[std::llround(at * 100)].push_back(box);
+        }
+    }
+    Paths out;
+    for (const auto& [key, boxes] : boxesAt) {
+        Clipper clip;
+        clip.AddPaths(materialAt(key / 100.0), ptSubject, true);
+        clip.AddPaths(boxes, ptClip, true);
+        Paths part;
+        clip.Execute(ctIntersection, part, pftEvenOdd, pftNonZero);
+        out.insert(out.end(), part.begin(), part.end());
+    }
+    return out;
+}
+
 Paths LevelSlicing::materialAt(double z) const {
     std::vector<std::string> ignored;
     const std::vector<SectionLoop> loops =
@@ -134,7 +177,9 @@ std::vector<VoidRegion> LevelSlicing::trimToReach(const VoidRegion& c, double h,
     // pocket the tool may clear down to its floor) keeps off it. No warning: a bevel or a round
     // falling past the floor is ordinary geometry.
     std::vector<int> leaningFaces;
-    const Paths leaning = leaningMaterial(c, low, z, leaningFaces);
+    Paths leaning = leaningMaterial(c, low, z, leaningFaces);
+    // Walls leaning over the region (an island wider at its top): their material at the top.
+    for (Path& p : overhangingMaterial(c, z, top)) leaning.push_back(std::move(p));
     // Material over the region starts above an underside between the slice and the top: a
     // plane facing down, an inclined plane (a dovetail) or a curved face (the vault of a hole
     // across the axis) ending there.

@@ -48,6 +48,11 @@ private:
     // zl and z, as paths; empty when none leans.
     // `leaning` receives those faces.
     ClipperLib::Paths leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const;
+    // The material that walls leaning over the region hold between the slice z and `top` (an
+    // island wider at its top than at the slice, a drafted boss, a dovetail side), within the
+    // boxes of those faces, as paths; empty when none leans over. A tool from above keeps off
+    // it all the way down.
+    ClipperLib::Paths overhangingMaterial(const VoidRegion& c, double z, double top) const;
     // How high the island around `hole` (one of c's region holes) stands, at most `top`.
     double islandTop(const VoidRegion& c, const ClipperLib::Path& hole, double top) const;
     // The part's section at height z: outer loops and holes, to be read even-odd.
