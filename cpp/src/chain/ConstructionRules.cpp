@@ -145,6 +145,16 @@ std::vector<RuleCheck> checkRules(const MachiningChain& c) {
                         done = true;
                 if (done) continue;
             }
+            // A roughing must-step no roughing tool fits (Fusing plans none): the floor unit,
+            // planned from the top (or above the roughing's floor allowance), clears its volume.
+            if (s.code == StepCode::Rough) {
+                bool cleared = false;
+                for (const MachiningUnit* u : ordered)
+                    if (u->element == e.id && u->operation == Operation::Pocket && u->step == StepCode::Web &&
+                        (u->top >= e.top - kEps || u->top > e.level + s.axialAllowance + kEps))
+                        cleared = true;
+                if (cleared) continue;
+            }
             fail("existence", nodes.element(e),
                  std::string("no enabled unit of the must-step ") + toString(s.code) + " (" + describe(s.code) +
                      ") machines element " + std::to_string(e.id));

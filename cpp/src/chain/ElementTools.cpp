@@ -96,6 +96,29 @@ int ElementTools::roughingTool(const DomainElement& e) const {
     return r;
 }
 
+// The offset the toolpath gives a pocket's boundary for tool `t` leaving `ar` (capped as
+// allowanceOf caps it), with toolpath::floorFilletOffset's growth where the floor fillet is
+// larger than the tool's corner plus the allowance; whether any centre is left inside it.
+bool ElementTools::reachesWith(const toolselect::PocketGeometry& g, const DomainElement& e, const Tool& t,
+                               double ar) const {
+    const double a = std::min(ar, opt_.allowanceRatio * t.diameter);
+    const double rf = std::max(0.0, e.floorFilletRadius);
+    const double fillet = rf > 0 ? std::max(0.0, rf - (t.cornerRadius + a)) : 0.0;
+    return toolselect::machinableRatio(g, t.radius() + a + fillet).eta > 0.0;
+}
+
+bool ElementTools::roughingReaches(const DomainElement& e, int r) const {
+    if (r < 0) return false;
+    if (e.type == ElementType::OpenPocket) return true;
+    const auto d = directions_.find(e.setup);
+    if (d == directions_.end()) return true;
+    try {
+        return reachesWith(toolselect::pocketGeometry(e, d->second), e, tool(r), roughingAllowance());
+    } catch (const Error&) {
+        return true;  // not measured: the toolpath judges
+    }
+}
+
 // The planner chose the roughing tool by eta without the step's radial allowance. When the
 // tool grown by the allowance reaches none of the region (a slot-like opening barely wider
 // than the tool), the largest roughing end mill that does; else the planned one.
@@ -104,9 +127,7 @@ int ElementTools::roughingToolWithAllowance(const DomainElement& e, int r, doubl
     const auto d = directions_.find(e.setup);
     if (d == directions_.end()) return r;
     const toolselect::PocketGeometry g = toolselect::pocketGeometry(e, d->second);
-    auto reaches = [&](const Tool& t) {
-        return toolselect::machinableRatio(g, t.radius() + std::min(ar, opt_.allowanceRatio * t.diameter)).eta > 0.0;
-    };
+    auto reaches = [&](const Tool& t) { return reachesWith(g, e, t, ar); };
     if (reaches(tool(r))) return r;
     int best = -1;
     for (std::size_t i = 0; i < plan_.tools.size(); ++i) {
@@ -171,6 +192,22 @@ std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const 
     if (step.code == StepCode::Web && !leave.fillet && t.cornerRadius > std::max(0.0, e.floorFilletRadius) + kTol)
         return who + " has a " + fmt(t.cornerRadius) + " mm corner radius, larger than the " +
                fmt(std::max(0.0, e.floorFilletRadius)) + " mm floor fillet of " + elementName(e);
+    // A floor pass clears the region the toolpath offsets by R + allowance: the narrowest width
+    // above is measured on the outline, the offset on the whole region, and only the latter
+    // tells whether the toolpath finds room for the tool's centre.
+    if (op == Operation::Pocket && step.code == StepCode::Web && e.type != ElementType::OpenPocket) {
+        const auto d = directions_.find(e.setup);
+        if (d != directions_.end()) {
+            bool reaches = true;
+            try {
+                reaches = reachesWith(toolselect::pocketGeometry(e, d->second), e, t, ar);
+            } catch (const Error&) {
+                // not measured: the toolpath judges
+            }
+            if (!reaches)
+                return who + " with " + fmt(ar) + " mm allowance leaves no room for its centre in " + elementName(e);
+        }
+    }
     return "";
 }
 

@@ -5,6 +5,7 @@
 // plan's best other tool where they do not fit.
 #include <aeronc/chain/Fusing.h>
 #include <aeronc/recognition/SetupFrame.h>
+#include <aeronc/toolselect/PocketGeometry.h>
 
 #include <algorithm>
 #include <limits>
@@ -84,6 +85,10 @@ public:
     // wider: the tool comes in from the open side, so the narrow width that chose a small
     // roughing tool does not bind it.
     int roughingTool(const recognition::DomainElement& e) const;
+    // Whether roughing tool `r`, grown by the rough step's radial allowance (and by what a floor
+    // fillet larger than its corner adds, as the toolpath offsets it), leaves a region for its
+    // centre in the closed element; open pockets are entered from their open side.
+    bool roughingReaches(const recognition::DomainElement& e, int r) const;
     // The element's one finishing tool for all its finishing steps; -1 with the reason in `why`.
     int finisher(const recognition::DomainElement& e, std::string& why);
     int floorTool(const recognition::DomainElement& e, const TemplateStep& step, std::string& why);
@@ -96,6 +101,8 @@ public:
 private:
     bool millingData(int i) const { return hasSetting(i, "roughing") || hasSetting(i, "finishing"); }
     int roughingToolWithAllowance(const recognition::DomainElement& e, int r, double ar) const;
+    bool reachesWith(const toolselect::PocketGeometry& g, const recognition::DomainElement& e,
+                     const toolselect::Tool& t, double ar) const;
     double roughingAllowance() const;
     int finishingTool(const recognition::DomainElement& e, std::string& why) const;
 

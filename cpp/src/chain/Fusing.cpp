@@ -267,6 +267,17 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 gap(why);
                 return;
             }
+            // No roughing end mill leaves room for its centre with the allowance (strokes of
+            // lettering narrower than the smallest tool plus twice its allowance): a roughing unit
+            // would get no toolpath and take the element's finishing units down with it. The
+            // finishing tool, when one fits, cuts the element alone.
+            if (op == Operation::Pocket && !tools_.roughingReaches(e, r)) {
+                std::string fwhy;
+                if (tools_.finisher(e, fwhy) < 0)
+                    gap(tools_.tool(r).id + " (D" + fmt(tools_.tool(r).diameter) + ") with its roughing allowance "
+                        "leaves no room for its centre in " + elementName(e) + (fwhy.empty() ? "" : "; " + fwhy));
+                return;
+            }
             MachiningUnit& u = addUnit(e, step, op, r, top, bottom);
             const toolselect::ElementChoice* c = tools_.choice(e.id);
             if (c && c->roughingTool == r) u.eta = c->ratio.eta;

@@ -143,10 +143,10 @@ TEST(ToolCrib, OneMillimetreDeepPocketIsFinishedWithTheOneMillimetreEndMill) {
 namespace {
 
 // Two closed pockets as grooves `width` wide and `depth` deep in a 9 mm plate, planned with the
-// shipped crib: each is machined (roughed and wall-finished) by units that fit the groove with
-// their allowance; unitCheck adds what the test asks of every unit.
+// shipped crib: each is machined (roughed, unless `roughed` is false, and wall-finished) by units
+// that fit the groove with their allowance; unitCheck adds what the test asks of every unit.
 void expectGroovesCut(double width, double depth, double cornerRadius, const char* kbName,
-                      const std::function<void(const MachiningUnit&)>& unitCheck) {
+                      const std::function<void(const MachiningUnit&)>& unitCheck, bool roughed = true) {
     testparts::PanelSpec s = pocketsOnly(9, 9 - depth, cornerRadius);
     s.ribThickness = 1.5;
     s.pitch = s.ribThickness + width;
@@ -158,7 +158,7 @@ void expectGroovesCut(double width, double depth, double cornerRadius, const cha
     for (const auto& e : tree.elements) {
         if (e.type != recognition::ElementType::ClosedPocket) continue;
         ++pockets;
-        EXPECT_NEAR(e.minWidth, width, 1e-2);  // measured on the faceted outline
+        EXPECT_NEAR(e.minWidth, width, 2e-2);  // measured on the faceted outline
         for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
         std::set<StepCode> steps;
         for (const MachiningUnit& u : c.units) {
@@ -167,7 +167,7 @@ void expectGroovesCut(double width, double depth, double cornerRadius, const cha
             unitCheck(u);
             EXPECT_LE(u.cutter.diameter + 2 * u.radialAllowance, e.minWidth + 1e-6) << toString(u.step) << " " << u.tool;
         }
-        EXPECT_TRUE(steps.count(StepCode::Rough));
+        EXPECT_EQ(steps.count(StepCode::Rough), roughed ? 1u : 0u);
         EXPECT_TRUE(steps.count(StepCode::FinishWall));
     }
     EXPECT_EQ(pockets, 2);
@@ -191,6 +191,16 @@ TEST(ToolCrib, LetteringNarrowerThanHalfAMillimetreIsCutWithTheMicroEndMill) {
     expectGroovesCut(0.36, 0.5, 0.12, "crib_lettering", [](const MachiningUnit& u) {
         EXPECT_LE(u.cutter.diameter, 0.3 + 1e-9) << toString(u.step) << " " << u.tool;
     });
+}
+
+// Lettering strokes 0.28 mm wide (milled_003's are 0.21 to 0.40 mm): the D0.2 micro end mill
+// with its roughing allowance (0.2 + 2 x 0.05 = 0.3 mm) fits in none and no smaller end mill
+// exists, so no roughing unit is planned (the toolpath would refuse it and take the finishing
+// units down with it); the finishing tool, which fits, cuts each stroke alone.
+TEST(ToolCrib, LetteringNarrowerThanTheRoughingAllowanceIsCutByTheFinishingToolAlone) {
+    expectGroovesCut(0.28, 0.5, 0.1, "crib_strokes", [](const MachiningUnit& u) {
+        EXPECT_LE(u.cutter.diameter, 0.2 + 1e-9) << toString(u.step) << " " << u.tool;
+    }, false);
 }
 
 namespace {
