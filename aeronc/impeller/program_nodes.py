@@ -107,9 +107,12 @@ def fill_blank(obj, c):
     obj.ProfileRadius = [float(v) for v in profile.get("radius", [])]
 
 
-def add_job(doc, part, blank):
+def add_job(doc, part, blank, frame=None):
+    """The Job of the impeller, its model placed on the setup (frame: setup_frame.placement)."""
     job = pathcompat.create_job(doc, [part], "Job")
     job.Label = "Job impeller ({})".format(part.Label)
+    if frame is not None:
+        pathcompat.set_model_placement(job, frame)
     for tc in pathcompat.tool_controllers(job):
         pathcompat.remove_tool_controller(doc, tc)
     pathcompat.set_job_stock_object(job, blank)

@@ -63,6 +63,8 @@ def check_posted(prog):
             cutters.append({"id": tool["id"], "number": int(tc.ToolNumber), "tipRadius": r, "taperDeg": 0,
                             "fluteLength": flutes, "shankRadius": r, "reach": max(tool["reach"], flutes),
                             "flat": True})
-    part = prog.Features.Source
+    # The program is in the Job's frame: checked against the Job's model, the part as placed there.
+    models = pathcompat.job_models(job)
+    shape = models[0].Shape if models else prog.Features.Source.Shape
     with from_core(ImpellerError, "checking {}".format(prog.Label)):
-        return json.loads(core_module().impeller_check_apt(part.Shape.exportBrepToString(), text, json.dumps(cutters)))
+        return json.loads(core_module().impeller_check_apt(shape.exportBrepToString(), text, json.dumps(cutters)))

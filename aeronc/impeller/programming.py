@@ -39,8 +39,8 @@ def create(doc, part_obj, allowance=2.0, material=MATERIAL, machine=MACHINE, kb_
     def work():
         group, nodes = add_features(doc, part_obj, c.result)
         blank = add_blank(doc, part_obj, c)
-        job = add_job(doc, part_obj, blank)
-        ops = add_operations(doc, job, c.steps, c.paths, c.cutting, c.result["axis"]["direction"])
+        job = add_job(doc, part_obj, blank, c.frame)
+        ops = add_operations(doc, job, c.steps, c.paths, c.cutting, c.setup_axis)
         prog = doc.addObject("App::FeaturePython", "ImpellerProgram")
         ImpellerProgram(prog)
         prog.Label = "Impeller program ({})".format(part_obj.Label)
@@ -89,7 +89,8 @@ def update(prog, edits=None, allowance=None, title="Edit impeller route", out_di
             else:
                 prog.Blank = add_blank(doc, part, c)
                 pathcompat.set_job_stock_object(job, prog.Blank)
-        ops = add_operations(doc, job, c.steps, c.paths, c.cutting, c.result["axis"]["direction"])
+        pathcompat.set_model_placement(job, c.frame)
+        ops = add_operations(doc, job, c.steps, c.paths, c.cutting, c.setup_axis)
         fill_program(prog, c, edits)
         for obj in ops:
             obj.Visibility = True

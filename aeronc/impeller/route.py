@@ -85,6 +85,8 @@ class Computed:
         self.cutting = {}       # tool id -> cutting data of its ToolController
         self.settings = {}
         self.seconds = {}       # stage -> seconds: recognise (with blank and route), toolpaths, cutting
+        self.frame = None       # FreeCAD.Placement of the setup (setup_frame.py): blank and paths are in it
+        self.setup_axis = (0.0, 0.0, 1.0)  # the impeller's axis in the setup frame
 
 
 def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACHINE, kb_path=None,
@@ -109,6 +111,14 @@ def compute(part_obj, allowance=2.0, edits=None, material=MATERIAL, machine=MACH
                                                       knowledge_base.sql_folder(), json.dumps(request)))
     c.cutting = {d["tool"]: d for d in c.paths.pop("cutting")}
     c.seconds.update(c.paths.pop("seconds"))
+    # The Job works in the setup frame: the impeller's axis along Z, the part on the table.
+    import FreeCAD
+    from aeronc.impeller import setup_frame
+    c.frame = setup_frame.placement(c.result["axis"], shape)
+    c.paths = setup_frame.paths_in(c.frame, c.paths)
+    c.blank = setup_frame.shape_in(c.frame, c.blank)
+    a = c.frame.Rotation.multVec(FreeCAD.Vector(*c.result["axis"]["direction"]))
+    c.setup_axis = (a.x, a.y, a.z)
     return c
 
 

@@ -171,6 +171,8 @@ def _pictures(out, part, prog, pathcompat):
     top = {"u": (1.0, 0.0, 0.0), "v": (0.0, 1.0, 0.0), "w": (0.0, 0.0, 1.0)}
     side = {"u": (1.0, 0.0, 0.0), "v": (0.0, 0.0, 1.0), "w": (0.0, -1.0, 0.0)}
     setups = []
+    models = pathcompat.job_models(prog.Job)  # the part as the Job holds it: the toolpaths' frame
+    placed = models[0].Shape if models else part.Shape
     for name, frame in (("along the axis", top), ("from the side", side)):
         toolpaths = []
         for op in pathcompat.job_operations(prog.Job):
@@ -182,7 +184,7 @@ def _pictures(out, part, prog, pathcompat):
                 v = x * frame["v"][0] + y * frame["v"][1] + z * frame["v"][2]
                 moves.append([kind, u, v, 0.0])
             toolpaths.append({"tool": "{} ({})".format(op.Operation.replace("_", " "), op.Tool), "moves": moves})
-        setups.append({"name": name, "edges": toolpath_picture.part_edges_in_frame(part.Shape, frame),
+        setups.append({"name": name, "edges": toolpath_picture.part_edges_in_frame(placed, frame),
                        "toolpaths": toolpaths})
     path = toolpath_picture.draw(setups, os.path.join(out, "toolpaths.png"),
                                  title="Tool tip paths over the part (the tool axis is on every move, not drawn)",

@@ -123,6 +123,25 @@ class SharedImpellerTest(unittest.TestCase):
         self.assertEqual(check["holderCollisions"], 0)
         self.assertEqual(check["linkCollisions"], 0)
 
+    def test_job_holds_the_impeller_on_its_setup(self):
+        # Exported with its axis along +Y: the Job's model stands on the table with the axis
+        # along Z, so every 5-axis move has its tool axis above the table (A within reach).
+        from aeronc import pathcompat
+        model = pathcompat.job_models(self.prog.Job)[0].Shape
+        self.assertAlmostEqual(model.BoundBox.ZMin, 0.0, delta=0.5)
+        bore = model.Faces[self.result["bore"] - 1].Surface
+        self.assertAlmostEqual(abs(bore.Axis.z), 1.0, places=9)
+        self.assertAlmostEqual(math.hypot(bore.Center.x, bore.Center.y), 0.0, places=6)
+        checked = 0
+        for op in pathcompat.job_operations(self.prog.Job):
+            if not op.Active or op.Operation not in ("rough_channels", "finish_blades", "finish_hub"):
+                continue
+            for cmd in op.Path.Commands:
+                if "W" in cmd.Parameters:
+                    self.assertGreater(cmd.Parameters["W"], 0.2, op.Label)
+                    checked += 1
+        self.assertGreater(checked, 100)
+
     def test_posted_840d_program_with_the_operations(self):
         posted = open(os.path.join(self.out, "IMPELLER.mpf")).read()
         self.assertIn("TRAORI", posted)
