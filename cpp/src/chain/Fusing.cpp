@@ -106,7 +106,7 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     if (e.type == ElementType::Opening && op == Operation::Profile)
         u.bottom = std::max(bottom - t.cornerRadius, std::min(u.bottom, top - t.usableLength()));
     const bool floorless = e.type == ElementType::Opening || e.type == ElementType::Hole;
-    u.radialAllowance = tools_.allowanceOf(step, t);
+    u.radialAllowance = tools_.allowanceOf(step, t, &e);
     u.axialAllowance = floorless ? 0.0 : step.axialAllowance;
     u.floorFilletRadius = floorless ? 0.0 : std::max(0.0, e.floorFilletRadius);
 
@@ -346,7 +346,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 // The finishing tool fits the corners; only passages narrower than it leave
                 // some of that to the wall steps.
                 if (passages) {
-                    const auto thin = toolselect::machinableRatio(g, ct.radius() + tools_.allowanceOf(step, ct));
+                    const auto thin = toolselect::machinableRatio(g, ct.radius() + tools_.allowanceOf(step, ct, &e));
                     rest -= thin.area - thin.machinableArea;
                     eta = thin.eta;
                 }

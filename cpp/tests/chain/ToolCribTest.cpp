@@ -203,6 +203,17 @@ TEST(ToolCrib, LetteringNarrowerThanTheRoughingAllowanceIsCutByTheFinishingToolA
     }, false);
 }
 
+// Strokes 0.22 mm wide (milled_003's narrowest are 0.213 to 0.23 mm): the D0.2 micro end mill
+// fits, but not with the floor step's allowance (0.2 + 2 x 0.025 = 0.25 mm). The finishing steps
+// leave, scaled alike, a quarter of the room the width leaves, so every step fits the stroke and
+// the walls are still finished last with none.
+TEST(ToolCrib, StrokesBarelyWiderThanTheSmallestEndMillAreFinishedWithTheRoomTheyLeave) {
+    expectGroovesCut(0.22, 0.5, 0.08, "crib_tight_strokes", [](const MachiningUnit& u) {
+        EXPECT_LE(u.cutter.diameter, 0.2 + 1e-9) << toString(u.step) << " " << u.tool;
+        if (u.step == StepCode::FinishWall) EXPECT_EQ(u.radialAllowance, 0.0);
+    }, false);
+}
+
 namespace {
 
 // The crib's end mills as the selector sees them (id, type, diameter, corner radius, reach).
