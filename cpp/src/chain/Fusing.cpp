@@ -271,6 +271,15 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             // lettering narrower than the smallest tool plus twice its allowance): a roughing unit
             // would get no toolpath and take the element's finishing units down with it. The
             // finishing tool, when one fits, cuts the element alone.
+            // An element no deeper than the floor allowance roughing leaves: it would cut nothing
+            // (the toolpath refuses it). The floor unit cuts it from the top.
+            if (op == Operation::Pocket && top - bottom <= step.axialAllowance + kTol) {
+                std::string fwhy;
+                if (tools_.finisher(e, fwhy) < 0)
+                    gap(elementName(e) + " is " + fmt(top - bottom) + " mm deep, no deeper than the roughing's " +
+                        fmt(step.axialAllowance) + " mm floor allowance" + (fwhy.empty() ? "" : "; " + fwhy));
+                return;
+            }
             if (op == Operation::Pocket && !tools_.roughingReaches(e, r)) {
                 std::string fwhy;
                 if (tools_.finisher(e, fwhy) < 0)
