@@ -12,7 +12,7 @@ namespace {
 constexpr double kOnContour = 0.1;  // mm: how far an open edge may stray from the contour
 }
 
-PocketArea pocketArea(const PocketUnit& unit, double extension) {
+PocketArea pocketArea(const PocketUnit& unit, double extension, bool openCorners) {
     const Loop contour = checkedLoop(unit.contour, "the contour");
     clip::Paths outer{clip::toPath(contour)};
     if (!ClipperLib::Orientation(outer[0])) ClipperLib::ReversePath(outer[0]);
@@ -39,12 +39,12 @@ PocketArea pocketArea(const PocketUnit& unit, double extension) {
         Point n{-(q[1] - p[1]) / len, (q[0] - p[0]) / len};
         const double probe = std::min(kOnContour * 2, len / 4);
         if (clip::contains(outer, {mid[0] + n[0] * probe, mid[1] + n[1] * probe})) n = {-n[0], -n[1]};
-        // Where two open edges meet at a convex corner (a pocket open on two sides of the blank),
-        // the space beyond the corner is open too: the rectangle runs on past that end, or the
-        // two rectangles would leave the corner's quadrant out and a tool wider than the pocket
-        // would find no room to pass round it.
+        // openCorners: where two open edges meet at a convex corner (a pocket open on two sides
+        // of the blank), the rectangle runs on past that end, or the two rectangles would leave
+        // the corner's quadrant out and a tool wider than the pocket could not pass round it.
         const Point t{(q[0] - p[0]) / len, (q[1] - p[1]) / len};
         auto beyond = [&](const Point& end, double sign) {
+            if (!openCorners) return 0.0;
             for (std::size_t j = 0; j < unit.openEdges.size(); ++j) {
                 if (j == i) continue;
                 const auto& other = unit.openEdges[j];
