@@ -271,20 +271,22 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             // lettering narrower than the smallest tool plus twice its allowance): a roughing unit
             // would get no toolpath and take the element's finishing units down with it. The
             // finishing tool, when one fits, cuts the element alone.
-            // An element no deeper than the floor allowance roughing leaves: it would cut nothing
-            // (the toolpath refuses it). The floor unit cuts it from the top.
-            if (op == Operation::Pocket && top - bottom <= step.axialAllowance + kTol) {
+            // No roughing unit where it would cut nothing or get no toolpath, and take the
+            // element's finishing units down with it: an element no deeper than the floor
+            // allowance roughing leaves, or one no roughing end mill leaves room for its centre in
+            // with the allowance (strokes of lettering narrower than the smallest tool plus twice
+            // its allowance). The finishing tool, when one fits, cuts the element alone (its floor
+            // unit from the top).
+            std::string noRoughing;
+            if (op == Operation::Pocket && top - bottom <= step.axialAllowance + kTol)
+                noRoughing = elementName(e) + " is " + fmt(top - bottom) + " mm deep, no deeper than the roughing's " +
+                             fmt(step.axialAllowance) + " mm floor allowance";
+            else if (op == Operation::Pocket && !tools_.roughingReaches(e, r))
+                noRoughing = tools_.tool(r).id + " (D" + fmt(tools_.tool(r).diameter) +
+                             ") with its roughing allowance leaves no room for its centre in " + elementName(e);
+            if (!noRoughing.empty()) {
                 std::string fwhy;
-                if (tools_.finisher(e, fwhy) < 0)
-                    gap(elementName(e) + " is " + fmt(top - bottom) + " mm deep, no deeper than the roughing's " +
-                        fmt(step.axialAllowance) + " mm floor allowance" + (fwhy.empty() ? "" : "; " + fwhy));
-                return;
-            }
-            if (op == Operation::Pocket && !tools_.roughingReaches(e, r)) {
-                std::string fwhy;
-                if (tools_.finisher(e, fwhy) < 0)
-                    gap(tools_.tool(r).id + " (D" + fmt(tools_.tool(r).diameter) + ") with its roughing allowance "
-                        "leaves no room for its centre in " + elementName(e) + (fwhy.empty() ? "" : "; " + fwhy));
+                if (tools_.finisher(e, fwhy) < 0) gap(noRoughing + (fwhy.empty() ? "" : "; " + fwhy));
                 return;
             }
             MachiningUnit& u = addUnit(e, step, op, r, top, bottom);

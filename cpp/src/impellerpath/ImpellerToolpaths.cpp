@@ -19,6 +19,33 @@
 
 namespace aeronc::impellerpath {
 
+namespace {
+
+// Runs `work` on every task, two threads taking the next in turn; then, in task order (so the
+// result does not depend on timing), rethrows a task's error or merges its check into `into`.
+template <class Task, class Work>
+void onTwoThreads(std::vector<Task>& tasks, CheckResult& into, const Work& work) {
+    std::atomic<size_t> next{0};
+    auto run = [&] {
+        for (size_t i; (i = next++) < tasks.size();) {
+            try {
+                work(tasks[i]);
+            } catch (...) {
+                tasks[i].error = std::current_exception();
+            }
+        }
+    };
+    std::thread second(run);
+    run();
+    second.join();
+    for (const Task& t : tasks) {
+        if (t.error) std::rethrow_exception(t.error);
+        merge(into, t.check);
+    }
+}
+
+}  // namespace
+
 double CutterShape::radiusAt(double h) const {
     return tipRadius + std::max(h, 0.0) * std::sin(taperDeg * kPi / 180);
 }
@@ -82,89 +109,50 @@ ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::Impe
     auto linksFor = [&](const CutterShape& c) { return Links{stock, stock.top() + c.tipRadius + opt.safeDistance, opt.rapidClearance}; };
     const Links roughLinks = linksFor(rougher), finishLinks = linksFor(finisher);
     const Links filletLinks = linksFor(fillets.cutter);
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t i; (i = next++) < tasks.size();) {
-            Task& t = tasks[i];
-            try {
-                const Channel ch = t.kind == kinds ? Channel(faces, f, 0, 2) : Channel(faces, f, t.kind);
-                if (t.op == 0) roughChannel(ch, rougher, opt, roughLinks, t.check, baseRough[t.kind]);
-                if (t.op == 1) finishHub(ch, finisher, d.filletRadius, opt, finishLinks, t.check, baseHub[t.kind]);
-                if (t.op == 2) {
-                    finishWall(ch, false, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
-                    finishWall(ch, true, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
-                }
-                if (t.op == 3) {
-                    finishFillet(ch, false, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
-                    finishFillet(ch, true, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
-                }
-            } catch (...) {
-                t.error = std::current_exception();
-            }
+    onTwoThreads(tasks, prog.check, [&](Task& t) {
+        const Channel ch = t.kind == kinds ? Channel(faces, f, 0, 2) : Channel(faces, f, t.kind);
+        if (t.op == 0) roughChannel(ch, rougher, opt, roughLinks, t.check, baseRough[t.kind]);
+        if (t.op == 1) finishHub(ch, finisher, d.filletRadius, opt, finishLinks, t.check, baseHub[t.kind]);
+        if (t.op == 2) {
+            finishWall(ch, false, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
+            finishWall(ch, true, finisher, opt, finishLinks, t.check, baseBlades[t.kind]);
         }
-    };
-    std::thread second(work);
-    work();
-    second.join();
-    for (const Task& t : tasks) {
-        if (t.error) std::rethrow_exception(t.error);
-        merge(prog.check, t.check);
-    }
-    // Every other channel: its kind's base turned by its pattern step, then placed again against
-    // its own blades and hub, since exported blades are not exact copies (a turned position may
-    // gouge or touch there): each (channel, operation, base) in turn on the two threads.
-    std::vector<std::vector<Move>>* byOp[4] = {&baseRough, &baseHub, &baseBlades, &baseFillets};
+        if (t.op == 3) {
+            finishFillet(ch, false, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
+            finishFillet(ch, true, fillets.cutter, d.filletRadius, opt, filletLinks, t.check, baseFillets[t.kind]);
+        }
+    });
+    // The program's pieces in angular order (each channel's operations, the inducer ahead of a
+    // main blade's channel after it). The base channels' pieces are their own moves; every other
+    // channel's are its kind's turned by its pattern step and placed again against its own blades
+    // and hub, since exported blades are not exact copies (a turned position may gouge or touch).
+    const std::vector<std::vector<Move>>* byOp[4] = {&baseRough, &baseHub, &baseBlades, &baseFillets};
     const CutterShape* cutterOf[4] = {&rougher, &finisher, &finisher, &fillets.cutter};
     const Links* linksOf[4] = {&roughLinks, &finishLinks, &finishLinks, &filletLinks};
-    struct Turned {
+    Operation* opOf[4] = {&rough, &hub, &blades, &fillets};
+    struct Piece {
         int channel, op, base;
         CheckResult check;
         std::vector<Move> moves;
         std::exception_ptr error;
     };
-    std::vector<Turned> turned;
-    for (int c = kinds; c < channels; ++c)
-        for (int op = 0; op < 4; ++op)
-            for (int b : {c % kinds, kinds})
-                if ((b < kinds || (c % kinds == 0 && bases > kinds)) && !(*byOp[op])[b].empty())
-                    turned.push_back({c, op, b, {}, {}, nullptr});
-    next = 0;
-    auto placeAgain = [&] {
-        for (size_t i; (i = next++) < turned.size();) {
-            Turned& t = turned[i];
-            try {
-                const Channel ch = t.base == kinds ? Channel(faces, f, t.channel, t.channel + 2) : Channel(faces, f, t.channel);
-                Checker check{ch, *cutterOf[t.op], opt, t.check, t.op == 0 ? opt.roughAllowance : 0.0};
-                placeTurned((*byOp[t.op])[t.base], (t.channel / kinds) * pitch, check, *linksOf[t.op], t.moves);
-            } catch (...) {
-                t.error = std::current_exception();
-            }
-        }
-    };
-    std::thread other(placeAgain);
-    placeAgain();
-    other.join();
-    for (const Turned& t : turned) {
-        if (t.error) std::rethrow_exception(t.error);
-        merge(prog.check, t.check);
-    }
-    // The channels in angular order; the inducer ahead of a main blade's channel follows it.
-    Operation* opOf[4] = {&rough, &hub, &blades, &fillets};
+    std::vector<Piece> pieces;
     for (int c = 0; c < channels; ++c)
         for (int op : {0, 2, 1, 3})
-            for (int b : {c % kinds, kinds}) {
-                if (b == kinds && !(c % kinds == 0 && bases > kinds)) continue;
-                const std::vector<Move>* moves = &(*byOp[op])[b];
-                if (c >= kinds) {
-                    if (moves->empty()) continue;
-                    // turned[] holds the tasks in (channel, op, base) order; assembly takes them
-                    // in (channel, rough/blades/hub/fillets, base) order: find this one.
-                    auto it = std::find_if(turned.begin(), turned.end(),
-                                           [&](const Turned& t) { return t.channel == c && t.op == op && t.base == b; });
-                    moves = &it->moves;
-                }
-                opOf[op]->moves.insert(opOf[op]->moves.end(), moves->begin(), moves->end());
-            }
+            for (int b : {c % kinds, kinds})
+                if ((b < kinds || (c % kinds == 0 && bases > kinds)) && !(*byOp[op])[b].empty())
+                    pieces.push_back({c, op, b, {}, {}, nullptr});
+    onTwoThreads(pieces, prog.check, [&](Piece& p) {
+        const std::vector<Move>& base = (*byOp[p.op])[p.base];
+        if (p.channel < kinds) {
+            p.moves = base;  // checked where it was made
+            return;
+        }
+        const Channel ch = p.base == kinds ? Channel(faces, f, p.channel, p.channel + 2) : Channel(faces, f, p.channel);
+        Checker check{ch, *cutterOf[p.op], opt, p.check, p.op == 0 ? opt.roughAllowance : 0.0};
+        placeTurned(base, (p.channel / kinds) * pitch, check, *linksOf[p.op], p.moves);
+    });
+    for (const Piece& p : pieces) opOf[p.op]->moves.insert(opOf[p.op]->moves.end(), p.moves.begin(), p.moves.end());
     prog.operations = {rough, blades, hub};
     if (cutters.filletBall) prog.operations.push_back(fillets);
     return prog;

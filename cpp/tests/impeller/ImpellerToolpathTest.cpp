@@ -124,6 +124,17 @@ struct Programmed {
     }
 };
 
+// The program's moves checked again against the whole part: as many positions as the toolpaths'
+// own check measured (every channel's), no gouge, no holder collision.
+void expectEveryChannelCleanReadBack(const Programmed& s, const ImpellerProgram& prog) {
+    std::vector<std::pair<CutterShape, std::vector<Move>>> ops;
+    for (const auto& op : prog.operations) ops.push_back({op.cutter, op.moves});
+    const auto again = checkProgram(s.part.shape, s.features, ops);
+    EXPECT_EQ(again.positions, prog.check.positions);
+    EXPECT_LE(again.maxGouge, kGougeLimit) << again.worstAt[0] << " " << again.worstAt[1] << " " << again.worstAt[2];
+    EXPECT_EQ(again.holderCollisions, 0);
+}
+
 PathOptions quick() {
     PathOptions o;
     o.stations = 6;
@@ -148,12 +159,7 @@ TEST(ImpellerToolpaths, EveryChannelPlacedOnItsOwnBlades) {
     PathOptions o;
     o.stations = 6;
     const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, s.rougher, s.finisher, o);
-    std::vector<std::pair<CutterShape, std::vector<Move>>> ops;
-    for (const auto& op : prog.operations) ops.push_back({op.cutter, op.moves});
-    const auto again = checkProgram(s.part.shape, s.features, ops);
-    EXPECT_EQ(again.positions, prog.check.positions);
-    EXPECT_LE(again.maxGouge, kGougeLimit) << again.worstAt[0] << " " << again.worstAt[1] << " " << again.worstAt[2];
-    EXPECT_EQ(again.holderCollisions, 0);
+    expectEveryChannelCleanReadBack(s, prog);
     EXPECT_LE(prog.check.maxGouge, kGougeLimit);
     EXPECT_EQ(prog.check.holderCollisions, 0);
     // The channels beside the blade are 0.28 mm narrower or wider at most: stepping back absorbs
@@ -181,12 +187,7 @@ TEST(ImpellerToolpaths, HubInPiecesAcrossTheChannels) {
     PathOptions o;
     o.stations = 6;
     const auto prog = impellerToolpaths(s.part.shape, s.features, s.dims, s.rougher, s.finisher, o);
-    std::vector<std::pair<CutterShape, std::vector<Move>>> ops;
-    for (const auto& op : prog.operations) ops.push_back({op.cutter, op.moves});
-    const auto again = checkProgram(s.part.shape, s.features, ops);
-    EXPECT_EQ(again.positions, prog.check.positions);
-    EXPECT_LE(again.maxGouge, kGougeLimit) << again.worstAt[0] << " " << again.worstAt[1] << " " << again.worstAt[2];
-    EXPECT_EQ(again.holderCollisions, 0);
+    expectEveryChannelCleanReadBack(s, prog);
 }
 
 TEST(ImpellerToolpaths, NoGougeNoCollisionPostedUnderTraori) {
