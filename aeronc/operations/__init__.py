@@ -6,7 +6,7 @@
   profile                passes along a drive loop (walls, outer contours, open edges)
   drilling               G81/G82/G83 drill cycles
   helical_interpolation  holes milled down a helix with an end mill
-  chamfer                a chamfer mill's pass along an edge (countersinks)
+  chamfer                a chamfer mill's pass along an edge (countersinks, chamfers along outlines)
 
 They are Path::FeaturePython objects with a Path, in a Job's Operations group: FreeCAD's post
 framework, the Job's commands and the 3-D view treat them like Path's own operations.

@@ -1,9 +1,11 @@
-"""Chamfer: one pass of a chamfer mill along an edge, its cone on the chamfer (a countersink).
+"""Chamfer: one pass of a chamfer mill along an edge, its cone on the chamfer (a countersink, or a
+chamfer along a pocket's outline).
 
 The chain gives the drive loop (the chamfer's lower line: the edge of the hole under a
-countersink), the tip's height (the unit's bottom) and how far from the loop the mill's axis runs
-(edgeOffset: the tip's radius and its clearance off the wall, toolselect/EdgeTools.h). The pass is
-the profile generator's, for a cutter whose radius is that offset: its path is the axis's path.
+countersink, or the pocket's outline with its open edges), the tip's height (the unit's bottom)
+and how far from the loop the mill's axis runs (edgeOffset: the tip's radius and its clearance
+off the wall, toolselect/EdgeTools.h). The pass is the profile generator's, for a cutter whose
+radius is that offset: its path is the axis's path.
 """
 from aeronc.operations.base import CLEARANCE, SAFE, unit_of
 from aeronc.operations.profile import Profile

@@ -437,12 +437,10 @@ MachiningUnit& Fuser::addEdgeUnit(const DomainElement& e, const toolselect::Edge
     return chain_.units.back();
 }
 
-// Countersinks of the holes the chain made: a pass of a chamfer mill round the hole's edge, its
-// cone on the countersink (toolselect/EdgeTools.h).
+// Chamfers along an element's outer loop and countersinks of the holes the chain made: a pass
+// of a chamfer mill along the edge, its cone on the chamfer (toolselect/EdgeTools.h).
 void Fuser::makeEdgeUnits(const DomainElement& e) {
     ElementState& st = state_[e.id];
-    // Chamfers along a pocket's edges are not cut yet (the pass must follow only the chamfered
-    // stretches of a loop): listed with what they are and the mill that would cut them.
     for (const recognition::AttachedFeature& a : e.attached) {
         if (a.kind != "chamfer" || a.faces.empty()) continue;
         if (!(a.angle > 0 && a.size > 0)) {
@@ -455,11 +453,34 @@ void Fuser::makeEdgeUnits(const DomainElement& e) {
         need.width = a.size;
         need.height = a.size / std::tan(a.angle / 2 * M_PI / 180);
         const toolselect::EdgeToolChoice c = toolselect::chamferTool(opt_.edgeTools, need);
-        st.chamferWhy = " (" + fmt(0.5 * (180 - a.angle)) + " degrees to the top, up to " + fmt(a.size) +
-                        " mm wide) along the element's edges are not cut: the edge step cuts countersinks only; " +
-                        (c.tool ? "chamfer mill " + c.tool->id + " (" + fmt(c.tool->includedAngle) + " degrees, D" +
-                                      fmt(c.tool->diameter) + ") would fit them"
-                                : c.why);
+        const std::string what = " (" + fmt(0.5 * (180 - a.angle)) + " degrees to the top, up to " + fmt(a.size) +
+                                 " mm wide) along the element's edges are not cut: ";
+        const std::string mill = c.tool ? "chamfer mill " + c.tool->id + " (" + fmt(c.tool->includedAngle) +
+                                              " degrees, D" + fmt(c.tool->diameter) + ")"
+                                        : std::string();
+        std::string why;
+        if (!c.tool) why = c.why;
+        else if (!a.alongContour || e.type == ElementType::Hole || e.contour.size() < 3)
+            why = "the edge step cuts a chamfer only where it runs at one width along every wall of the element's "
+                  "outer loop; " + mill + " would fit them";
+        else if (!st.steps.count(StepCode::FinishWall) && !st.steps.count(StepCode::FinishFlange))
+            why = "the walls under them are not finished; " + mill + " would fit them";
+        else if (!(c.tool->spindleRpm > 0))
+            why = mill + " has no cutting data in " + opt_.material;
+        if (!why.empty()) {
+            st.chamferWhy = what + why;
+            continue;
+        }
+        // The pass follows the loop's walls (not its stretches open to the blank), the axis
+        // inside them; the chamfer rises from its lower line, where the walls end.
+        const toolselect::ChamferPass pass = toolselect::chamferPass(*c.tool);
+        const double top = a.lower + need.height, bottom = a.lower - pass.tipBelow;
+        MachiningUnit& u = addEdgeUnit(e, *c.tool, top, bottom, pass.offset);
+        outlineUnit(u, e, tools_.frameOf(e.setup), top, top, bottom);
+        u.islands.clear(), u.islandTops.clear(), u.holes.clear();
+        u.note = "chamfer " + fmt(0.5 * (180 - a.angle)) + " degrees to the top, " + fmt(a.size) +
+                 " mm wide, along the element's outer loop";
+        st.chamfered = true;
     }
     if (!e.hole || !(e.hole->countersinkDiameter > 0)) return;
     const recognition::HoleInfo& h = *e.hole;

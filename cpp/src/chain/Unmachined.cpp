@@ -50,7 +50,7 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
                        {}});
     const bool countersunk = std::any_of(e.attached.begin(), e.attached.end(),
                                          [](const recognition::AttachedFeature& a) { return a.kind == "countersink"; });
-    if (!e.chamferFaces.empty() && !countersunk)
+    if (!e.chamferFaces.empty() && !countersunk && !st.chamfered)
         listFaces(e,
                   std::to_string(e.chamferFaces.size()) + " chamfer face(s)" +
                       (st.chamferWhy.empty() ? std::string(" need a chamfer tool; the chain has none") : st.chamferWhy),

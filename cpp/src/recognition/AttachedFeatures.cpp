@@ -86,6 +86,7 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
             // The mill's included angle is twice the planes' angle to the axis; their width across
             // the axis is their height over the tangent of their normal's angle to it.
             double angle = -1;
+            double narrowest = kInf, lowest = kInf, highest = -kInf;  // width; lower line's height
             for (int f : e.chamferFaces) {
                 const FaceInfo& cf = faces[f - 1];
                 const FaceInSetup& s = fs[static_cast<std::size_t>(f - 1)];
@@ -95,12 +96,32 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
                     continue;
                 }
                 const double beta = std::acos(c);
-                a.size = std::max(a.size, (s.hi - s.lo) / std::tan(beta));
+                const double width = (s.hi - s.lo) / std::tan(beta);
+                a.size = std::max(a.size, width);
+                narrowest = std::min(narrowest, width);
+                lowest = std::min(lowest, s.lo), highest = std::max(highest, s.lo);
                 const double included = 180 - 2 * beta * 180 / M_PI;
                 if (angle < 0) angle = included;
                 else if (std::fabs(angle - included) > 0.1) angle = 0;
             }
             a.angle = std::max(0.0, angle);
+            // One pass along the outer loop cuts the chamfer only if it runs there at one width
+            // from one line, on every wall of the loop (each ending at that line) and on no
+            // island: elsewhere the mill's cone would cut a chamfer the part does not have.
+            constexpr double kSameWidth = 0.01;  // mm
+            const std::set<int> chamfers(e.chamferFaces.begin(), e.chamferFaces.end());
+            auto meetsChamfer = [&](int w) {
+                for (int n : faces[w - 1].neighbours)
+                    if (chamfers.count(n + 1)) return true;
+                return false;
+            };
+            bool along = a.angle > 0 && a.size - narrowest <= kSameWidth && highest - lowest <= tol &&
+                         !e.contourFaces.empty();
+            for (int w : e.contourFaces)
+                along = along && meetsChamfer(w) && std::fabs(fs[static_cast<std::size_t>(w - 1)].hi - lowest) <= tol;
+            for (const auto& isl : e.islandFaces)
+                for (int w : isl) along = along && !meetsChamfer(w);
+            if (along) a.alongContour = true, a.lower = lowest;
             e.attached.push_back(a);
         }
         // Island tops: faces normal to the axis on top of the island walls.

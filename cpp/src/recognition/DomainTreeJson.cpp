@@ -63,6 +63,10 @@ std::string toJson(const DomainTree& t, int indent) {
             o["attached"].push_back(
                 {{"kind", a.kind}, {"faces", a.faces}, {"radius", a.radius}, {"size", a.size}, {"element", a.element}});
             if (a.angle > 0) o["attached"].back()["angle"] = a.angle;
+            if (a.alongContour) {
+                o["attached"].back()["lower"] = a.lower;
+                o["attached"].back()["alongContour"] = true;
+            }
         }
         if (e.hole) {
             const HoleInfo& h = *e.hole;
@@ -249,6 +253,10 @@ DomainElement element(const Field& f) {
         x.size = a["size"].number();
         x.element = a["element"].integer();
         if (a.has("angle")) x.angle = a["angle"].number();  // chamfers, since the edge step
+        if (a.has("alongContour")) {                          // chamfers the edge step cuts
+            x.alongContour = a["alongContour"].boolean();
+            x.lower = a["lower"].number();
+        }
         return x;
     });
     const Field h = f["hole"];

@@ -1,7 +1,8 @@
-// Chamfer mills for countersinks (docs/edges.md): the choice of a mill by included angle, cover
-// and tip (toolselect/EdgeTools.h), the shipped crib's edge tools, and the edge units the chain
-// makes on a generated panel whose countersunk bolt holes are known by construction (hole 6.6 mm,
-// countersink 12 mm at 90 degrees).
+// Chamfer mills for countersinks and pocket chamfers (docs/edges.md): the choice of a mill by
+// included angle, cover and tip (toolselect/EdgeTools.h), the shipped crib's edge tools, and the
+// edge units the chain makes on a generated panel whose countersunk bolt holes are known by
+// construction (hole 6.6 mm, countersink 12 mm at 90 degrees) and on a pocket whose mouth is
+// chamfered all round or on two sides.
 #include "Fixtures.h"
 
 #include <aeronc/brep/PartIO.h>
@@ -149,8 +150,8 @@ TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
 namespace {
 
 // A 100 x 60 x 20 block with a 60 x 30 x 10 pocket whose mouth carries a 45 degree x 2 mm
-// chamfer all round (four planes: the pocket's corners are sharp).
-TopoDS_Shape chamferedPocket() {
+// chamfer all round (four planes: the pocket's corners are sharp), or along its long sides only.
+TopoDS_Shape chamferedPocket(bool allRound = true) {
     TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
     TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
     TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
@@ -163,7 +164,8 @@ TopoDS_Shape chamferedPocket() {
         auto onMouth = [](const gp_Pnt& r) {
             return std::abs(r.Z() - 20) < 1e-6 && r.X() > 19 && r.X() < 81 && r.Y() > 14 && r.Y() < 46;
         };
-        if (onMouth(p) && onMouth(q)) ch.Add(2, edge);
+        const bool longSide = std::abs(p.Y() - q.Y()) < 1e-6;
+        if (onMouth(p) && onMouth(q) && (allRound || longSide)) ch.Add(2, edge);
     }
     ch.Build();
     return ch.Shape();
@@ -171,9 +173,11 @@ TopoDS_Shape chamferedPocket() {
 
 }  // namespace
 
-// Recognition measures the chamfer (90 degree mill, 2 mm wide); the chain, which cuts
-// countersinks only, lists its faces with what they are and the crib's mill that would cut them.
-TEST(EdgeTools, PocketMouthChamferIsMeasuredAndListedWithTheMillThatFits) {
+// Recognition measures the chamfer (90 degree mill, 2 mm wide, rising from the walls' top at
+// z = 18); the chain cuts it after the walls are finished with the crib's mill that fits
+// (CM-90-D6: tip 0.5 mm) along the pocket's outline: the axis 0.25 + 0.2 mm inside the walls,
+// the tip 0.2 mm under the chamfer's lower line, and lists nothing of it.
+TEST(EdgeTools, PocketMouthChamferIsCutAlongTheOutlineByTheMillThatFits) {
     recognition::RecogniseOptions o;
     o.directions = {{0, 0, 1}};
     const auto tree = recognition::recognise(validatedSolid(chamferedPocket(), "chamfered pocket"), o);
@@ -186,22 +190,84 @@ TEST(EdgeTools, PocketMouthChamferIsMeasuredAndListedWithTheMillThatFits) {
     EXPECT_EQ(chamfer->faces.size(), 4u);
     EXPECT_NEAR(chamfer->angle, 90, 1e-6);
     EXPECT_NEAR(chamfer->size, 2, 1e-6);
-    // The angle and width survive the tree's JSON.
+    EXPECT_TRUE(chamfer->alongContour);
+    EXPECT_NEAR(chamfer->lower, 18, 1e-6);
+    // What the edge step needs survives the tree's JSON.
     const auto back = recognition::fromJson(recognition::toJson(tree));
     bool kept = false;
     for (const auto& e : back.elements)
         for (const auto& a : e.attached)
-            if (a.kind == "chamfer") kept = std::abs(a.angle - 90) < 1e-9 && std::abs(a.size - 2) < 1e-9;
+            if (a.kind == "chamfer")
+                kept = std::abs(a.angle - 90) < 1e-9 && std::abs(a.size - 2) < 1e-9 && a.alongContour &&
+                       std::abs(a.lower - 18) < 1e-9;
     EXPECT_TRUE(kept);
 
     const test::KbDir dir("edge_pocket");
     const auto kb = dir.open();
     const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    for (const Unmachined& m : c.unmachined)
+        EXPECT_EQ(m.reason.find("chamfer"), std::string::npos) << "element " << m.element << ": " << m.reason;
+    const MachiningUnit* edge = nullptr;
+    const MachiningUnit* wall = nullptr;
+    for (const MachiningUnit& u : c.units) {
+        if (u.element != pocket->id) continue;
+        if (u.step == StepCode::Edge) edge = &u;
+        if (u.step == StepCode::FinishWall) wall = &u;
+    }
+    ASSERT_TRUE(edge);
+    ASSERT_TRUE(wall);
+    EXPECT_EQ(edge->operation, Operation::Chamfer);
+    EXPECT_EQ(edge->tool, "CM-90-D6");
+    EXPECT_EQ(edge->cutter.type, "chamfer");
+    EXPECT_DOUBLE_EQ(edge->cutter.includedAngle, 90);
+    EXPECT_NEAR(edge->top, 20, 1e-6);
+    EXPECT_NEAR(edge->bottom, 17.8, 1e-6);
+    EXPECT_NEAR(edge->edgeOffset, 0.45, 1e-12);
+    EXPECT_TRUE(edge->islands.empty());
+    EXPECT_TRUE(edge->openEdges.empty());
+    // The drive loop is the pocket's outline under the chamfer: the walls at x = 20, 80 and
+    // y = 15, 45, counter-clockwise.
+    ASSERT_GE(edge->contour.size(), 4u);
+    double area = 0;
+    for (std::size_t i = 0; i < edge->contour.size(); ++i) {
+        const Point2& p = edge->contour[i];
+        const Point2& q = edge->contour[(i + 1) % edge->contour.size()];
+        area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+        const double off = std::min({std::abs(p[0] - 20), std::abs(p[0] - 80), std::abs(p[1] - 15), std::abs(p[1] - 45)});
+        EXPECT_LT(off, 1e-6) << p[0] << " " << p[1];
+    }
+    EXPECT_NEAR(area, 60 * 30, 1e-6);
+    EXPECT_GT(edge->setting.spindleRpm, 0);
+    EXPECT_GT(edge->order, wall->order) << "the chamfer comes after the walls under it";
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
+}
+
+// Chamfered along two of its four walls only, a pass along the outline would cut the other two:
+// recognition says the chamfer does not run along the whole loop, and the chain lists its faces
+// with the crib's mill that would fit them.
+TEST(EdgeTools, ChamferAlongPartOfTheOutlineIsListedWithTheMillThatFits) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree = recognition::recognise(validatedSolid(chamferedPocket(false), "chamfered pocket"), o);
+    const recognition::AttachedFeature* chamfer = nullptr;
+    const recognition::DomainElement* pocket = nullptr;
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    ASSERT_TRUE(chamfer);
+    EXPECT_EQ(chamfer->faces.size(), 2u);
+    EXPECT_NEAR(chamfer->angle, 90, 1e-6);
+    EXPECT_FALSE(chamfer->alongContour);
+
+    const test::KbDir dir("edge_pocket_part");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    for (const MachiningUnit& u : c.units) EXPECT_NE(u.step, StepCode::Edge) << "unit " << u.id;
     const Unmachined* listed = nullptr;
     for (const Unmachined& m : c.unmachined)
         if (m.element == pocket->id && m.reason.find("chamfer face") != std::string::npos) listed = &m;
     ASSERT_TRUE(listed);
-    EXPECT_EQ(listed->faces.size(), 4u);
+    EXPECT_EQ(listed->faces.size(), 2u);
     EXPECT_NE(listed->reason.find("45 degrees to the top, up to 2 mm wide"), std::string::npos) << listed->reason;
     EXPECT_NE(listed->reason.find("CM-90-D6"), std::string::npos) << listed->reason;
 }

@@ -44,6 +44,11 @@ struct AttachedFeature {
     // degrees; 0 when its faces differ or face away from the setup. `size` is then its widest
     // width across the axis.
     double angle = 0;
+    // A chamfer: the height of its lower line (where it meets the walls) along the setup's axis,
+    // and whether it runs at one width along every wall of the element's outer loop and on no
+    // island: then one pass along the loop's walls cuts it.
+    double lower = 0;
+    bool alongContour = false;
     int element = -1;        // joggle: the child element forming it
 };
 
