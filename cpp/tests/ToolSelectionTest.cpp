@@ -106,6 +106,25 @@ TEST(ToolSelectionTest, DumbbellCorridorNarrowerThanTool) {
     EXPECT_NEAR(small.machinableArea, A - cornerLoss(8, 3), 2e-4 * A);
 }
 
+// A region deeper than every end mill reaches (the side of a part 300 mm high): listed with the
+// tool it would need and the longest reach the crib has.
+TEST(ToolSelectionTest, RegionDeeperThanEveryReachNamesTheReachItNeeds) {
+    Tool necked = endMill("F20x100", 20, 0, 30, 100);
+    necked.neckDiameter = 19;
+    const std::vector<Tool> tools = {endMill("F10", 10, 0, 22, 30), necked};
+    try {
+        roughingTool(pocket(rect(0, 0, 200, 60), 320, "element 7"), tools, 0.85);
+        FAIL() << "a 320 mm deep region took a tool";
+    } catch (const aeronc::Error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("pocket 'element 7'"), std::string::npos) << m;
+        EXPECT_NE(m.find("the longest reaches 100 mm"), std::string::npos) << m;
+        EXPECT_NE(m.find("it needs an end mill reaching 320 mm"), std::string::npos) << m;
+    }
+    // 90 mm: the necked D20 reaches it, its flutes (30 mm) being no limit.
+    EXPECT_EQ(roughingTool(pocket(rect(0, 0, 200, 60), 90), tools, 0.85)->id, "F20x100");
+}
+
 TEST(ToolSelectionTest, DeadEndSlotNarrowerThanTool) {
     // A 40 x 40 pocket with a 6 wide, 20 deep slot out of its right wall; tool diameter 10.
     const Loop outer = {{0, 0}, {40, 0}, {40, 17}, {60, 17}, {60, 23}, {40, 23}, {40, 40}, {0, 40}};

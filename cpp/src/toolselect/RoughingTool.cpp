@@ -57,9 +57,15 @@ const Tool* roughingTool(const PocketGeometry& pocket, const std::vector<Tool>& 
 
     std::ostringstream m;
     m << "pocket '" << pocket.name << "': no roughing tool reaches eta >= " << etaThreshold;
-    if (order.empty())
+    if (order.empty()) {
+        // What it would need, beside what the crib has: the longest end mill's reach.
+        double longest = 0;
+        for (const Tool& t : tools)
+            if (t.isEndMill()) longest = std::max(longest, t.usableLength());
         m << "; none of the " << tools.size() << " tools is an end mill reaching the depth " << pocket.depth
+          << " mm (the longest reaches " << longest << " mm): it needs an end mill reaching " << pocket.depth
           << " mm";
+    }
     else
         m << " with reach >= " << pocket.depth << " mm; the smallest, diameter " << bestDiameter
           << " mm, reaches eta " << bestEta << ", so a smaller tool is needed";
