@@ -30,6 +30,7 @@
 #include <string>
 
 #include "ErrorOf.h"
+#include "ImpellerTruthChecks.h"
 
 using namespace aeronc;
 using namespace aeronc::impeller;
@@ -38,9 +39,10 @@ using testparts::ImpellerTruth;
 
 namespace {
 
-constexpr double kDimTol = 1e-3;  // mm
+using truthchecks::asSet;
+using truthchecks::expectMatchesTruth;
+using truthchecks::kDimTol;
 
-std::set<int> asSet(const std::vector<int>& v) { return {v.begin(), v.end()}; }
 
 GeomAbs_SurfaceType typeOf(const TopTools_IndexedMapOfShape& faces, int f) {
     return BRepAdaptor_Surface(TopoDS::Face(faces(f))).GetType();
@@ -85,39 +87,10 @@ void checkRecognised(const testparts::Impeller& imp, const ImpellerSpec& spec) {
     const auto d = measureImpeller(imp.shape, f);
     EXPECT_NEAR(f.axisDirection[2], 1, 1e-9);
     EXPECT_EQ(f.bladeCount, spec.bladeCount);
-    EXPECT_EQ(f.splitterCount, spec.splitters ? spec.bladeCount : 0);
-    EXPECT_EQ(f.hub, t.hub);
+    EXPECT_EQ(f.bladeCount, t.bladeCount);
     EXPECT_EQ(f.hubFaces, std::vector<int>{t.hub});
-    EXPECT_EQ(f.bore, t.bore);
-    EXPECT_NEAR(d.boreDiameter, t.boreDiameter, kDimTol);
-    EXPECT_NEAR(d.boreDepth, t.boreDepth, kDimTol);
     EXPECT_NEAR(d.outerRadius, spec.outerRadius, kDimTol);
-    EXPECT_NEAR(d.bladeHeight, t.bladeHeight, kDimTol);
-    EXPECT_NEAR(d.filletRadius, t.filletRadius, kDimTol);
-    EXPECT_NEAR(d.minChannelWidth, t.minChannelWidth, kDimTol);
-    EXPECT_EQ(asSet(f.planes), asSet(t.planes));
-    EXPECT_EQ(f.turned, std::vector<int>{t.rim});
-    EXPECT_TRUE(f.holes.empty());
-    ASSERT_EQ(f.blades.size(), t.blades.size());
-    std::map<int, const testparts::BladeTruth*> byShroud;
-    for (const auto& b : t.blades) byShroud[b.shroud] = &b;
-    for (const auto& b : f.blades) {
-        SCOPED_TRACE("blade with shroud face " + std::to_string(b.shroud));
-        ASSERT_TRUE(byShroud.count(b.shroud));
-        const auto& tb = *byShroud[b.shroud];
-        EXPECT_EQ(b.splitter, tb.splitter);
-        EXPECT_EQ(b.pressure, tb.pressure);
-        EXPECT_EQ(b.suction, tb.suction);
-        EXPECT_EQ(b.leading, tb.leading);
-        EXPECT_EQ(b.trailing, tb.trailing);
-        EXPECT_EQ(asSet(b.walls), (std::set<int>{tb.pressure, tb.suction, tb.leading, tb.trailing}));
-        EXPECT_EQ(asSet(b.fillets), asSet(tb.fillets));
-        EXPECT_EQ(b.shroudFaces, std::vector<int>{tb.shroud});
-        byShroud.erase(b.shroud);
-    }
-    const int n = static_cast<int>(f.blades.size());
-    for (int i = 0; i < n; ++i) EXPECT_EQ(f.blades[i].splitter, spec.splitters && i % 2 == 1);
-    EXPECT_EQ((f.closestPair[0] + 1) % n, f.closestPair[1]);
+    expectMatchesTruth(f, d, t, spec.splitters);
 }
 
 testparts::Impeller checkFamily(const ImpellerSpec& spec, TopTools_IndexedMapOfShape& faces) {
