@@ -36,6 +36,14 @@ Paths offset(const Paths& region, double delta, double chordTolerance) {
     return out;
 }
 
+Paths offsetMitred(const Paths& region, double delta, double chordTolerance) {
+    ClipperOffset off(kMitreLimit, arcTolerance(chordTolerance));
+    off.AddPaths(region, jtMiter, etClosedPolygon);
+    Paths out;
+    off.Execute(out, delta * kScale);
+    return out;
+}
+
 namespace {
 Paths boolean(ClipType type, const Paths& a, const Paths& b) {
     Clipper c;

@@ -24,6 +24,12 @@ double arcTolerance(double chordTolerance);
 // A region as Clipper paths: outers counter-clockwise, holes clockwise.
 // Round-join offset; negative delta erodes. Arcs within chordTolerance.
 Paths offset(const Paths& region, double delta, double chordTolerance);
+// Mitre-join offset: round a convex corner of the material (a reflex corner of the region
+// eroded) the centres keep their distance from both walls' lines, out to the mitre point
+// (up to kMitreLimit times delta from the corner). Two floor fillets meet in a mitre at such a
+// corner, and a cutter rolled round the corner's edge would cut into it.
+constexpr double kMitreLimit = 20;
+Paths offsetMitred(const Paths& region, double delta, double chordTolerance);
 Paths unite(const Paths& a, const Paths& b);
 Paths intersect(const Paths& a, const Paths& b);
 Paths subtract(const Paths& a, const Paths& b);

@@ -135,6 +135,11 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
     const double R = cutter.radius(), tol = p.chordTolerance;
     const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, p.radialAllowance);
     const double off = R + p.radialAllowance + fillet;
+    // A floor fillet meets its neighbour in a mitre round a convex corner of the walls: the
+    // centres keep off both walls' lines there (Clip.h), not only off the corner's edge.
+    auto erode = [&](const clip::Paths& region, double by) {
+        return unit.floorFilletRadius > 0 ? clip::offsetMitred(region, -by, tol) : clip::offset(region, -by, tol);
+    };
     const std::vector<Pass> passes = passesOf(unit, p);
     // Rapids clear the highest material: a floor unit's lower island tops stand over its top.
     double high = unit.top;
@@ -167,13 +172,13 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
             if (present[i]) inWay.islands.push_back(unit.islands[i]);
         PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
         Centres c;
-        c.centres = clip::offset(area.region, -off, tol);
+        c.centres = erode(area.region, off);
         // A cutter wider than a pocket open on adjacent sides (FTC-09's flanges) finds room only
         // round the corners between its open edges: those are taken open then, and only then
         // (beyond a corner there may be material, and the simulation judges what this cuts).
         if (!(clip::area(c.centres) > 0) && unit.openEdges.size() >= 2) {
             area = pocketArea(inWay, 2 * off + p.clearance, true);
-            c.centres = clip::offset(area.region, -off, tol);
+            c.centres = erode(area.region, off);
         }
         c.region = area.region;
         if (!(clip::area(c.centres) > 0))
@@ -239,7 +244,7 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
             for (; j < passes.size() && (!passes[j].faced.empty() || passes[j].present == passes[i].present); ++j)
                 if (passes[j].faced.empty()) levels.push_back(passes[j].level);
             const Centres& whole = centresOf(passes[i].present);
-            const clip::Paths finish = clip::offset(whole.region, -(R + p.finishingAllowance + finishFillet), tol);
+            const clip::Paths finish = erode(whole.region, R + p.finishingAllowance + finishFillet);
             finishingMoves(w, finish, whole.centres, levels, entryTop(p, unit.top), es);
             i = j;
         }

@@ -293,7 +293,10 @@ Toolpath profile(const ProfileUnit& unit, const Cutter& cutter, const ProfilePar
         if (unit.closed) {
             clip::Paths region{clip::toPath(drive)};
             if (!ClipperLib::Orientation(region[0])) ClipperLib::ReversePath(region[0]);
-            const clip::Paths centres = clip::offset(region, side == ToolSide::Outside ? d : -d, tol);
+            // Round a convex corner the floor fillets meet in a mitre (Clip.h).
+            const double by = side == ToolSide::Outside ? d : -d;
+            const clip::Paths centres = unit.floorFilletRadius > 0 ? clip::offsetMitred(region, by, tol)
+                                                                   : clip::offset(region, by, tol);
             if (centres.empty()) throw inputError("the cutter does not fit inside the drive");
             for (const auto& path : centres) {
                 Loop l = clip::toLoop(path);

@@ -24,7 +24,11 @@ Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutte
     // The same extension as the previous cutter's clearing had.
     const PocketArea area = pocketArea(unit, 2 * (R0 + a) + p.clearance);
     const double fillet = floorFilletOffset(unit.floorFilletRadius, cutter.cornerRadius, a);
-    const clip::Paths centres = clip::offset(area.region, -(R + a + fillet), tol);
+    // Floor fillets meet in a mitre round a convex corner: both erosions keep off both walls there (Clip.h).
+    auto erode = [&](const clip::Paths& region, double by, double chord) {
+        return unit.floorFilletRadius > 0 ? clip::offsetMitred(region, -by, chord) : clip::offset(region, -by, chord);
+    };
+    const clip::Paths centres = erode(area.region, R + a + fillet, tol);
     if (!(clip::area(centres) > 0)) throw inputError("the rest-machining cutter does not fit in the pocket");
     // Where the rest lies needs no toolpath's precision: the cutter's centres stay in `centres`
     // whatever it is, and it sweeps R beyond the rest. Coarser arcs there make the offsets of
@@ -37,7 +41,7 @@ Toolpath restCorners(const PocketUnit& unit, const Cutter& previous, const Cutte
     // never larger than what was cut.
     const double filletBefore = floorFilletOffset(unit.floorFilletRadius, previous.cornerRadius, a0);
     const clip::Paths reachedBefore =
-        clip::offset(clip::offset(area.region, -(R0 + a0 + filletBefore), coarse), R0 - coarse, coarse);
+        clip::offset(erode(area.region, R0 + a0 + filletBefore, coarse), R0 - coarse, coarse);
     // What is left, without the slivers that only rounding makes.
     const clip::Paths rest =
         clip::offset(clip::offset(clip::subtract(reached, reachedBefore), -2 * coarse, coarse), 2 * coarse, coarse);

@@ -60,15 +60,19 @@ double positive(const json& j, const char* key, double fallback, bool allowZero)
 
 json toJson(const SimulationReport& r) {
     json ops = json::array();
-    for (const auto& o : r.operations)
-        ops.push_back({{"label", o.label},
-                       {"moves", o.moves},
-                       {"segments", o.segments},
-                       {"removedVolume", mm(o.removedVolume)},
-                       {"gouges", o.gougingMoves},
-                       {"collisions", o.collidingMoves},
-                       {"worstGouge", mm(o.worstGouge)},
-                       {"worstCollision", mm(o.worstCollision)}});
+    for (const auto& o : r.operations) {
+        json op = {{"label", o.label},
+                   {"moves", o.moves},
+                   {"segments", o.segments},
+                   {"removedVolume", mm(o.removedVolume)},
+                   {"gouges", o.gougingMoves},
+                   {"collisions", o.collidingMoves},
+                   {"worstGouge", mm(o.worstGouge)},
+                   {"worstCollision", mm(o.worstCollision)}};
+        if (o.worstGougeAt) op["worstGougeAt"] = eventJson(*o.worstGougeAt);
+        if (o.worstCollisionAt) op["worstCollisionAt"] = eventJson(*o.worstCollisionAt);
+        ops.push_back(std::move(op));
+    }
     json faces = json::array();
     for (const auto& f : r.coverage.faces)
         faces.push_back({{"face", f.face},

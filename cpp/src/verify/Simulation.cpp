@@ -40,9 +40,10 @@ public:
         ++r_.cells;
         if (!segmentWorst_ || h.depth > segmentWorst_->depth) segmentWorst_ = h;
     }
-    // Returns true when the segment's move offends and was not counted yet; opWorst: the
-    // deepest offence of the operation so far, raised to this segment's.
-    bool endSegment(double& opWorst) {
+    // Returns true when the segment's move offends and was not counted yet; opWorst (and
+    // opWorstAt, where it is): the deepest offence of the operation so far, raised to this
+    // segment's.
+    bool endSegment(double& opWorst, std::optional<MoveEvent>& opWorstAt) {
         if (!segmentWorst_) return false;
         opWorst = std::max(opWorst, segmentWorst_->depth);
         MoveEvent e;
@@ -52,6 +53,7 @@ public:
         const bool sameMove = lastOp_ == op_ && lastMove_ == e.move;
         if (!sameMove) ++r_.moves;
         if (!r_.worst || e.depth > r_.worst->depth) r_.worst = e;
+        if (!opWorstAt || e.depth > opWorstAt->depth) opWorstAt = e;
         if (sameMove && !r_.listed.empty() && r_.listed.back().operation == op_ && r_.listed.back().move == e.move) {
             if (e.depth > r_.listed.back().depth) r_.listed.back() = e;
         } else if (!sameMove && int(r_.listed.size()) < maxListed_) {
@@ -207,8 +209,8 @@ void runOperation(int index, const Operation& op, Run& run, OperationSummary& su
                 removed += s > 0 ? run.stock.removeAbove(c, h) : run.stock.removeBelow(c, -h);
             }
         }
-        if (run.gouges.endSegment(summary.worstGouge)) ++summary.gougingMoves;
-        if (run.collisions.endSegment(summary.worstCollision)) ++summary.collidingMoves;
+        if (run.gouges.endSegment(summary.worstGouge, summary.worstGougeAt)) ++summary.gougingMoves;
+        if (run.collisions.endSegment(summary.worstCollision, summary.worstCollisionAt)) ++summary.collidingMoves;
     }
     summary.removedVolume = removed * grid.cellArea();
 }

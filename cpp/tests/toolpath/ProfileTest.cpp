@@ -189,6 +189,14 @@ TEST(Profile, FloorFilletHoldsTheLowLevelsOffTheWall) {
     }
     EXPECT_NEAR(nearest.at(0), 7, 0.006);
     EXPECT_NEAR(nearest.at(5), 4, 0.006);
+    // The four fillets meet in mitres at the square's corners: round a corner the cutter keeps
+    // its distance from both walls' lines (out to the mitre point), not only from the corner's
+    // edge, where it would cut the mitre.
+    for (const Move& m : t.moves) {
+        if (m.kind != Move::Kind::Feed) continue;
+        const double fromLines = std::max({0.0 - m.u, m.u - 20, 0.0 - m.v, m.v - 20});
+        EXPECT_GE(fromLines, 4 + wallFilletOffset(3, 0, 0, m.h) - 0.006) << m.u << " " << m.v << " level " << m.h;
+    }
 }
 
 // Across a slot 6.38 mm wide a D4 cutter's quarter-arc lead of radius R, started R in from its

@@ -424,6 +424,15 @@ TEST(Simulation, AGougeWhereNoStockIsLeftIsStillFound) {
         EXPECT_NEAR(r.operations[1].removedVolume, 0.2 * floorArea, 0.05 * 0.2 * floorArea) << axis;
         EXPECT_EQ(r.operations[2].removedVolume, 0) << axis;
         EXPECT_NEAR(r.operations[2].worstGouge, 0.2, 1e-9) << axis;
+        // Each operation says where its own worst gouge is (the gate names it), also when the
+        // program's first listed moves are another operation's.
+        EXPECT_FALSE(r.operations[0].worstGougeAt.has_value()) << axis;
+        ASSERT_TRUE(r.operations[2].worstGougeAt.has_value()) << axis;
+        EXPECT_EQ(r.operations[2].worstGougeAt->label, "again") << axis;
+        EXPECT_EQ(r.operations[2].worstGougeAt->operation, 2) << axis;
+        EXPECT_NEAR(r.operations[2].worstGougeAt->depth, 0.2, 1e-9) << axis;
+        EXPECT_EQ(r.operations[2].worstGougeAt->face, plate.pockets[0].floor) << axis;
+        EXPECT_FALSE(r.operations[2].worstGougeAt->wall) << axis;
         ASSERT_TRUE(r.gouges.worst.has_value()) << axis;
         EXPECT_NEAR(r.gouges.worst->depth, 0.2, 1e-9) << axis;
         EXPECT_EQ(r.gouges.worst->face, plate.pockets[0].floor) << axis;

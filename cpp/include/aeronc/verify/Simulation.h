@@ -48,6 +48,7 @@ struct OperationSummary {
     double removedVolume = 0;  // mm^3
     std::size_t gougingMoves = 0, collidingMoves = 0;
     double worstGouge = 0, worstCollision = 0;  // mm, the deepest of the operation's (0: none)
+    std::optional<MoveEvent> worstGougeAt, worstCollisionAt;  // where they are
 };
 
 // Per cell: the stock minus the part at the top (stock top - part top) and at the bottom (part
