@@ -19,6 +19,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <GeomAPI_PointsToBSpline.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -34,6 +35,7 @@
 #include <TopoDS_Compound.hxx>
 #include <gp_Pln.hxx>
 #include <gp.hxx>
+#include <gp_Ax2.hxx>
 #include <gp_Ax3.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
@@ -198,6 +200,50 @@ TEST(Recognition, IslandWiderAtItsTopIsItsOutlineFromAbove) {
     // Not much wider than the top either.
     EXPECT_GT(x0, 38 - 0.5);
     EXPECT_LT(x1, 62 + 0.5);
+}
+
+// A dome on a neck (FTC-06's): a sphere R10 whose centre stands 12.6 above the floor, on a
+// cylinder R6 it meets 4.6 above the floor. The slice over the floor cuts only the neck, and the
+// sphere reaches below its equator: seen from above the island is the equator's circle, not the
+// neck's, nor the sphere's section at the heights sampled evenly over its span (9.95 at best).
+TEST(Recognition, DomeWiderThanItsNeckIsItsEquatorFromAbove) {
+    const TopoDS_Shape block = BRepPrimAPI_MakeBox(100, 60, 10).Shape();
+    const TopoDS_Shape neck = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(50, 30, 10), gp::DZ()), 6, 10).Shape();
+    const TopoDS_Shape dome = BRepPrimAPI_MakeSphere(gp_Pnt(50, 30, 22.6), 10).Shape();
+    const TopoDS_Shape part =
+        BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(block, neck).Shape(), dome).Shape();
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* flange = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 10) < 1e-6 && e.islands.size() == 1) flange = &e;
+    ASSERT_NE(flange, nullptr);
+    double r0 = HUGE_VAL, r1 = 0;
+    for (const auto& p : flange->islands[0]) {
+        const double r = std::hypot(p[0] - 50, p[1] - 30);
+        r0 = std::min(r0, r), r1 = std::max(r1, r);
+    }
+    EXPECT_GT(r0, 10 - 0.01);  // no point of the outline inside the equator
+    EXPECT_LT(r1, 10 + 0.5);
+}
+
+// A boss narrowing upwards (a cone from R12 at the floor to R8 at 20 above, FTC-06's): the
+// slice over the floor cuts it narrower than its foot; the island is its foot's circle.
+TEST(Recognition, ConeWiderAtItsFootIsItsFootFromAbove) {
+    const TopoDS_Shape block = BRepPrimAPI_MakeBox(100, 60, 10).Shape();
+    const TopoDS_Shape boss = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(50, 30, 10), gp::DZ()), 12, 8, 20).Shape();
+    const DomainTree t =
+        recognise(validatedSolid(BRepAlgoAPI_Fuse(block, boss).Shape(), "test"), along({{0, 0, 1}}));
+    const DomainElement* flange = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 10) < 1e-6 && e.islands.size() == 1) flange = &e;
+    ASSERT_NE(flange, nullptr);
+    double r0 = HUGE_VAL, r1 = 0;
+    for (const auto& p : flange->islands[0]) {
+        const double r = std::hypot(p[0] - 50, p[1] - 30);
+        r0 = std::min(r0, r), r1 = std::max(r1, r);
+    }
+    EXPECT_GT(r0, 12 - 0.005);
+    EXPECT_LT(r1, 12 + 0.5);
 }
 
 // A slot whose floor rounds (R5, as deep as the slot is wide less its 3 mm floor) rise to 1 mm

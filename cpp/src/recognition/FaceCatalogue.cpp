@@ -109,6 +109,8 @@ FaceCatalogue::FaceCatalogue(const TopoDS_Shape& solid) {
             case GeomAbs_Sphere:
                 f.kind = SurfaceKind::Sphere;
                 f.radius = s.Sphere().Radius();
+                f.axisDir = v3(s.Sphere().Position().Direction().XYZ());
+                f.axisPoint = v3(s.Sphere().Location().XYZ());  // the centre
                 break;
             case GeomAbs_BSplineSurface:
                 f.kind = SurfaceKind::Other;

@@ -34,8 +34,8 @@ struct FaceInfo {
     Vec3 normal{0, 0, 0};   // plane: outward normal (out of the material)
     Vec3 planePoint{0, 0, 0};
     gp_Pln plane;           // the plane's own frame (its (u, v) are the face's parameters)
-    Vec3 axisDir{0, 0, 0};  // cylinder / cone / torus axis direction
-    Vec3 axisPoint{0, 0, 0};
+    Vec3 axisDir{0, 0, 0};  // cylinder / cone / torus / sphere axis direction
+    Vec3 axisPoint{0, 0, 0};  // a point of the axis; a torus's or a sphere's centre
     double radius = 0;       // cylinder radius, torus minor radius, cone reference radius
     double semiAngle = 0;    // cone
     bool concave = false;    // cylinder / cone: outward normal points towards the axis

@@ -88,6 +88,10 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     std::vector<int> bounding = c.contourFaces;
     for (const SectionLoop* L : c.contourLoops)
         for (int f : L->faces) pushUnique(bounding, f);
+    // And its islands' faces: a cone widening to its foot (FTC-06's) stands wider at the floor.
+    for (const SectionLoop* L : c.islandLoops)
+        if (L)
+            for (int f : L->faces) pushUnique(bounding, f);
     for (int f : bounding) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
@@ -114,6 +118,18 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     return out;
 }
 
+namespace {
+// The height along w where a round face's section seen along w is widest: a sphere's centre,
+// the centre plane of a torus about w, the axis of a cylinder square to w; NaN for others.
+double equatorHeight(const FaceInfo& f, const Vec3& w) {
+    const double along = std::fabs(dot(f.axisDir, w));
+    if (f.kind == SurfaceKind::Sphere) return dot(f.axisPoint, w);
+    if (f.kind == SurfaceKind::Torus && along > 1 - 1e-9) return dot(f.axisPoint, w);
+    if (f.kind == SurfaceKind::Cylinder && along < 1e-9) return dot(f.axisPoint, w);
+    return std::numeric_limits<double>::quiet_NaN();
+}
+}  // namespace
+
 Paths LevelSlicing::overhangingMaterial(const VoidRegion& c, double z, double top) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
@@ -125,6 +141,17 @@ Paths LevelSlicing::overhangingMaterial(const VoidRegion& c, double z, double to
     for (const SectionLoop* L : c.islandLoops)
         if (L)
             for (int f : L->faces) pushUnique(bounding, f);
+    // And the round faces joined to them through round faces, up to three faces on, above
+    // the slice: a dome over the neck and the blend the slice cuts (FTC-06's).
+    for (std::size_t from = 0, ring = 0; ring < 3; ++ring) {
+        const std::size_t to = bounding.size();
+        for (std::size_t k = from; k < to; ++k)
+            for (int g : faces_[bounding[k]].neighbours) {
+                const FaceInSetup& s = fs[static_cast<std::size_t>(g)];
+                if (s.att == Attitude::Curved && s.hi > z + 2 * tol) pushUnique(bounding, g);
+            }
+        from = to;
+    }
     // Height (rounded to 0.01 mm) -> boxes of the faces whose material is sampled there.
     std::map<long long, Paths> boxesAt;
     for (int f : bounding) {
@@ -143,6 +170,11 @@ Paths LevelSlicing::overhangingMaterial(const VoidRegion& c, double z, double to
             const double at = b - tol - (b - a - 2 * tol) * k / samples;
             boxesAt[std::llround(at * 100)].push_back(box);
         }
+        // A round face is widest at its equator (a dome's sphere reaching below its centre,
+        // FTC-06's): sampled there too, or the island is taken narrower than it stands.
+        const double widest = equatorHeight(faces_[f], view_.frame.w);
+        if (facesDown || !(widest > a + tol && widest < b - tol)) continue;
+        boxesAt[std::llround(widest * 100)].push_back(box);
     }
     Paths out;
     for (const auto& [key, boxes] : boxesAt) {
