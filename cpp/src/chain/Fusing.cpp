@@ -460,9 +460,9 @@ void Fuser::makeEdgeUnits(const DomainElement& e) {
                                         : std::string();
         std::string why;
         if (!c.tool) why = c.why;
-        else if (!a.alongContour || e.type == ElementType::Hole || e.contour.size() < 3)
+        else if ((!a.alongContour && a.alongIslands.empty()) || e.type == ElementType::Hole || e.contour.size() < 3)
             why = "the edge step cuts a chamfer only where it runs at one width along every wall of the element's "
-                  "outer loop; " + mill + " would fit them";
+                  "outer loop, or of its islands; " + mill + " would fit them";
         else if (!st.steps.count(StepCode::FinishWall) && !st.steps.count(StepCode::FinishFlange))
             why = "the walls under them are not finished; " + mill + " would fit them";
         else if (!(c.tool->spindleRpm > 0))
@@ -477,9 +477,22 @@ void Fuser::makeEdgeUnits(const DomainElement& e) {
         const double top = a.lower + need.height, bottom = a.lower - pass.tipBelow;
         MachiningUnit& u = addEdgeUnit(e, *c.tool, top, bottom, pass.offset);
         outlineUnit(u, e, tools_.frameOf(e.setup), top, top, bottom);
-        u.islands.clear(), u.islandTops.clear(), u.holes.clear();
-        u.note = "chamfer " + fmt(0.5 * (180 - a.angle)) + " degrees to the top, " + fmt(a.size) +
-                 " mm wide, along the element's outer loop";
+        u.islandTops.clear(), u.holes.clear();
+        if (a.alongContour) {
+            u.islands.clear();
+        } else {
+            // Round the chamfered islands only: the outer loop is taken open all round.
+            std::vector<Loop> round;
+            for (int k : a.alongIslands)
+                if (k >= 0 && k < static_cast<int>(u.islands.size())) round.push_back(u.islands[static_cast<std::size_t>(k)]);
+            u.islands = std::move(round);
+            u.openEdges.clear();
+            for (std::size_t i = 0; i < u.contour.size(); ++i)
+                u.openEdges.push_back({u.contour[i], u.contour[(i + 1) % u.contour.size()]});
+        }
+        u.note = "chamfer " + fmt(0.5 * (180 - a.angle)) + " degrees to the top, " + fmt(a.size) + " mm wide, " +
+                 (a.alongContour ? std::string("along the element's outer loop")
+                                 : std::string("round its islands"));
         st.chamfered = true;
     }
     if (!e.hole || !(e.hole->countersinkDiameter > 0)) return;

@@ -115,13 +115,27 @@ void attachElementFeatures(std::vector<ElementDraft>& made, const SetupView& vie
                     if (chamfers.count(n + 1)) return true;
                 return false;
             };
-            bool along = a.angle > 0 && a.size - narrowest <= kSameWidth && highest - lowest <= tol &&
-                         !e.contourFaces.empty();
-            for (int w : e.contourFaces)
-                along = along && meetsChamfer(w) && std::fabs(fs[static_cast<std::size_t>(w - 1)].hi - lowest) <= tol;
-            for (const auto& isl : e.islandFaces)
-                for (int w : isl) along = along && !meetsChamfer(w);
-            if (along) a.alongContour = true, a.lower = lowest;
+            const bool even = a.angle > 0 && a.size - narrowest <= kSameWidth && highest - lowest <= tol;
+            auto allMeet = [&](const std::vector<int>& walls) {
+                for (int w : walls)
+                    if (!meetsChamfer(w) || std::fabs(fs[static_cast<std::size_t>(w - 1)].hi - lowest) > tol) return false;
+                return !walls.empty();
+            };
+            auto noneMeets = [&](const std::vector<int>& walls) {
+                return std::none_of(walls.begin(), walls.end(), meetsChamfer);
+            };
+            bool islandsClear = true;
+            std::vector<int> round;  // islands chamfered along every wall
+            for (std::size_t k = 0; k < e.islandFaces.size(); ++k) {
+                if (noneMeets(e.islandFaces[k])) continue;
+                islandsClear = false;
+                if (allMeet(e.islandFaces[k])) round.push_back(static_cast<int>(k));
+            }
+            if (even && allMeet(e.contourFaces) && islandsClear) a.alongContour = true, a.lower = lowest;
+            // Round islands only: every island chamfered all round, the outer loop not at all. (All
+            // of them: the islands' faces and their loops are not listed in one order.)
+            if (even && !round.empty() && round.size() == e.islandFaces.size() && noneMeets(e.contourFaces))
+                a.alongIslands = round, a.lower = lowest;
             e.attached.push_back(a);
         }
         // Island tops: faces normal to the axis on top of the island walls.

@@ -67,6 +67,10 @@ std::string toJson(const DomainTree& t, int indent) {
                 o["attached"].back()["lower"] = a.lower;
                 o["attached"].back()["alongContour"] = true;
             }
+            if (!a.alongIslands.empty()) {
+                o["attached"].back()["lower"] = a.lower;
+                o["attached"].back()["alongIslands"] = a.alongIslands;
+            }
         }
         if (e.hole) {
             const HoleInfo& h = *e.hole;
@@ -255,6 +259,10 @@ DomainElement element(const Field& f) {
         if (a.has("angle")) x.angle = a["angle"].number();  // chamfers, since the edge step
         if (a.has("alongContour")) {                          // chamfers the edge step cuts
             x.alongContour = a["alongContour"].boolean();
+            x.lower = a["lower"].number();
+        }
+        if (a.has("alongIslands")) {  // chamfers round every island
+            x.alongIslands = a["alongIslands"].integers();
             x.lower = a["lower"].number();
         }
         return x;

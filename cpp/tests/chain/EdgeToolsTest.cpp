@@ -138,6 +138,7 @@ TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
 }
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepFilletAPI_MakeChamfer.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <TopExp.hxx>
@@ -166,6 +167,27 @@ TopoDS_Shape chamferedPocket(bool allRound = true) {
         };
         const bool longSide = std::abs(p.Y() - q.Y()) < 1e-6;
         if (onMouth(p) && onMouth(q) && (allRound || longSide)) ch.Add(2, edge);
+    }
+    ch.Build();
+    return ch.Shape();
+}
+
+// The same pocket with a 20 x 10 island standing to the top in its middle, the island's top
+// edges chamfered 45 degrees x 2 mm all round, the pocket's mouth not at all.
+TopoDS_Shape pocketWithChamferedIsland() {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
+    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
+    TopoDS_Shape island = BRepPrimAPI_MakeBox(gp_Pnt(40, 25, 10), gp_Pnt(60, 35, 20)).Shape();
+    TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepAlgoAPI_Cut(block, pocket).Shape(), island).Shape();
+    BRepFilletAPI_MakeChamfer ch(part);
+    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        auto onTop = [](const gp_Pnt& r) {
+            return std::abs(r.Z() - 20) < 1e-6 && r.X() > 39 && r.X() < 61 && r.Y() > 24 && r.Y() < 36;
+        };
+        if (onTop(BRep_Tool::Pnt(a)) && onTop(BRep_Tool::Pnt(b))) ch.Add(2, edge);
     }
     ch.Build();
     return ch.Shape();
@@ -270,4 +292,58 @@ TEST(EdgeTools, ChamferAlongPartOfTheOutlineIsListedWithTheMillThatFits) {
     EXPECT_EQ(listed->faces.size(), 2u);
     EXPECT_NE(listed->reason.find("45 degrees to the top, up to 2 mm wide"), std::string::npos) << listed->reason;
     EXPECT_NE(listed->reason.find("CM-90-D6"), std::string::npos) << listed->reason;
+}
+
+// Chamfered round its island and nowhere else: recognition says so (and the tree's JSON keeps
+// it), and the chain cuts it after the walls with one pass round the island, the axis 0.45 mm
+// outside it, the outer loop taken open all round so that no pass runs along it.
+TEST(EdgeTools, IslandChamferedAllRoundIsCutRoundTheIsland) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree = recognition::recognise(validatedSolid(pocketWithChamferedIsland(), "chamfered island"), o);
+    const recognition::AttachedFeature* chamfer = nullptr;
+    const recognition::DomainElement* pocket = nullptr;
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    ASSERT_TRUE(chamfer);
+    EXPECT_EQ(chamfer->faces.size(), 4u);
+    EXPECT_NEAR(chamfer->angle, 90, 1e-6);
+    EXPECT_FALSE(chamfer->alongContour);
+    EXPECT_EQ(chamfer->alongIslands, std::vector<int>{0});
+    EXPECT_NEAR(chamfer->lower, 18, 1e-6);
+    const auto back = recognition::fromJson(recognition::toJson(tree));
+    bool kept = false;
+    for (const auto& e : back.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") kept = a.alongIslands == std::vector<int>{0} && std::abs(a.lower - 18) < 1e-9;
+    EXPECT_TRUE(kept);
+
+    const test::KbDir dir("edge_island");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    for (const Unmachined& m : c.unmachined)
+        EXPECT_EQ(m.reason.find("chamfer"), std::string::npos) << "element " << m.element << ": " << m.reason;
+    const MachiningUnit* edge = nullptr;
+    const MachiningUnit* wall = nullptr;
+    for (const MachiningUnit& u : c.units) {
+        if (u.element != pocket->id) continue;
+        if (u.step == StepCode::Edge) edge = &u;
+        if (u.step == StepCode::FinishWall) wall = &u;
+    }
+    ASSERT_TRUE(edge);
+    ASSERT_TRUE(wall);
+    EXPECT_EQ(edge->tool, "CM-90-D6");
+    EXPECT_NEAR(edge->top, 20, 1e-6);
+    EXPECT_NEAR(edge->bottom, 17.8, 1e-6);
+    EXPECT_NEAR(edge->edgeOffset, 0.45, 1e-12);
+    ASSERT_EQ(edge->islands.size(), 1u);
+    for (const Point2& p : edge->islands[0]) {
+        const double off = std::min({std::abs(p[0] - 40), std::abs(p[0] - 60), std::abs(p[1] - 25), std::abs(p[1] - 35)});
+        EXPECT_LT(off, 1e-6) << p[0] << " " << p[1];
+    }
+    ASSERT_GE(edge->contour.size(), 4u);
+    EXPECT_EQ(edge->openEdges.size(), edge->contour.size()) << "the outer loop is open all round";
+    EXPECT_GT(edge->order, wall->order) << "the chamfer comes after the walls under it";
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
 }

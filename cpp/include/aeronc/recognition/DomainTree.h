@@ -46,9 +46,11 @@ struct AttachedFeature {
     double angle = 0;
     // A chamfer: the height of its lower line (where it meets the walls) along the setup's axis,
     // and whether it runs at one width along every wall of the element's outer loop and on no
-    // island: then one pass along the loop's walls cuts it.
+    // island: then one pass along the loop's walls cuts it. Or the islands (0-based) along every
+    // wall of which it runs so, none of the outer loop's walls meeting it: a pass round each.
     double lower = 0;
     bool alongContour = false;
+    std::vector<int> alongIslands;
     int element = -1;        // joggle: the child element forming it
 };
 
