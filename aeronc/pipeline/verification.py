@@ -353,22 +353,23 @@ def failing_operations(report):
                 op["gouges"], "" if int(op["gouges"]) == 1 else "s", float(op.get("worstGouge", 0)),
                 _place(op.get("worstGougeAt"))))
         if int(op.get("collisions", 0)):
-            why.append("rapids through material: {} move{}, {:.2f} mm deep".format(
-                op["collisions"], "" if int(op["collisions"]) == 1 else "s", float(op.get("worstCollision", 0))))
+            why.append("rapids through material: {} move{}, {:.2f} mm deep{}".format(
+                op["collisions"], "" if int(op["collisions"]) == 1 else "s", float(op.get("worstCollision", 0)),
+                _place(op.get("worstCollisionAt"), "the material")))
         if why:
             out[op["label"]] = "; ".join(why)
     return out
 
 
-def _place(event):
+def _place(event, unnamed="the part"):
     """" (move 118, a wall of face 12 at x 10.0 y -4.5 z 20.0)": where an operation's worst
-    gouge is (face numbers as recognition's; the point in the part's frame when every setup is
-    along +-Z, else in its setup's frame); "" when the report does not say."""
+    gouge or colliding rapid is (face numbers as recognition's; the point in the part's frame
+    when every setup is along +-Z, else in its setup's frame); "" when the report does not say."""
     if not event:
         return ""
     x, y, z = (float(v) for v in event.get("position", (0, 0, 0)))
     face = int(event.get("face", 0) or 0)
-    what = "{} of face {}".format("a wall" if event.get("kind") == "wall" else "the top", face) if face else "the part"
+    what = "{} of face {}".format("a wall" if event.get("kind") == "wall" else "the top", face) if face else unnamed
     return " (move {}, {} at x {:.1f} y {:.1f} z {:.1f})".format(int(event.get("move", 0)), what, x, y, z)
 
 

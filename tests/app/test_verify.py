@@ -83,6 +83,14 @@ class VerifyTest(unittest.TestCase):
         self.assertEqual(worst["kind"], "floor")
         self.assertEqual(worst["face"], self.floor)
         self.assertEqual(worst["op"], "pocket")
+        # The gate's reason for leaving the operation out says where its worst gouge is.
+        from aeronc.pipeline.verification import failing_operations
+        op = r["ops"][0]
+        self.assertEqual(op["worstGougeAt"]["face"], self.floor)
+        why = failing_operations(r)["pocket"]
+        self.assertIn("worst 0.10 mm beyond its allowance (move ", why)
+        self.assertIn("the top of face {} at x ".format(self.floor), why)
+        self.assertIn(" z 7.9)", why)
 
     def test_bad_input_is_named(self):
         with self.assertRaisesRegex(_core.VerifyError, "ops"):

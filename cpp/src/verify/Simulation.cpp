@@ -300,6 +300,8 @@ SimulationReport runProgram(const PartDexels& part, const TriangleMesh& mesh, co
     for (auto& e : r.gouges.listed)
         if (e.wall) e.face = wallFaceNear(mesh, e.position);
     if (r.gouges.worst && r.gouges.worst->wall) r.gouges.worst->face = wallFaceNear(mesh, r.gouges.worst->position);
+    for (auto& o : r.operations)
+        if (o.worstGougeAt && o.worstGougeAt->wall) o.worstGougeAt->face = wallFaceNear(mesh, o.worstGougeAt->position);
     return r;
 }
 

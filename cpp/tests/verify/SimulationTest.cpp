@@ -126,6 +126,9 @@ TEST(Simulation, ToolTooCloseToAWallGougesItSideways) {
     EXPECT_LE(r.gouges.worst->depth, 0.4 + 1e-9);
     EXPECT_GE(r.gouges.worst->depth, 0.4 - 0.25 - 1e-9);
     EXPECT_EQ(r.gouges.worst->face, plate.pockets[0].walls[2]);  // the right wall
+    ASSERT_TRUE(r.operations[0].worstGougeAt.has_value());  // the operation's own, named alike
+    EXPECT_TRUE(r.operations[0].worstGougeAt->wall);
+    EXPECT_EQ(r.operations[0].worstGougeAt->face, plate.pockets[0].walls[2]);
     EXPECT_EQ(r.gouges.moves, 2u);
     EXPECT_EQ(r.collisions.moves, 0u);  // the retract rises through what the feed cut
 }
