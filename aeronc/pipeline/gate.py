@@ -39,9 +39,18 @@ def passed(op):
     mark(op, readiness.PASSED, "")
 
 
+def short_of_floor(op):
+    """Whether an operation is a roughing that stops short of its element's floor (deeper than
+    every end mill reaches)."""
+    from aeronc.operations.base import unit_of
+    return bool(unit_of(op).get("shortOfFloor"))
+
+
 def dependents(ops, left_out, result):
     """{label: why} of the operations (ops in program order, active ones) that follow a left-out
-    operation of their own element or of an element that contains theirs."""
+    operation of their own element or of an element that contains theirs. A roughing that stops
+    short of its element's floor (deeper than every end mill reaches) takes nothing with it:
+    nothing below relies on what it removes."""
     parent = {int(e["id"]): int(e.get("parent", -1)) for e in result.get("elements", [])}
 
     def ancestors(element):
@@ -56,7 +65,8 @@ def dependents(ops, left_out, result):
     for op in ops:
         element = int(getattr(op, "ElementId", -1))
         if op.Label in left_out or op.Label in out:
-            gone.append((element, op.Label))
+            if not short_of_floor(op):
+                gone.append((element, op.Label))
             continue
         mine = ancestors(element)
         before = next((label for e, label in gone if e in mine), None)

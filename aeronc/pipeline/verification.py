@@ -309,7 +309,7 @@ def material_left(report, chain, result):
 def remainder_text(r):
     """"left by EM-F2x12 (step fs): the corners, 0.86 mm² 12 mm deep; needs ..." for one chain
     remainder (what a machined element keeps where no tool of the crib reaches)."""
-    what = "the corners" if r.get("kind") == "corners" else "the floor fillet's foot"
+    what = {"corners": "the corners", "depth": "the region below its reach"}.get(r.get("kind"), "the floor fillet's foot")
     area = r.get("area")
     return "left by {} (step {}): {}, {} {:.3g} mm deep; needs {}".format(
         r.get("tool"), r.get("step"), what,

@@ -140,9 +140,10 @@ def _unmachined(run):
 
 
 def _remainders(run):
-    """What machined elements keep where no tool of the crib reaches (sharp corners, a floor
-    fillet smaller than every reaching tool's corner): listed with the area, not as elements not
-    machined."""
+    """What elements keep where no tool of the crib reaches (sharp corners, a floor fillet
+    smaller than every reaching tool's corner, the depth under a region roughed as far as the
+    longest end mill reaches): listed with the area. Only the last also leaves its element
+    among those not machined."""
     from aeronc.pipeline.verification import remainder_text
     items = run.get("chain", {}).get("remainders", [])
     if not items:

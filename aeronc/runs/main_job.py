@@ -208,6 +208,11 @@ def verify(job):
         _leave_out(job, gate.dependents(_active_operations(job), job.left_out, job.result), "dependent")
         _post_programs(job)
         report = _simulate(job)
+        # Without a roughing short of its floor the operations under it cut what they cut before
+        # it was planned: their loads are measured afresh, not as grown.
+        if failing and not grown and all(gate.short_of_floor(job.ops_by_label[k][1]) for k in failing
+                                          if k in job.ops_by_label):
+            first = report
     job.report = report or {}
     for op in _active_operations(job):
         if op.Label not in job.left_out and report is not None:
@@ -232,13 +237,16 @@ def _active_operations(job):
 
 def _leave_out(job, why_by_label, kind):
     """Leave operations out: {label: why}; kind: "no toolpath", "gouge", "rapid" or "dependent"
-    (or {label: kind})."""
+    (or {label: kind}); a roughing short of its element's floor is of its own kind whatever the
+    reason."""
     from aeronc.pipeline import gate
     for label, why in why_by_label.items():
         if label in job.left_out:
             continue
         job.left_out[label] = why
         job.left_kind[label] = kind.get(label, "dependent") if isinstance(kind, dict) else kind
+        if label in job.ops_by_label and gate.short_of_floor(job.ops_by_label[label][1]):
+            job.left_kind[label] = SHORT_OF_FLOOR
         if label in job.ops_by_label and job.left_kind[label] != "no toolpath":  # that one keeps its own mark
             gate.fail(job.ops_by_label[label][1], why)
 
@@ -320,18 +328,24 @@ def _unsafe(report):
     return "{} gouging move(s), {} rapid(s) through material".format(gouges, collisions)
 
 
+# The kind of a left-out roughing that stops short of its element's floor.
+SHORT_OF_FLOOR = "short of floor"
 LEFT_OUT_KINDS = {"gouge": ("gouges the part", "gouge the part"),
                   "rapid": ("rapids through material", "rapid through material"),
                   "no toolpath": ("has no toolpath", "have no toolpath"),
-                  "dependent": ("depends on those", "depend on those")}
+                  "dependent": ("depends on those", "depend on those"),
+                  SHORT_OF_FLOOR: ("is a roughing short of its floor", "are roughings short of their floors")}
 
 
 def verdict_of(data):
     """The one line that says whether the programs are ready: READY, INCOMPLETE (safe, but
     material stands where the part has none), NOT READY (operations left out, or unsafe) or
-    NO PROGRAM. {"ready", "status", "text"}."""
+    NO PROGRAM. {"ready", "status", "text"}. A roughing short of its element's floor (an element
+    deeper than every end mill reaches, listed as not machined anyway) left out alone leaves the
+    programs incomplete, not unready: nothing else was planned on it."""
     from aeronc.pipeline import verification
     left_out = data.get("leftOut") or []
+    blocking = [e for e in left_out if e.get("kind") != SHORT_OF_FLOOR]
     incomplete = verification.incomplete_text(data.get("materialLeft") or [])
     delivered = [p for p in data.get("programs") or []]
     parts = []
@@ -351,11 +365,12 @@ def verdict_of(data):
     if not delivered:
         status = "NO PROGRAM"
         parts.insert(0, "no operation of {} can be posted safely".format(data.get("part", "the part")))
-    elif data.get("unsafe") or left_out:
+    elif data.get("unsafe") or blocking:
         status = "NOT READY"
-    elif incomplete:
+    elif incomplete or left_out:
         status = "INCOMPLETE"
-        parts = [incomplete[len("incomplete: "):], "the programs neither gouge nor rapid through material"]
+        parts = ([incomplete[len("incomplete: "):]] if incomplete else []) + parts[:1 if left_out else 0] + [
+            "the programs neither gouge nor rapid through material"]
     else:
         status = "READY"
         parts.append("no gouge, no rapid through material, every face of the part within tolerance")

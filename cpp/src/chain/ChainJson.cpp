@@ -97,6 +97,7 @@ json unitJson(const MachiningUnit& u) {
     if (!u.islandTops.empty()) j["islandTops"] = tops;
     if (u.faceIslandTops) j["faceIslandTops"] = true;
     if (u.operation == Operation::Chamfer) j["edgeOffset"] = u.edgeOffset;
+    if (u.shortOfFloor) j["shortOfFloor"] = true;
     return j;
 }
 
@@ -253,6 +254,7 @@ MachiningUnit readUnit(const In& in) {
     u.at = point(in["at"]);
     if (in.has("eta")) u.eta = in["eta"].number();
     u.note = in["note"].text();
+    if (in.has("shortOfFloor")) u.shortOfFloor = in["shortOfFloor"].boolean();
     u.enabled = in["enabled"].boolean();
     u.order = in["order"].integer();
     return u;
@@ -442,7 +444,8 @@ MachiningChain fromJson(const std::string& text) {
             r.element = m["element"].integer();
             r.step = parseStepCode(m["step"].text(), "chain JSON " + m.path());
             r.kind = m["kind"].text();
-            if (r.kind != "corners" && r.kind != "floor_fillet") m["kind"].bad("is neither corners nor floor_fillet");
+            if (r.kind != "corners" && r.kind != "floor_fillet" && r.kind != "depth")
+                m["kind"].bad("is none of corners, floor_fillet, depth");
             r.tool = m["tool"].text();
             r.toolRadius = m["toolRadius"].number();
             r.area = m["area"].number();

@@ -69,6 +69,7 @@ private:
     void makeEdgeUnits(const DomainElement& e);
     void leaveCorners(const DomainElement& e, const MachiningUnit& u);
     void leaveFillet(const DomainElement& e, const MachiningUnit& u);
+    void roughAsDeepAsReached(const DomainElement& e, const TemplateStep& step, double top);
     Remainder& remainderOf(const DomainElement& e, const char* kind);
     MachiningUnit& addEdgeUnit(const DomainElement& e, const toolselect::EdgeTool& t, double top, double bottom,
                                double offset);
@@ -191,6 +192,38 @@ void Fuser::leaveFillet(const DomainElement& e, const MachiningUnit& u) {
               " mm deep floor";
 }
 
+// Deeper than every end mill of the crib reaches: the region is roughed from its top down to
+// the depth the longest one reaches, with the tool planned for that depth, and nothing more.
+// The element stays listed (its floor and walls are not reached); what is left goes in the
+// chain's remainders with the reach it needs.
+void Fuser::roughAsDeepAsReached(const DomainElement& e, const TemplateStep& step, double top) {
+    const toolselect::ElementChoice* c = tools_.choice(e.id);
+    if (!c || c->partialRoughingTool < 0 || !(c->partialDepth > 0) || e.type == ElementType::Hole) return;
+    // An element round which one further up (a higher floor, a wider region) was roughed as far
+    // down already: that unit cleared its region's top too.
+    for (const DomainElement* a = tools_.element(e.parent); a; a = tools_.element(a->parent))
+        if (!state_[a->id].shortOfFloor.empty() && std::fabs(a->top - e.top) <= kTol) return;
+    const int r = c->partialRoughingTool;
+    const double bottom = e.top - c->partialDepth;
+    if (!(bottom > tools_.bottomOf(e) + kTol) || !(top - bottom > step.axialAllowance + kTol)) return;
+    if (!tools_.mismatch(tools_.tool(r), e, step, Operation::Pocket, bottom).empty()) return;
+    if (!tools_.roughingReaches(e, r)) return;
+    const std::string listed = state_[e.id].gaps.count(step.code) ? state_[e.id].gaps[step.code] : std::string();
+    MachiningUnit& u = addUnit(e, step, Operation::Pocket, r, top, bottom);
+    u.shortOfFloor = true;
+    u.note = "deeper than every end mill reaches: roughed down " + fmt(c->partialDepth) + " mm of its " +
+             fmt(e.top - e.level) + " mm, as far as " + u.tool + " reaches";
+    state_[e.id].shortOfFloor = "roughed down " + fmt(c->partialDepth) + " mm of its " + fmt(e.top - e.level) +
+                                " mm with " + u.tool + " (the crib's longest reach); below, " + listed;
+    Remainder& rest = remainderOf(e, "depth");
+    rest.step = u.step;
+    rest.tool = u.tool;
+    rest.toolRadius = 0.5 * u.cutter.diameter;
+    rest.depth = bottom - e.level;
+    rest.area = e.area;
+    rest.needs = "an end mill reaching " + fmt(e.top - e.level) + " mm";
+}
+
 void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
     ElementState& st = state_[e.id];
     auto gap = [&](const std::string& why) {
@@ -259,6 +292,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             if (r < 0) {
                 const std::string why = tools_.planError(e, true);
                 gap(why.empty() ? "no roughing tool was planned for " + elementName(e) : why);
+                if (step.code == StepCode::Rough) roughAsDeepAsReached(e, step, top);
                 return;
             }
             const Operation op = step.code == StepCode::CutOff ? Operation::Profile : Operation::Pocket;

@@ -13,10 +13,12 @@ bool clears(StepCode s) { return s == StepCode::Rough || s == StepCode::Web || s
 }  // namespace
 
 void setStockTops(MachiningChain& chain) {
-    // Per element, the enabled clearing units in order: (order, the height they leave).
+    // Per element, the enabled clearing units in order: (order, the height they leave). A
+    // roughing short of its element's floor is not counted on: the gate may leave it out alone.
     std::map<int, std::vector<std::pair<int, double>>> cleared;
     for (const MachiningUnit& u : chain.units)
-        if (u.enabled && clears(u.step)) cleared[u.element].push_back({u.order, u.bottom + u.axialAllowance});
+        if (u.enabled && clears(u.step) && !u.shortOfFloor)
+            cleared[u.element].push_back({u.order, u.bottom + u.axialAllowance});
 
     // What stands over an ancestor's region before unit `order` runs: its top, or the lowest
     // height its clearing units that ran before left.

@@ -34,6 +34,11 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
             {e.id, std::nullopt, "no step of template '" + tmpl.name + "' machines feature type " + ft, {}});
         return;
     }
+    // Roughed only as deep as the crib reaches: listed with what it still needs.
+    if (!st.shortOfFloor.empty() && !listed.count(StepCode::Rough)) {
+        out.push_back({e.id, StepCode::Rough, st.shortOfFloor, {}});
+        listed.insert(StepCode::Rough);
+    }
     if (st.units == 0 && listed.empty()) {
         std::string why;
         for (const auto& [code, text] : st.gaps)

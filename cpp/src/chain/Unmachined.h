@@ -23,6 +23,7 @@ struct ElementState {
     std::string countersinkWhy;       // why not, when there is one and it was not cut
     bool chamfered = false;           // a chamfer mill cut the chamfer along its outer loop
     std::string chamferWhy;           // the chamfers along its edges: what they are and the mill that would fit
+    std::string shortOfFloor;         // roughed only as deep as the crib reaches: why it goes no further
     std::map<StepCode, std::string> gaps;  // why an applicable step made no unit
     std::set<StepCode> steps;              // the steps that made a unit
     int units = 0;

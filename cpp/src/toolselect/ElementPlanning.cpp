@@ -120,6 +120,20 @@ ToolPlan planTools(const DomainTree& tree, const std::vector<Tool>& tools, const
                 c.roughingTool = indexOf(roughers, roughingTool(g, roughers.tools, settings.etaMin, &c.ratio));
             } catch (const Error& err) {
                 appendError(c.error, err.what());
+                // Deeper than every end mill reaches: the tool for as deep as the longest reaches.
+                double longest = 0;
+                for (const Tool& t : roughers.tools)
+                    if (t.isEndMill()) longest = std::max(longest, t.usableLength());
+                if (longest > 0 && longest < g.depth - 1e-6) {
+                    PocketGeometry reached = g;
+                    reached.depth = longest;
+                    try {
+                        c.partialRoughingTool = indexOf(roughers, roughingTool(reached, roughers.tools, settings.etaMin));
+                        c.partialDepth = longest;
+                    } catch (const Error&) {
+                        // no tool for the region at all: listed as it is
+                    }
+                }
             }
             plan.elements.push_back(c);
         } else if (e.type == ElementType::Hole) {

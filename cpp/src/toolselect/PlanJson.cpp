@@ -40,6 +40,7 @@ public:
         return j_.size();
     }
     bool isNull() const { return j_.is_null(); }
+    bool has(const char* key) const { return j_.is_object() && j_.contains(key) && !j_.at(key).is_null(); }
     // A number; null (written for a value that is not finite) reads as NaN.
     double number() const {
         if (j_.is_null()) return std::numeric_limits<double>::quiet_NaN();
@@ -94,6 +95,10 @@ std::string toJson(const ToolPlan& plan, const std::string& material, int indent
                                  {"area", rough ? num(c.ratio.area) : json(nullptr)},
                                  {"narrowPassages", rough ? json(c.ratio.narrowPassages) : json(nullptr)},
                                  {"error", c.error.empty() ? json(nullptr) : json(c.error)}});
+        if (c.partialRoughingTool >= 0) {
+            j["elements"].back()["partialRoughingTool"] = toolId(c.partialRoughingTool);
+            j["elements"].back()["partialDepth"] = num(c.partialDepth);
+        }
     }
     j["holes"] = json::array();
     for (const HoleChoice& h : plan.holes)
@@ -199,6 +204,10 @@ ToolPlan planFromJson(const std::string& text, const std::string& material, cons
             c.ratio.narrowPassages = e["narrowPassages"].integer();
         }
         c.error = e["error"].textOrEmpty();
+        if (e.has("partialRoughingTool")) {  // plans since roughing as deep as the crib reaches
+            c.partialRoughingTool = tool(e["partialRoughingTool"]);
+            c.partialDepth = e["partialDepth"].number();
+        }
         plan.elements.push_back(c);
     }
     const In holes = root["holes"];

@@ -62,6 +62,13 @@ TEST(StockTops, FollowTheOrder) {
     setStockTops(c);
     ASSERT_TRUE(c.units[1].stockTop.has_value());
     EXPECT_DOUBLE_EQ(*c.units[1].stockTop, 20);
+    // Nor is a roughing short of its element's floor counted on (the gate may leave it out
+    // alone): B's roughing comes down from A's top.
+    c = handChain(3, 4);
+    c.units[0].shortOfFloor = true;
+    setStockTops(c);
+    ASSERT_TRUE(c.units[1].stockTop.has_value());
+    EXPECT_DOUBLE_EQ(*c.units[1].stockTop, 20);
 }
 
 // A root element below the blank's top of its setup (a pocket in a face that another setup, or

@@ -75,6 +75,9 @@ struct MachiningUnit {
     Point2 at{0, 0};      // where rapid travel to and from the unit is measured
     std::optional<double> eta;  // machinable ratio of the tool in the element (pocket, rest)
     std::string note;           // why this operation, when it is not the obvious one
+    // A roughing that stops short of the element's floor (deeper than every end mill reaches):
+    // nothing below relies on it, and left out it takes nothing with it.
+    bool shortOfFloor = false;
     bool enabled = true;
     int order = -1;  // position in MachiningChain::order
 };
@@ -156,11 +159,13 @@ struct Unmachined {
 struct Remainder {
     int element = -1;
     StepCode step = StepCode::FinishWall;  // the step whose tool leaves it
-    std::string kind;                      // "corners" or "floor_fillet"
+    std::string kind;                      // "corners", "floor_fillet" or "depth"
     std::string tool;                      // the tool that leaves it
-    double toolRadius = 0;  // corners: that tool's radius; floor_fillet: its corner radius, mm
-    double area = 0;        // the area left, mm² (corners: in plan; floor fillet: the band along the floor's edge)
-    double depth = 0;       // how deep it goes (corners: the wall's height; floor fillet: the band's height), mm
+    double toolRadius = 0;  // corners, depth: that tool's radius; floor_fillet: its corner radius, mm
+    // The area left, mm² (corners: in plan; floor fillet: the band along the floor's edge; depth:
+    // the element's region in plan, under the roughed depth)
+    double area = 0;
+    double depth = 0;       // how deep it goes (corners: the wall's height; floor fillet: the band's height; depth: below the roughing), mm
     std::string needs;      // the tool it would need
 };
 

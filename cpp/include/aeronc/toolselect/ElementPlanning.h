@@ -32,6 +32,10 @@ struct ElementChoice {
     MachinableRatio ratio;   // of the roughing tool, when there is one
     double depth = 0;
     std::string error;       // empty when both tools were found; else one line per failure
+    // No end mill reaches the depth: the roughing tool for the depth the crib's longest end mill
+    // reaches (the region is roughed that far down and the rest listed); -1: none.
+    int partialRoughingTool = -1;
+    double partialDepth = 0;
 };
 
 struct HoleChoice {
