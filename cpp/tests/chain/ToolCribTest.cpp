@@ -8,6 +8,8 @@
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/chain/ConstructionRules.h>
 #include <aeronc/kb/ProcessTemplates.h>
+#include <aeronc/kb/ToolPlanning.h>
+#include <aeronc/toolselect/PlanJson.h>
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 
@@ -405,7 +407,14 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
         EXPECT_NEAR(rest->area, e.area, 1e-6);
     }
     EXPECT_EQ(pockets, 2);
-    // The chain's JSON keeps the remainders.
+    // The chain's JSON keeps the remainders; the tool plan's JSON (as Select tools stores it)
+    // keeps the roughing for the reached depth, and the chain from it is the same.
     EXPECT_EQ(toJson(fromJson(toJson(c))), toJson(c));
+    const std::string text = toolselect::toJson(kb::planTools(tree, kb, "7050-T7451", "AC-5AX"), "7050-T7451");
+    EXPECT_NE(text.find("partialRoughingTool"), std::string::npos);
+    const toolselect::ToolPlan stored = kb::storedToolPlan(kb, text, "7050-T7451");
+    EXPECT_EQ(toolselect::toJson(stored, "7050-T7451"), text);
+    EXPECT_EQ(toJson(kb::planChain(tree, kb, stored, "7050-T7451", "AC-5AX")),
+              toJson(kb::planChain(tree, kb, "7050-T7451", "AC-5AX")));
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
 }
