@@ -258,7 +258,6 @@ def material_left(report, chain, result):
     faces are listed also when the simulation could not measure their faces (area None): they
     are not known to be finished."""
     face_element = result.get("faceElement", [])
-    unclaimed = set(int(f) for f in result.get("unclaimedFaces", []))
     measured = {int(f["face"]): f for f in report.get("coverage", {}).get("faces", [])}
     why, gap_faces = {}, {}  # element -> reasons; element -> the faces it leaves (None: all of them)
     for gap in chain.get("unmachined", []):
