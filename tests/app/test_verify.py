@@ -90,7 +90,7 @@ class VerifyTest(unittest.TestCase):
         why = failing_operations(r)["pocket"]
         self.assertIn("worst 0.10 mm beyond its allowance (move ", why)
         self.assertIn("the top of face {} at x ".format(self.floor), why)
-        self.assertIn(" z 7.9)", why)
+        self.assertIn(" z 8.0)", why)  # the height of the part met: the floor
 
     def test_bad_input_is_named(self):
         with self.assertRaisesRegex(_core.VerifyError, "ops"):
