@@ -152,7 +152,7 @@ std::vector<std::vector<int>> faceGroups(const TopoDS_Shape& solid, const TopToo
 }
 
 // One face on the largest piece's surface bounded by the pieces' edges that only one of them
-// has; a null face when OCCT cannot make it. `base` is set to the piece it replaces.
+// has; a null face when OCCT cannot make it. `baseIndex` is set to the piece it replaces.
 TopoDS_Face mergedFace(const std::vector<TopoDS_Face>& pieces, size_t& baseIndex,
                        const Handle(ShapeBuild_ReShape)& context) {
     size_t largest = 0;
@@ -227,6 +227,11 @@ TopoDS_Shape mergeFacesOfOneSurface(const TopoDS_Shape& input) {
                 continue;
             }
             if (merged.IsNull()) continue;
+            // A valid face may still bound the wrong side of its wires (on a closed surface the
+            // rest of it): the merged face covers what its pieces covered, or it is not kept.
+            double piecesArea = 0;
+            for (const TopoDS_Face& f : pieces) piecesArea += area(f);
+            if (std::abs(area(merged) - piecesArea) > 1e-3 * piecesArea) continue;
             for (size_t i = 0; i < pieces.size(); ++i) {
                 if (i == base) reshape->Replace(pieces[i], merged);
                 else reshape->Remove(pieces[i]);

@@ -10,8 +10,8 @@ namespace aeronc::impeller {
 // Merges adjacent faces of one surface in `solid`: pieces of one face (the same surface) and
 // coplanar faces by ShapeUpgrade_UnifySameDomain limited to those edges, then the pieces it
 // leaves (across a periodic surface's seam, or on coincident cylinders) one group at a time,
-// keeping a group's merge only when the solid stays valid. Returns `solid` itself when nothing
-// merges.
+// keeping a group's merge only when the solid stays one valid solid and the merged face has its
+// pieces' area. Returns `solid` itself when nothing merges.
 TopoDS_Shape mergeFacesOfOneSurface(const TopoDS_Shape& solid);
 
 }  // namespace aeronc::impeller
