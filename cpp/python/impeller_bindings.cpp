@@ -171,14 +171,15 @@ void bindImpeller(py::module_& m) {
                 std::ostringstream os;
                 BRepTools::Write(fused.solid, os);
                 const nlohmann::json j{{"bodies", fused.bodies}, {"fused", fused.fused}, {"dropped", fused.dropped},
-                                       {"fuzzyValue", fused.fuzzyValue}, {"summary", fused.summary}};
+                                       {"fuzzyValue", fused.fuzzyValue}, {"facesFixed", fused.facesFixed},
+                                       {"seconds", fused.seconds}, {"summary", fused.summary}};
                 return py::make_tuple(os.str(), j.dump());
             });
         },
         py::arg("brep_text"),
         "Fuse the solids of a shape given as BREP text (a part exported as several bodies) into one "
-        "valid solid, one body at a time with a fuzzy value: (brep_text, summary_json with bodies, fused, "
-        "dropped, fuzzyValue, summary).");
+        "valid solid, all fused to the largest in one Boolean (BodyFusion.h): (brep_text, summary_json with "
+        "bodies, fused, dropped, fuzzyValue, facesFixed, seconds, summary).");
 
     m.def(
         "make_impeller",

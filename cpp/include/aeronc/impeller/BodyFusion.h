@@ -1,6 +1,6 @@
 #pragma once
 // A part exported as several bodies (an impeller's hub and each blade a body of its own) made
-// one solid for recognition: the bodies fused to the largest one, one at a time.
+// one solid for recognition: the bodies fused to the largest one in one Boolean.
 #include <TopoDS_Shape.hxx>
 #include <string>
 
@@ -11,7 +11,9 @@ struct FusedBodies {
     int bodies = 0;          // solids in the input
     int fused = 0;           // of those, fused into the result (the largest included)
     int dropped = 0;         // degenerate bodies left out (no volume to speak of)
-    double fuzzyValue = 0;   // the largest fuzzy value a step needed, mm
+    double fuzzyValue = 0;   // the fuzzy value the fuse needed, mm
+    int facesFixed = 0;      // faces of the fuse OCCT's checker refused, fixed
+    double seconds = 0;      // the time it took
     std::string summary;     // one line for the user
 };
 
@@ -19,11 +21,13 @@ struct FusedBodies {
 int solidCount(const TopoDS_Shape& shape);
 
 // Fuses the solids of `shape` into one valid solid. Bodies of less than 1e-4 of the largest's
-// volume (slivers an exporter leaves) are dropped. Each body is fused to the growing solid alone,
-// with a fuzzy value of 1e-3 mm, else 1e-2 mm (exported bodies overlap or touch to their
-// export tolerance), and the step is kept only when it leaves one solid that OCCT's checker
-// accepts, once faces of one surface are merged again. Throws aeronc::inputError when the shape holds
-// no solid or a body does not touch the others, geometryError when a step fails at every value.
-FusedBodies fuseBodies(const TopoDS_Shape& shape);
+// volume (slivers an exporter leaves) are dropped. The others are fused to the largest in one
+// Boolean, with a fuzzy value of 0, else 1e-3 mm, else 1e-2 mm (exported bodies overlap, or touch
+// to their export tolerance); faces OCCT's checker refuses are fixed (ShapeFix_Face), and the
+// faces the fuse split on one surface merged again (FaceMerging.h). The fuse stops at its next
+// check once `timeLimit` seconds have passed. Throws aeronc::inputError when the shape holds no
+// solid or bodies do not touch the largest (naming them), geometryError when no fuzzy value
+// gives one valid solid, or the time limit is reached.
+FusedBodies fuseBodies(const TopoDS_Shape& shape, double timeLimit = 300);
 
 }  // namespace aeronc::impeller
