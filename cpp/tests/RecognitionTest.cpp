@@ -232,6 +232,28 @@ TEST(Recognition, RegionStopsAtTheFootOfASplineFloorBlend) {
     EXPECT_LT(xmax, 36 + 0.3);
 }
 
+// A ring groove (R5 outside, R3 boss inside, 2 deep, the boss's top flush with the block's, a
+// mark engraved in its middle 1.5 deep): its concave cylinder is a hole's wall over the face
+// adjacency, open above along its axis through the mark, but a boss stands in it. The element
+// is the pocket round the boss; a hole of the whole circle would mill the boss away
+// (milled_003's E38: 0.52 mm into its boss, whose letters open its axis).
+TEST(Recognition, RingGrooveIsAPocketRoundItsBossNotAHole) {
+    TopoDS_Shape part =
+        cut(BRepPrimAPI_MakeBox(60, 40, 20).Shape(),
+            BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 18), gp::DZ()), 5, 3).Shape());
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 18), gp::DZ()), 3, 2).Shape()).Shape();
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(29.5, 19.5, 18.5), 1, 1, 2).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* groove = nullptr;
+    for (const DomainElement& e : t.elements) {
+        EXPECT_FALSE(e.type == ElementType::Hole && std::fabs(e.level - 18) < 1e-6) << "a hole at the groove's floor";
+        if (std::fabs(e.level - 18) < 1e-6 && e.type != ElementType::Hole) groove = &e;
+    }
+    ASSERT_NE(groove, nullptr);
+    EXPECT_EQ(groove->islands.size(), 1u);
+    EXPECT_FALSE(groove->contourFaces.empty());
+}
+
 // A boss on a plate whose sides lean out as they rise (20 x 20 at the plate's top, 10, and
 // 24 x 24 at its own, 30: a drafted island wider at the top, as CTC-02's bosses round its
 // flange). A tool from above clearing the plate's top must keep off the boss's top edge: the
