@@ -165,6 +165,95 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
     EXPECT_NEAR(xmin, 60, 0.02);
 }
 
+// The same wall leaning back from the floor, with a boss on that floor whose foot is filleted
+// (R2): the level is sliced over the fillets, 2 above the floor, where the slope stands 1.2 mm
+// further back than at its foot (milled_002's bevel beside its blends). The region still stops
+// at the foot.
+TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBackBesideFloorFillets) {
+    TopoDS_Shape part = BRepPrimAPI_MakeBox(100, 40, 20).Shape();
+    BRepBuilderAPI_MakePolygon side;
+    for (const gp_Pnt& p : {gp_Pnt(0, 0, 20), gp_Pnt(60, 0, 20), gp_Pnt(54, 0, 30), gp_Pnt(0, 0, 30)}) side.Add(p);
+    side.Close();
+    const TopoDS_Shape step = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(side.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
+    part = BRepAlgoAPI_Fuse(part, step).Shape();
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(75, 10, 20), 15, 20, 10).Shape()).Shape();
+    part = filletEdgesAt(part, 20, 75, 10, 90, 30, 2);
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* floor = nullptr;
+    for (const DomainElement& e : t.elements)
+        if (std::fabs(e.level - 20) < 1e-6) floor = &e;
+    ASSERT_NE(floor, nullptr);
+    ASSERT_NEAR(floor->floorFilletRadius, 2, 1e-6);  // sliced over the fillets
+    double xmin = HUGE_VAL;
+    for (const auto& p : floor->contour) xmin = std::min(xmin, p[0]);
+    EXPECT_NEAR(xmin, 60, 0.02);
+}
+
+// A rib across a plate whose feet are blended by B-spline curves (a quarter circle R4
+// approximated), as CAD systems write variable or conic blends: no radius can be given the
+// cutter's corner, and the slice stands over them (at the rib's walls, 4 from its foot). The
+// flange's region stops where the blend meets the floor, not under the blend.
+TEST(Recognition, RegionStopsAtTheFootOfASplineFloorBlend) {
+    auto blend = [](double cx, double cz, double from, double to) {
+        TColgp_Array1OfPnt pts(1, 9);
+        for (int k = 0; k < 9; ++k) {
+            const double a = from + (to - from) * k / 8;
+            pts.SetValue(k + 1, gp_Pnt(cx + 4 * std::cos(a), 0, cz + 4 * std::sin(a)));
+        }
+        return BRepBuilderAPI_MakeEdge(GeomAPI_PointsToBSpline(pts, 3, 3, GeomAbs_C2, 1e-7).Curve()).Edge();
+    };
+    // The rib's section in XZ: 40..60 wide, 10..20 high, the blends from 36 and to 64 on the floor.
+    auto line = [](double x0, double z0, double x1, double z1) {
+        return BRepBuilderAPI_MakeEdge(gp_Pnt(x0, 0, z0), gp_Pnt(x1, 0, z1)).Edge();
+    };
+    BRepBuilderAPI_MakeWire w;
+    w.Add(line(64, 10, 36, 10));
+    w.Add(blend(36, 14, -M_PI / 2, 0));
+    w.Add(line(40, 14, 40, 20));
+    w.Add(line(40, 20, 60, 20));
+    w.Add(line(60, 20, 60, 14));
+    w.Add(blend(64, 14, M_PI, 3 * M_PI / 2));
+    ASSERT_TRUE(w.IsDone());
+    const TopoDS_Shape rib = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(w.Wire()).Face(), gp_Vec(0, 60, 0)).Shape();
+    const TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(100, 60, 10).Shape(), rib).Shape();
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* left = nullptr;
+    for (const DomainElement& e : t.elements) {
+        if (std::fabs(e.level - 10) > 1e-6) continue;
+        double x0 = HUGE_VAL;
+        for (const auto& p : e.contour) x0 = std::min(x0, p[0]);
+        if (x0 < 10) left = &e;
+    }
+    ASSERT_NE(left, nullptr);
+    double xmax = -HUGE_VAL;
+    for (const auto& p : left->contour) xmax = std::max(xmax, p[0]);
+    EXPECT_GT(xmax, 36 - 0.05);
+    // Sampled 0.01 over the floor, where the blend stands 0.28 from its foot line (0.01 deep).
+    EXPECT_LT(xmax, 36 + 0.3);
+}
+
+// A ring groove (R5 outside, R3 boss inside, 2 deep, the boss's top flush with the block's, a
+// mark engraved in its middle 1.5 deep): its concave cylinder is a hole's wall over the face
+// adjacency, open above along its axis through the mark, but a boss stands in it. The element
+// is the pocket round the boss; a hole of the whole circle would mill the boss away
+// (milled_003's E38: 0.52 mm into its boss, whose letters open its axis).
+TEST(Recognition, RingGrooveIsAPocketRoundItsBossNotAHole) {
+    TopoDS_Shape part =
+        cut(BRepPrimAPI_MakeBox(60, 40, 20).Shape(),
+            BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 18), gp::DZ()), 5, 3).Shape());
+    part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, 18), gp::DZ()), 3, 2).Shape()).Shape();
+    part = cut(part, BRepPrimAPI_MakeBox(gp_Pnt(29.5, 19.5, 18.5), 1, 1, 2).Shape());
+    const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
+    const DomainElement* groove = nullptr;
+    for (const DomainElement& e : t.elements) {
+        EXPECT_FALSE(e.type == ElementType::Hole && std::fabs(e.level - 18) < 1e-6) << "a hole at the groove's floor";
+        if (std::fabs(e.level - 18) < 1e-6 && e.type != ElementType::Hole) groove = &e;
+    }
+    ASSERT_NE(groove, nullptr);
+    EXPECT_EQ(groove->islands.size(), 1u);
+    EXPECT_FALSE(groove->contourFaces.empty());
+}
+
 // A boss on a plate whose sides lean out as they rise (20 x 20 at the plate's top, 10, and
 // 24 x 24 at its own, 30: a drafted island wider at the top, as CTC-02's bosses round its
 // flange). A tool from above clearing the plate's top must keep off the boss's top edge: the

@@ -90,6 +90,18 @@ void addChainHoles(std::vector<ElementDraft>& made, const SetupView& view, const
             }
             continue;
         }
+        // A boss standing in it (a ring groove round it, milled_003's): the slicing's pocket with
+        // that island, bounded by these walls alone, is the element. A hole of the whole circle
+        // would cut the boss.
+        bool ring = false;
+        for (std::size_t j = 0; j < first && !ring; ++j) {
+            const ElementDraft& d = made[j];
+            if (d.dropped || d.el.contourFaces.empty() || d.el.islandFaces.empty()) continue;
+            bool inside = true;
+            for (int f : d.el.contourFaces) inside = inside && walls.count(f);
+            ring = inside;
+        }
+        if (ring) continue;
         // The slicing's drafts bounded by these walls alone were this hole, seen in part.
         for (std::size_t j = 0; j < first; ++j) {
             ElementDraft& d = made[j];

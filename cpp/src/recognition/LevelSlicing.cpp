@@ -78,11 +78,40 @@ double LevelSlicing::islandTop(const VoidRegion& c, const Path& hole, double top
     return std::isfinite(hi) ? std::min(hi, top) : top;
 }
 
-Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const {
+namespace {
+// The segments of the section loops that run on face f.
+std::vector<std::pair<P2, P2>> segmentsOn(const std::vector<SectionLoop>& loops, int f) {
+    std::vector<std::pair<P2, P2>> out;
+    for (const SectionLoop& L : loops)
+        for (std::size_t k = 0; k < L.pts.size() && k < L.faces.size(); ++k)
+            if (L.faces[k] == f) out.push_back({L.pts[k], L.pts[(k + 1) % L.pts.size()]});
+    return out;
+}
+
+// How far any end of a's segments lies from b's nearest segment.
+double farthestFrom(const std::vector<std::pair<P2, P2>>& a, const std::vector<std::pair<P2, P2>>& b) {
+    double worst = 0;
+    for (const auto& s : a)
+        for (const P2& p : {s.first, s.second}) {
+            double d = kInf;
+            for (const auto& t : b) d = std::min(d, segmentDistance(p, t.first, t.second));
+            worst = std::max(worst, d);
+        }
+    return worst;
+}
+}  // namespace
+
+Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double h, double zl, double z,
+                                    std::vector<int>& leaning) const {
     const std::vector<FaceInSetup>& fs = view_.fs;
     const double tol = 10 * view_.tol.linear;
     if (!(z - zl > 0.1 * tol)) return {};
-    Paths near;
+    Paths near, nearFloor;  // footprints of the material sampled at zl, and at the floor
+    auto footprint = [&](int f) {
+        P2 lo, hi;
+        view_.faceBox(f, lo, hi);
+        return Path{toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})};
+    };
     // The faces along the region's boundary: its walls, and those its contour loops run on (an
     // exterior region knows its walls by probes only).
     std::vector<int> bounding = c.contourFaces;
@@ -92,6 +121,7 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
     for (const SectionLoop* L : c.islandLoops)
         if (L)
             for (int f : L->faces) pushUnique(bounding, f);
+    std::vector<int> down;  // leaning faces going on down past zl, into the fillets' band
     for (int f : bounding) {
         const FaceInSetup& s = fs[static_cast<std::size_t>(f)];
         const bool facesUp = s.att == Attitude::Inclined && dot(faces_[f].normal, view_.frame.w) > 0;
@@ -105,16 +135,75 @@ Paths LevelSlicing::leaningMaterial(const VoidRegion& c, double zl, double z, st
         const bool wall = std::find(c.contourFaces.begin(), c.contourFaces.end(), f) != c.contourFaces.end();
         if (wall && (facesUp || !faces_[f].concave)) leaning.push_back(f);
         // Its footprint: its box in the setup's frame (the same however the part is placed).
-        P2 lo, hi;
-        view_.faceBox(f, lo, hi);
-        near.push_back({toInt(lo), toInt({hi.x, lo.y}), toInt(hi), toInt({lo.x, hi.y})});
+        near.push_back(footprint(f));
+        if (s.lo < zl - 2 * tol) down.push_back(f);
     }
-    if (near.empty()) return {};
-    Clipper clip;
-    clip.AddPaths(materialAt(zl), ptSubject, true);
-    clip.AddPaths(near, ptClip, true);
+    // Floor fillets: the slice stands over them, and the cutter keeps off them by the least
+    // radius of the round ones (cylinders, tori, spheres). A blend of another kind (a B-spline)
+    // rising higher than that, or with no round fillet beside it, is kept off at the floor.
+    std::vector<int> blends;
+    double radius = kInf;
+    for (int fl : c.floors)
+        for (int n : faces_[fl].neighbours) {
+            const FaceInSetup& s = fs[static_cast<std::size_t>(n)];
+            const SurfaceKind k = faces_[n].kind;
+            if (s.att != Attitude::Curved || k == SurfaceKind::Cone || !(s.hi > h + tol)) continue;
+            if (k == SurfaceKind::Cylinder || k == SurfaceKind::Torus || k == SurfaceKind::Sphere)
+                radius = std::min(radius, faces_[n].radius);
+            else if (std::fabs(s.lo - h) <= tol)
+                pushUnique(blends, n);
+        }
+    if (!std::isfinite(radius)) radius = 0;  // no round fillet: the walls are taken to meet the floor
+    for (int n : blends)
+        if (!(fs[static_cast<std::size_t>(n)].hi - h <= radius + tol)) nearFloor.push_back(footprint(n));
     Paths out;
-    clip.Execute(ctIntersection, out, pftEvenOdd, pftNonZero);
+    auto within = [&](const Paths& material, const Paths& boxes) {
+        if (boxes.empty()) return;
+        Clipper clip;
+        clip.AddPaths(material, ptSubject, true);
+        clip.AddPaths(boxes, ptClip, true);
+        Paths part;
+        clip.Execute(ctIntersection, part, pftEvenOdd, pftNonZero);
+        out.insert(out.end(), part.begin(), part.end());
+    };
+    within(materialAt(zl), near);
+    // A leaning face going on down past the fillets' top leans out further still to the floor
+    // (milled_002's bevel meeting the floor beside its blends): the material at the floor as far
+    // from its foot as its section at zl lies (not its whole box, which would keep the region off
+    // the round fillets beside it too, those the cutter's corner is told of).
+    // Just over the floor: a plane through the floor's edges would give degenerate sections.
+    if (!(zl - h > 2 * tol) || (down.empty() && nearFloor.empty())) return out;
+    const double hf = h + std::min(tol, 0.5 * (zl - h));
+    std::vector<std::string> ignored;
+    const std::vector<SectionLoop> atFloor =
+        sliceLoops(faces_, cutFaces(hf), view_.frame, hf, view_.tol.chord, view_.tol.linear, ignored, view_.meshes);
+    if (!down.empty()) {
+        const std::vector<SectionLoop> atLow =
+            sliceLoops(faces_, cutFaces(zl), view_.frame, zl, view_.tol.chord, view_.tol.linear, ignored, view_.meshes);
+        for (int f : down) {
+            const auto foot = segmentsOn(atFloor, f), above = segmentsOn(atLow, f);
+            if (foot.empty()) continue;
+            if (above.empty()) {
+                nearFloor.push_back(footprint(f));
+                continue;
+            }
+            const double lean = std::max(farthestFrom(foot, above), farthestFrom(above, foot)) + tol;
+            Paths lines;
+            for (const auto& sg : foot) lines.push_back({toInt(sg.first), toInt(sg.second)});
+            ClipperOffset strip;
+            strip.AddPaths(lines, jtRound, etOpenRound);
+            Paths band;
+            strip.Execute(band, lean * kClipperScale);
+            nearFloor.insert(nearFloor.end(), band.begin(), band.end());
+        }
+    }
+    Paths material;
+    for (const SectionLoop& L : atFloor) {
+        Path q;
+        for (const P2& p : L.pts) q.push_back(toInt(p));
+        material.push_back(q);
+    }
+    within(material, nearFloor);
     return out;
 }
 
@@ -209,7 +298,7 @@ std::vector<VoidRegion> LevelSlicing::trimToReach(const VoidRegion& c, double h,
     // pocket the tool may clear down to its floor) keeps off it. No warning: a bevel or a round
     // falling past the floor is ordinary geometry.
     std::vector<int> leaningFaces;
-    Paths leaning = leaningMaterial(c, low, z, leaningFaces);
+    Paths leaning = leaningMaterial(c, h, low, z, leaningFaces);
     // Walls leaning over the region (an island wider at its top): their material at the top.
     for (Path& p : overhangingMaterial(c, z, top)) leaning.push_back(std::move(p));
     // Material over the region starts above an underside between the slice and the top: a

@@ -40,14 +40,16 @@ private:
     // The pieces of c's region reachable from above: what lies under material between the slice
     // z and `top` (an undercut, with a warning) and the material that walls leaning back from
     // the floor (a bevel facing up, a round falling past the floor) hold between the slice and
-    // `low` are left out. Of a region with floors each piece holding some of them (with those
+    // `low`, or the floor h where they go on down, and B-spline floor fillets are left out. Of a region with floors each piece holding some of them (with those
     // floors), else the largest piece; none when nothing is reachable.
     std::vector<VoidRegion> trimToReach(const VoidRegion& c, double h, double z, double low, double top,
                                         std::vector<std::string>& warnings) const;
     // The material at height zl within the boxes of c's contour faces that lean back between
-    // zl and z, as paths; empty when none leans.
-    // `leaning` receives those faces.
-    ClipperLib::Paths leaningMaterial(const VoidRegion& c, double zl, double z, std::vector<int>& leaning) const;
+    // zl and z, and at the floor h within the boxes of those going on down past zl and of the
+    // floor fillets without a radius (B-spline blends), as paths; empty when none leans.
+    // `leaning` receives the leaning walls.
+    ClipperLib::Paths leaningMaterial(const VoidRegion& c, double h, double zl, double z,
+                                      std::vector<int>& leaning) const;
     // The material that walls leaning over the region hold between the slice z and `top` (an
     // island wider at its top than at the slice, a drafted boss, a dovetail side), within the
     // boxes of those faces, as paths; empty when none leans over. A tool from above keeps off

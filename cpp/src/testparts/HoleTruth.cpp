@@ -106,9 +106,18 @@ std::vector<bool> holeWallsByGeometry(const TopoDS_Shape& solid, double minSpanD
         int span = 0;
         for (bool c : covered[g]) span += c;
         if (span < minSpanDegrees || members[g].empty()) continue;
-        // A hole is empty along its axis; a groove round a boss is not.
-        inside.Perform(axisMid[g], 1e-6);
-        if (inside.State() == TopAbs_OUT)
+        // A hole is empty along its axis and all round it inside its wall; a groove round a
+        // boss is not (even where a mark engraved in the boss opens the axis, milled_003's).
+        const Axis& a = groups[g];
+        bool empty = true;
+        for (double part : {0.0, 0.25, 0.5, 0.75, 0.9})
+            for (int k = 0; k < (part > 0 ? 8 : 1) && empty; ++k) {
+                const double t = 2 * kPi * k / 8;
+                const gp_Vec off = (gp_Vec(a.x) * std::cos(t) + gp_Vec(a.y) * std::sin(t)) * (part * a.radius);
+                inside.Perform(axisMid[g].Translated(off), 1e-6);
+                empty = inside.State() == TopAbs_OUT;
+            }
+        if (empty)
             for (int f : members[g]) out[static_cast<std::size_t>(f)] = true;
     }
     return out;
