@@ -18,6 +18,12 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
     const std::string ft = featureTypeOf(e);
     bool anyStep = false;
     std::set<StepCode> listed;
+    // Roughed only as deep as the crib reaches: listed first, with what it still needs (the
+    // finishing steps' own reasons follow).
+    if (!st.shortOfFloor.empty()) {
+        out.push_back({e.id, StepCode::Rough, st.shortOfFloor, {}});
+        listed.insert(StepCode::Rough);
+    }
     for (const TemplateStep& s : tmpl.steps) {
         if (s.existence == Existence::MustNot || !s.machines(ft)) continue;
         anyStep = true;
@@ -33,11 +39,6 @@ void listUnmachined(const DomainElement& e, const ElementState& st, const Proces
         out.push_back(
             {e.id, std::nullopt, "no step of template '" + tmpl.name + "' machines feature type " + ft, {}});
         return;
-    }
-    // Roughed only as deep as the crib reaches: listed with what it still needs.
-    if (!st.shortOfFloor.empty() && !listed.count(StepCode::Rough)) {
-        out.push_back({e.id, StepCode::Rough, st.shortOfFloor, {}});
-        listed.insert(StepCode::Rough);
     }
     if (st.units == 0 && listed.empty()) {
         std::string why;

@@ -392,10 +392,15 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
         ASSERT_TRUE(t) << rough.tool;
         EXPECT_GE(t->usableLength() + 1e-9, 60) << rough.tool;
         EXPECT_NE(rough.note.find("roughed down 60 mm of its 90 mm"), std::string::npos) << rough.note;
+        // Listed first for the element: what was roughed and what it still needs.
         const Unmachined* listed = nullptr;
         for (const Unmachined& m : c.unmachined)
-            if (m.element == e.id && m.step == StepCode::Rough) listed = &m;
+            if (m.element == e.id) {
+                listed = &m;
+                break;
+            }
         ASSERT_TRUE(listed) << "element " << e.id;
+        EXPECT_EQ(listed->step, StepCode::Rough);
         EXPECT_NE(listed->reason.find("roughed down 60 mm of its 90 mm with " + rough.tool), std::string::npos)
             << listed->reason;
         EXPECT_NE(listed->reason.find("it needs an end mill reaching 90"), std::string::npos) << listed->reason;
