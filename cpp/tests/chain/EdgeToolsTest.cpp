@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 using namespace aeronc;
 using namespace aeronc::chain;
@@ -193,6 +195,34 @@ TopoDS_Shape pocketWithChamferedIsland() {
     return ch.Shape();
 }
 
+recognition::DomainTree recogniseUp(const TopoDS_Shape& shape, const std::string& name) {
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    return recognition::recognise(validatedSolid(shape, name), o);
+}
+
+// The element whose attached features hold a chamfer, and that chamfer (the last found); nulls
+// when none does.
+std::pair<const recognition::DomainElement*, const recognition::AttachedFeature*> chamferOf(
+    const recognition::DomainTree& tree) {
+    std::pair<const recognition::DomainElement*, const recognition::AttachedFeature*> found{nullptr, nullptr};
+    for (const auto& e : tree.elements)
+        for (const auto& a : e.attached)
+            if (a.kind == "chamfer") found = {&e, &a};
+    return found;
+}
+
+// An element's edge unit and its wall-finishing unit (the last of each); nulls when it has none.
+std::pair<const MachiningUnit*, const MachiningUnit*> edgeAndWall(const MachiningChain& c, int element) {
+    std::pair<const MachiningUnit*, const MachiningUnit*> found{nullptr, nullptr};
+    for (const MachiningUnit& u : c.units) {
+        if (u.element != element) continue;
+        if (u.step == StepCode::Edge) found.first = &u;
+        if (u.step == StepCode::FinishWall) found.second = &u;
+    }
+    return found;
+}
+
 }  // namespace
 
 // Recognition measures the chamfer (90 degree mill, 2 mm wide, rising from the walls' top at
@@ -200,14 +230,8 @@ TopoDS_Shape pocketWithChamferedIsland() {
 // (CM-90-D6: tip 0.5 mm) along the pocket's outline: the axis 0.25 + 0.2 mm inside the walls,
 // the tip 0.2 mm under the chamfer's lower line, and lists nothing of it.
 TEST(EdgeTools, PocketMouthChamferIsCutAlongTheOutlineByTheMillThatFits) {
-    recognition::RecogniseOptions o;
-    o.directions = {{0, 0, 1}};
-    const auto tree = recognition::recognise(validatedSolid(chamferedPocket(), "chamfered pocket"), o);
-    const recognition::AttachedFeature* chamfer = nullptr;
-    const recognition::DomainElement* pocket = nullptr;
-    for (const auto& e : tree.elements)
-        for (const auto& a : e.attached)
-            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    const auto tree = recogniseUp(chamferedPocket(), "chamfered pocket");
+    const auto [pocket, chamfer] = chamferOf(tree);
     ASSERT_TRUE(chamfer);
     EXPECT_EQ(chamfer->faces.size(), 4u);
     EXPECT_NEAR(chamfer->angle, 90, 1e-6);
@@ -229,13 +253,7 @@ TEST(EdgeTools, PocketMouthChamferIsCutAlongTheOutlineByTheMillThatFits) {
     const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
     for (const Unmachined& m : c.unmachined)
         EXPECT_EQ(m.reason.find("chamfer"), std::string::npos) << "element " << m.element << ": " << m.reason;
-    const MachiningUnit* edge = nullptr;
-    const MachiningUnit* wall = nullptr;
-    for (const MachiningUnit& u : c.units) {
-        if (u.element != pocket->id) continue;
-        if (u.step == StepCode::Edge) edge = &u;
-        if (u.step == StepCode::FinishWall) wall = &u;
-    }
+    const auto [edge, wall] = edgeAndWall(c, pocket->id);
     ASSERT_TRUE(edge);
     ASSERT_TRUE(wall);
     EXPECT_EQ(edge->operation, Operation::Chamfer);
@@ -268,14 +286,8 @@ TEST(EdgeTools, PocketMouthChamferIsCutAlongTheOutlineByTheMillThatFits) {
 // recognition says the chamfer does not run along the whole loop, and the chain lists its faces
 // with the crib's mill that would fit them.
 TEST(EdgeTools, ChamferAlongPartOfTheOutlineIsListedWithTheMillThatFits) {
-    recognition::RecogniseOptions o;
-    o.directions = {{0, 0, 1}};
-    const auto tree = recognition::recognise(validatedSolid(chamferedPocket(false), "chamfered pocket"), o);
-    const recognition::AttachedFeature* chamfer = nullptr;
-    const recognition::DomainElement* pocket = nullptr;
-    for (const auto& e : tree.elements)
-        for (const auto& a : e.attached)
-            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    const auto tree = recogniseUp(chamferedPocket(false), "chamfered pocket");
+    const auto [pocket, chamfer] = chamferOf(tree);
     ASSERT_TRUE(chamfer);
     EXPECT_EQ(chamfer->faces.size(), 2u);
     EXPECT_NEAR(chamfer->angle, 90, 1e-6);
@@ -298,14 +310,8 @@ TEST(EdgeTools, ChamferAlongPartOfTheOutlineIsListedWithTheMillThatFits) {
 // it), and the chain cuts it after the walls with one pass round the island, the axis 0.45 mm
 // outside it, the outer loop taken open all round so that no pass runs along it.
 TEST(EdgeTools, IslandChamferedAllRoundIsCutRoundTheIsland) {
-    recognition::RecogniseOptions o;
-    o.directions = {{0, 0, 1}};
-    const auto tree = recognition::recognise(validatedSolid(pocketWithChamferedIsland(), "chamfered island"), o);
-    const recognition::AttachedFeature* chamfer = nullptr;
-    const recognition::DomainElement* pocket = nullptr;
-    for (const auto& e : tree.elements)
-        for (const auto& a : e.attached)
-            if (a.kind == "chamfer") chamfer = &a, pocket = &e;
+    const auto tree = recogniseUp(pocketWithChamferedIsland(), "chamfered island");
+    const auto [pocket, chamfer] = chamferOf(tree);
     ASSERT_TRUE(chamfer);
     EXPECT_EQ(chamfer->faces.size(), 4u);
     EXPECT_NEAR(chamfer->angle, 90, 1e-6);
@@ -324,13 +330,7 @@ TEST(EdgeTools, IslandChamferedAllRoundIsCutRoundTheIsland) {
     const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
     for (const Unmachined& m : c.unmachined)
         EXPECT_EQ(m.reason.find("chamfer"), std::string::npos) << "element " << m.element << ": " << m.reason;
-    const MachiningUnit* edge = nullptr;
-    const MachiningUnit* wall = nullptr;
-    for (const MachiningUnit& u : c.units) {
-        if (u.element != pocket->id) continue;
-        if (u.step == StepCode::Edge) edge = &u;
-        if (u.step == StepCode::FinishWall) wall = &u;
-    }
+    const auto [edge, wall] = edgeAndWall(c, pocket->id);
     ASSERT_TRUE(edge);
     ASSERT_TRUE(wall);
     EXPECT_EQ(edge->tool, "CM-90-D6");
