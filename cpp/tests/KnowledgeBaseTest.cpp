@@ -6,6 +6,7 @@
 #include <aeronc/core/Error.h>
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
+#include <aeronc/kb/LongReach.h>
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
@@ -32,15 +33,19 @@ namespace {
 
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
 // 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib and the
-// 5 extra-long-neck end mills, the long-reach D3 ball of schema version 8, and version 9's two
-// micro end mills.
-constexpr std::size_t kShippedTools = 98;
+// 5 extra-long-neck end mills, the long-reach D3 ball of schema version 8, version 9's two
+// micro end mills and version 10's eleven long-reach end mills D16-D32.
+constexpr std::size_t kShippedTools = 109;
 // The crib's tools added by schema versions 6 and 7 (docs/tool-crib.md).
 constexpr std::size_t kCribTools = 35;
 // The extra-long-neck series schema version 7 added (8 x D).
 const std::vector<std::string> kExtraLongNeck = {"EM-F1.5x12", "EM-F2x16", "EM-F3x24", "EM-F4x32", "EM-F6x48"};
 // Schema version 9: micro end mills for lettering 0.25-0.4 mm wide.
 const std::vector<std::string> kVersion9 = {"EM-F0.2", "EM-F0.3"};
+// Schema version 10: long-reach end mills D16-D32 reaching 80-160 mm for deep open regions.
+const std::vector<std::string> kVersion10 = {"EM-F16x80",  "EM-F16x100",  "EM-F20x100",   "EM-F20x130",
+                                             "EM-F25x125", "EM-F25x160",  "EM-F32x160",   "EM-B16R2x80",
+                                             "EM-B20R3x100", "EM-B25R4x125", "EM-B32R4x160"};
 
 // What schema version 6 added to a new file (docs/tool-crib.md), removed again: the layout and
 // rows of a version-5 file, from which a test makes the older ones.
@@ -873,6 +878,68 @@ TEST_F(KnowledgeBaseTest, MigratesVersionEightAddingTheMicroEndMills) {
     }
 }
 
+// Version 9 to 10: the long-reach end mills D16-D32 join a file that carries the shipped crib,
+// as a new file has them, and not a user's own; the user's rows stay. They reach 80-160 mm
+// (5-6.5 x D) on a neck below the cutter, cut layers no higher than their flutes, and take the
+// long-reach reductions of the cutting data for every material.
+TEST_F(KnowledgeBaseTest, MigratesVersionNineAddingTheLongReachEndMills) {
+    KnowledgeBase shipped = openDefault(dir_ / "fresh10.sqlite");
+    std::map<std::string, Tool> made;
+    for (const Tool& t : shipped.tools()) made[t.id] = t;
+    for (bool ownCrib : {false, true}) {
+        SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
+        const fs::path p = dir_ / (ownCrib ? "own9.sqlite" : "shipped9.sqlite");
+        { openDefault(p); }
+        std::string drop = "DELETE FROM tool WHERE id IN (";
+        for (std::size_t i = 0; i < kVersion10.size(); ++i) drop += (i ? ", '" : "'") + kVersion10[i] + "'";
+        rawExec(p, drop + "); UPDATE schema_version SET version = 9;" + (ownCrib ? "DELETE FROM tool;" : "") +
+                       "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
+                       "VALUES ('MY-F40', 'flat', 'carbide', 40, 0, 4, 60, 120);");
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+        EXPECT_TRUE(fs::exists(p.string() + ".v9.bak"));
+        std::map<std::string, Tool> byId;
+        for (const Tool& t : kb.tools()) byId[t.id] = t;
+        EXPECT_TRUE(byId.count("MY-F40"));
+        EXPECT_EQ(byId.size(), ownCrib ? 1u : kShippedTools + 1);
+        if (ownCrib) continue;
+        double longest = 0;
+        const aeronc::kb::LongReach reduction = aeronc::kb::LongReach::of(kb);
+        for (const std::string& id : kVersion10) {
+            ASSERT_TRUE(byId.count(id)) << id;
+            const Tool& t = byId[id];
+            EXPECT_NO_THROW(t.validate()) << id;
+            EXPECT_TRUE(t.isEndMill()) << id;
+            EXPECT_TRUE(t.necked()) << id;
+            EXPECT_LT(t.neckDiameter, t.diameter) << id;
+            EXPECT_DOUBLE_EQ(t.reach, made.at(id).reach) << id;
+            EXPECT_DOUBLE_EQ(t.fluteLength, made.at(id).fluteLength) << id;
+            EXPECT_GE(t.diameter, 16) << id;
+            EXPECT_LE(t.diameter, 32) << id;
+            EXPECT_GE(t.usableLength(), 80) << id;
+            EXPECT_LE(t.usableLength(), 160) << id;
+            EXPECT_LT(t.passHeight(), t.usableLength()) << id;
+            longest = std::max(longest, t.usableLength());
+            for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+                for (const std::string op : {"roughing", "finishing"}) {
+                    const auto c = kb.cuttingCondition(m, t.material, op, t.diameter);
+                    EXPECT_GT(c.fz, 0) << id << " " << m << " " << op;
+                    // Reduced axial depth and chip for the long overhang.
+                    ASSERT_TRUE(reduction.applies(t)) << id;
+                    const auto r = reduction.applied(t, c);
+                    EXPECT_LT(r.ap, c.ap) << id << " " << m << " " << op;
+                    EXPECT_LT(r.fz, c.fz) << id << " " << m << " " << op;
+                }
+        }
+        EXPECT_DOUBLE_EQ(longest, 160);
+        // Before version 10 no end mill reached past 60 mm.
+        for (const auto& [id, t] : byId)
+            if (t.isEndMill() && id != "MY-F40" &&
+                std::find(kVersion10.begin(), kVersion10.end(), id) == kVersion10.end())
+                EXPECT_LE(t.usableLength(), 60) << id;
+    }
+}
+
 // The shop crib as shipped: the catalogue sizes, necks below the cutter, reach beyond the flutes
 // on the necked tools, edge tools, and small-tool cutting data below the standard rows.
 TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
@@ -888,7 +955,8 @@ TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
             EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
             EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
         }
-    EXPECT_EQ(necked, kCribTools - 1 + 1 + kVersion9.size());  // all but EM-BALL16; EM-BALL3x30; version 9's
+    // All but EM-BALL16; EM-BALL3x30; version 9's and version 10's.
+    EXPECT_EQ(necked, kCribTools - 1 + 1 + kVersion9.size() + kVersion10.size());
     for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
         EXPECT_TRUE(byId.count(id)) << id;
     // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.

@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 8 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 10 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -141,7 +141,21 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-BALL3x30','ball', 'carbide',   3, 1.5,  2,  4.5,  75,  30,  56, 2.85),
 -- Micro flat end mills for lettering and engraving 0.25-0.4 mm wide (schema version 9).
   ('EM-F0.2',    'flat', 'carbide', 0.2,   0,  2,  0.6,  38, 1.0,  32, 0.18),
-  ('EM-F0.3',    'flat', 'carbide', 0.3,   0,  2,  0.9,  38, 1.5,  30, 0.28);
+  ('EM-F0.3',    'flat', 'carbide', 0.3,   0,  2,  0.9,  38, 1.5,  30, 0.28),
+-- Long-reach end mills D16-D32 for deep open regions (schema version 10, migrations/v9_to_v10.sql):
+-- a cutter on a relieved neck or a slim shrink-fit extension no wider than the cutter within its
+-- reach, 5-6.5 x D; flutes 1.5 x D. Past 4 x D the long-reach reductions of a_p and f_z apply.
+  ('EM-F16x80',   'flat', 'carbide', 16,   0, 3, 24.0, 130,  80, 180, 15.0),
+  ('EM-F16x100',  'flat', 'carbide', 16,   0, 3, 24.0, 150, 100, 205, 15.0),
+  ('EM-F20x100',  'flat', 'carbide', 20,   0, 3, 30.0, 155, 100, 230, 19.0),
+  ('EM-F20x130',  'flat', 'carbide', 20,   0, 3, 30.0, 185, 130, 265, 19.0),
+  ('EM-F25x125',  'flat', 'carbide', 25,   0, 3, 38.0, 185, 125, 300, 24.0),
+  ('EM-F25x160',  'flat', 'carbide', 25,   0, 3, 38.0, 220, 160, 345, 24.0),
+  ('EM-F32x160',  'flat', 'carbide', 32,   0, 4, 48.0, 225, 160, 420, 30.0),
+  ('EM-B16R2x80', 'bull', 'carbide', 16,   2, 4, 24.0, 130,  80, 195, 15.0),
+  ('EM-B20R3x100','bull', 'carbide', 20,   3, 4, 30.0, 155, 100, 250, 19.0),
+  ('EM-B25R4x125','bull', 'carbide', 25,   4, 4, 38.0, 185, 125, 325, 24.0),
+  ('EM-B32R4x160','bull', 'carbide', 32,   4, 4, 48.0, 225, 160, 455, 30.0);
 
 -- Chamfer and corner-rounding mills (docs/tool-crib.md).
 INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach, cost) VALUES

@@ -7,6 +7,7 @@
 #include <aeronc/brep/PartIO.h>
 #include <aeronc/chain/ChainJson.h>
 #include <aeronc/chain/ConstructionRules.h>
+#include <aeronc/kb/LongReach.h>
 #include <aeronc/kb/ProcessTemplates.h>
 #include <aeronc/kb/ToolPlanning.h>
 #include <aeronc/toolselect/PlanJson.h>
@@ -87,6 +88,51 @@ TEST(ToolCrib, DeepPocketWithR3CornersIsFinishedByTheLongReachEndMill) {
             }
         EXPECT_TRUE(steps.count(StepCode::Rough));
         EXPECT_TRUE(steps.count(StepCode::Web));
+    }
+    EXPECT_EQ(pockets, 2);
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+// 94 mm deep, 76 mm wide, R12 corners: deeper than every end mill of the crib before schema
+// version 10 reaches (60 mm, the D12 x 60), so no roughing tool was found and the pocket was left.
+// The long-reach end mills D16-D32 of version 10 rough, floor and finish it, each unit within its
+// tool's reach, in layers no higher than the flutes and at the long-reach a_p.
+TEST(ToolCrib, PocketDeeperThanEveryStandardReachIsMachinedWithTheLongReachEndMills) {
+    testparts::PanelSpec s = pocketsOnly(100, 6, 12);
+    s.pitch = 80;
+    const auto tree = recogniseUp(s);
+    const test::KbDir dir("crib_long");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    const kb::LongReach reduction = kb::LongReach::of(kb);
+    int pockets = 0;
+    for (const auto& e : tree.elements) {
+        if (e.type != recognition::ElementType::ClosedPocket) continue;
+        ++pockets;
+        EXPECT_NEAR(e.top - e.level, 94, 1e-6);
+        for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, e.id) << m.reason;
+        std::set<StepCode> steps;
+        for (const MachiningUnit& u : c.units) {
+            if (u.element != e.id) continue;
+            steps.insert(u.step);
+            const ChainTool* t = c.tool(u.tool);
+            ASSERT_TRUE(t) << u.tool;
+            EXPECT_GE(t->usableLength() + 1e-9, e.top - u.bottom) << u.tool;
+            if (e.top - u.bottom <= 60) continue;
+            // Below 60 mm only the long-reach end mills reach: D16 and more, 80 mm and more.
+            EXPECT_GE(t->diameter, 16 - 1e-9) << u.tool;
+            EXPECT_GE(t->usableLength(), 80 - 1e-9) << u.tool;
+            EXPECT_LE(u.stepDown, t->fluteLength + 1e-9) << u.tool;
+            if (u.step == StepCode::Rough) {
+                const auto hb = kb.cuttingCondition("7050-T7451", t->material, "roughing", t->diameter);
+                EXPECT_LE(u.stepDown, reduction.apFactor * hb.ap + 1e-9) << u.tool;
+            }
+        }
+        EXPECT_TRUE(steps.count(StepCode::Rough)) << "element " << e.id;
+        EXPECT_TRUE(steps.count(StepCode::Web)) << "element " << e.id;
+        const auto walls = finishWalls(c, e.id);
+        ASSERT_FALSE(walls.empty()) << "element " << e.id;
+        for (const MachiningUnit* u : walls) EXPECT_NEAR(u->bottom, e.level, 1e-6);
     }
     EXPECT_EQ(pockets, 2);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
