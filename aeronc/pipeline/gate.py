@@ -4,8 +4,8 @@ The posted programs are simulated (pipeline.verification). Every operation that 
 or rapids through material fails its check; so does every operation the toolpath core refused
 (it has no toolpath). A failed operation is left out of the delivered program (the posts'
 --skip-failed, aeronc.post.readiness), and with it what depends on it: the later operations of
-the same element and of the elements inside it (they would cut, with a finishing tool and its
-feeds, the material it was to remove), and any operation that, once the program is posted
+the same element, those of the elements inside it when it is a roughing (they would cut, with a
+finishing tool and its feeds, the material it was to remove), and any operation that, once the program is posted
 again without them, removes far more material than it did with them. The programs are then
 simulated again; this repeats until nothing fails.
 """
@@ -46,11 +46,20 @@ def short_of_floor(op):
     return bool(unit_of(op).get("shortOfFloor"))
 
 
+def roughs(op):
+    """Whether an operation is a roughing (step r): the one that clears the element's volume,
+    where the elements inside it open."""
+    from aeronc.operations.base import unit_of
+    return unit_of(op).get("step") == "r"
+
+
 def dependents(ops, left_out, result):
     """{label: why} of the operations (ops in program order, active ones) that follow a left-out
-    operation of their own element or of an element that contains theirs. A roughing that stops
-    short of its element's floor (deeper than every end mill reaches) takes nothing with it:
-    nothing below relies on what it removes."""
+    operation of their own element, or a left-out roughing of an element that contains theirs.
+    A finishing left out leaves its allowance on its own walls and floor only: what lies inside
+    the element is still checked by the simulation (gouges, rapids) and by the load (grown). A
+    roughing that stops short of its element's floor (deeper than every end mill reaches) takes
+    nothing with it: nothing below relies on what it removes."""
     parent = {int(e["id"]): int(e.get("parent", -1)) for e in result.get("elements", [])}
 
     def ancestors(element):
@@ -61,18 +70,18 @@ def dependents(ops, left_out, result):
         return seen
 
     out = {}
-    gone = []  # (element, label) of the left-out operations met so far
+    gone = []  # (element, label, roughing?) of the left-out operations met so far
     for op in ops:
         element = int(getattr(op, "ElementId", -1))
         if op.Label in left_out or op.Label in out:
             if not short_of_floor(op):
-                gone.append((element, op.Label))
+                gone.append((element, op.Label, roughs(op)))
             continue
         mine = ancestors(element)
-        before = next((label for e, label in gone if e in mine), None)
+        before = next((label for e, label, rough in gone if e == element or (rough and e in mine)), None)
         if before is not None:
             out[op.Label] = "left out with {}: it would cut the material that operation leaves".format(before)
-            gone.append((element, op.Label))
+            gone.append((element, op.Label, roughs(op)))
     return out
 
 

@@ -1,5 +1,5 @@
 """The gate's dependents: what a left-out operation takes with it. An element's later operations
-and those of the elements inside it go with it; a roughing that stops short of its element's
+go with it, and, when it is a roughing, those of the elements inside it; a roughing that stops short of its element's
 floor (deeper than every end mill reaches) takes nothing with it, and left out alone it leaves
 the programs incomplete, not unready."""
 import json
@@ -21,7 +21,7 @@ RESULT = {"elements": [{"id": 1, "parent": -1}, {"id": 2, "parent": 1}, {"id": 3
 
 class DependentsTest(unittest.TestCase):
     def ops(self, short_of_floor):
-        return [_Op("Pocket E1 r U0", 1, {"shortOfFloor": True} if short_of_floor else {}),
+        return [_Op("Pocket E1 r U0", 1, {"step": "r", "shortOfFloor": True} if short_of_floor else {"step": "r"}),
                 _Op("Pocket E2 r U1", 2), _Op("Profile E2 fs U2", 2), _Op("Pocket E3 r U3", 3)]
 
     def test_a_left_out_roughing_takes_the_elements_inside_with_it(self):
@@ -31,6 +31,16 @@ class DependentsTest(unittest.TestCase):
 
     def test_a_roughing_short_of_its_floor_takes_nothing_with_it(self):
         self.assertEqual(gate.dependents(self.ops(True), {"Pocket E1 r U0": "gouges"}, RESULT), {})
+
+    def test_a_left_out_finishing_takes_its_own_elements_later_operations_only(self):
+        ops = [_Op("Pocket E1 r U0", 1, {"step": "r"}), _Op("Profile E1 sf U1", 1, {"step": "sf"}),
+               _Op("Pocket E2 r U2", 2, {"step": "r"}), _Op("Profile E1 ff U3", 1, {"step": "ff"}),
+               _Op("Profile E2 fs U4", 2, {"step": "fs"})]
+        out = gate.dependents(ops, {"Profile E1 sf U1": "no toolpath"}, RESULT)
+        self.assertEqual(sorted(out), ["Profile E1 ff U3"])
+        # The roughing left out takes the element inside, and that element's later operations.
+        out = gate.dependents(ops, {"Pocket E1 r U0": "gouges"}, RESULT)
+        self.assertEqual(sorted(out), ["Pocket E2 r U2", "Profile E1 ff U3", "Profile E1 sf U1", "Profile E2 fs U4"])
 
     def test_an_element_apart_is_not_taken(self):
         out = gate.dependents(self.ops(False), {"Pocket E2 r U1": "gouges"}, RESULT)
