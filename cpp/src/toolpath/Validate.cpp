@@ -11,6 +11,9 @@ namespace aeronc::toolpath {
 
 namespace {
 constexpr double kMaxCoordinate = 1e6;  // mm; keeps Clipper's integers in their fast range
+// mm: points closer than this to the last one kept are dropped. Sections of tessellated faces
+// carry zigzags of a tenth of a micron that fold back on themselves; no cutter sees them.
+constexpr double kSamePoint = 1e-3;
 
 std::string fmt(double v) {
     char b[32];
@@ -49,9 +52,10 @@ Loop checkedLoop(const Loop& loop, const std::string& what) {
         if (!std::isfinite(p[0]) || !std::isfinite(p[1])) throw inputError(what + " has a non-finite coordinate");
         if (std::abs(p[0]) > kMaxCoordinate || std::abs(p[1]) > kMaxCoordinate)
             throw inputError(what + " lies beyond 10^6 mm of the origin");
-        if (l.empty() || std::hypot(p[0] - l.back()[0], p[1] - l.back()[1]) > 1e-9) l.push_back(p);
+        if (l.empty() || std::hypot(p[0] - l.back()[0], p[1] - l.back()[1]) > kSamePoint) l.push_back(p);
     }
-    while (l.size() > 1 && std::hypot(l.front()[0] - l.back()[0], l.front()[1] - l.back()[1]) <= 1e-9) l.pop_back();
+    while (l.size() > 1 && std::hypot(l.front()[0] - l.back()[0], l.front()[1] - l.back()[1]) <= kSamePoint)
+        l.pop_back();
     if (l.size() < 3) throw inputError(what + " needs at least 3 distinct points");
     double extent = 0;
     for (const Point& p : l) extent = std::max({extent, std::abs(p[0] - l[0][0]), std::abs(p[1] - l[0][1])});

@@ -323,6 +323,27 @@ TEST(PocketClearing, CutAndRapidLengthsAddUp) {
     EXPECT_GT(cut, 0);
 }
 
+TEST(PocketClearing, ASubMicronFoldInASectionIsNoCrossing) {
+    // A tessellated section's zigzag as on NIST CTC-04: three points a tenth of a micron apart
+    // folding back on the edge between them. The cutter cannot see it: the pocket is cleared as
+    // the clean rectangle is.
+    const PocketParameters p = params(5);
+    const Cutter c{10, 0};
+    Loop folded{{0, 0}, {20, 0}, {20.0001, 0}, {20.0001, 0.0001}, {20.0002, 0}, {40, 0}, {40, 30}, {0, 30}};
+    const Toolpath clean = pocketClearing(PocketUnit{{{0, 0}, {40, 0}, {40, 30}, {0, 30}}, {}, {}, 0, -5}, c, p);
+    const Toolpath path = pocketClearing(PocketUnit{folded, {}, {}, 0, -5}, c, p);
+    ASSERT_EQ(path.moves.size(), clean.moves.size());
+    for (std::size_t i = 0; i < path.moves.size(); ++i) {
+        EXPECT_NEAR(path.moves[i].u, clean.moves[i].u, 1e-3);
+        EXPECT_NEAR(path.moves[i].v, clean.moves[i].v, 1e-3);
+    }
+    // A fold of a millimetre is a real fault of the loop and still refused.
+    Loop fault{{0, 0}, {20, 0}, {21, 0}, {21, 1}, {22, 0}, {40, 0}, {40, 30}, {0, 30}};
+    fault[3] = {20.5, 0}, fault[4] = {22, 0};
+    EXPECT_NE(inputErrorOf([&] { pocketClearing(PocketUnit{fault, {}, {}, 0, -5}, c, p); }).find("crosses"),
+              std::string::npos);
+}
+
 TEST(PocketClearing, BadInputIsAClearError) {
     const PocketParameters p = params(5);
     const Cutter c{10, 0};
