@@ -205,7 +205,8 @@ def verify(job):
         if not failing and not grown:
             break
         regrown = _regrow(job, failing, report)
-        _leave_out(job, {k: v for k, v in failing.items() if k not in regrown},
+        _leave_out(job, {k: v + ("; " + job.regrown[k]["note"] if k in job.regrown else "")
+                         for k, v in failing.items() if k not in regrown},
                    {op["label"]: "gouge" if int(op.get("gouges", 0)) else "rapid" for op in report.get("ops", [])})
         _leave_out(job, grown, "dependent")
         _leave_out(job, gate.dependents(_active_operations(job), job.left_out, job.result), "dependent")
