@@ -96,6 +96,23 @@ int ElementTools::roughingTool(const DomainElement& e) const {
     return r;
 }
 
+double ElementTools::allowanceOf(const TemplateStep& step, const Tool& t, const DomainElement* e) const {
+    double most = 0, mostFinishing = 0;
+    for (const TemplateStep& s : tmpl_.steps) {
+        most = std::max(most, s.radialAllowance);
+        if (s.role == ToolRole::Finishing) mostFinishing = std::max(mostFinishing, s.radialAllowance);
+    }
+    const double cap = opt_.allowanceRatio * t.diameter;
+    const double scale = most > cap ? cap / most : 1.0;
+    double a = step.radialAllowance * scale;
+    if (e && step.role == ToolRole::Finishing && e->type != ElementType::OpenPocket && e->minWidth > 0) {
+        const double leaves = mostFinishing * scale, room = 0.25 * (e->minWidth - t.diameter - 2 * kTol);
+        const bool fits = t.diameter + 2 * leaves <= e->minWidth - kTol;
+        if (!fits && room > 0) a *= room / leaves;
+    }
+    return a;
+}
+
 // The offset the toolpath gives a pocket's boundary for tool `t` leaving `ar` (capped as
 // allowanceOf caps it), with toolpath::floorFilletOffset's growth where the floor fillet is
 // larger than the tool's corner plus the allowance; whether any centre is left inside it.
@@ -175,7 +192,7 @@ std::string ElementTools::mismatch(const Tool& t, const DomainElement& e, const 
     const double need = top - bottom;
     if (t.usableLength() + kTol < need)
         return who + " reaches " + fmt(t.usableLength()) + " mm; " + elementName(e) + " needs " + fmt(need) + " mm";
-    const double ar = allowanceOf(step, t);
+    const double ar = allowanceOf(step, t, &e);
     if ((op == Operation::Profile || op == Operation::Rest) && !leave.corners) {
         // Side fillet: the tool follows the concave corners.
         if (e.minCornerRadius >= 0 && t.radius() > e.minCornerRadius + kTol)

@@ -32,17 +32,15 @@ struct Leaves {
 
 class ElementTools {
 public:
-    // The radial allowance a unit of `step` with tool `t` leaves: the step's own, or, for a tool
-    // too small to leave the template's largest allowance (ChainOptions::allowanceRatio of its
-    // diameter), every step's scaled down alike, so each step still leaves less than the one
-    // before (a cap alone would give a micro tool's steps one allowance, and the later ones
-    // would cut nothing).
-    double allowanceOf(const TemplateStep& step, const toolselect::Tool& t) const {
-        double most = 0;
-        for (const TemplateStep& s : tmpl_.steps) most = std::max(most, s.radialAllowance);
-        const double cap = opt_.allowanceRatio * t.diameter;
-        return most > cap ? step.radialAllowance * cap / most : step.radialAllowance;
-    }
+    // The radial allowance a unit of `step` with tool `t` leaves in element `e`: the step's own,
+    // or, for a tool too small to leave the template's largest allowance (ChainOptions::
+    // allowanceRatio of its diameter), every step's scaled down alike, so each step still leaves
+    // less than the one before (a cap alone would give a micro tool's steps one allowance, and
+    // the later ones would cut nothing). In a closed groove wider than the tool but narrower than
+    // it with its finishing allowances (engraved strokes), the finishing steps are scaled down
+    // alike to a quarter of the room the width leaves, so the floor pass's centre line stays inside.
+    double allowanceOf(const TemplateStep& step, const toolselect::Tool& t,
+                       const recognition::DomainElement* e = nullptr) const;
     // settingOf: the cutting data of a tool; empty: the plan's own settings.
     ElementTools(const recognition::DomainTree& tree, const toolselect::ToolPlan& plan, const ProcessTemplate& t,
                  const ChainOptions& o, ToolSettingOf settingOf);

@@ -106,7 +106,7 @@ MachiningUnit& Fuser::addUnit(const DomainElement& e, const TemplateStep& step, 
     if (e.type == ElementType::Opening && op == Operation::Profile)
         u.bottom = std::max(bottom - t.cornerRadius, std::min(u.bottom, top - t.usableLength()));
     const bool floorless = e.type == ElementType::Opening || e.type == ElementType::Hole;
-    u.radialAllowance = tools_.allowanceOf(step, t);
+    u.radialAllowance = tools_.allowanceOf(step, t, &e);
     u.axialAllowance = floorless ? 0.0 : step.axialAllowance;
     u.floorFilletRadius = floorless ? 0.0 : std::max(0.0, e.floorFilletRadius);
 
@@ -271,6 +271,15 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
             // lettering narrower than the smallest tool plus twice its allowance): a roughing unit
             // would get no toolpath and take the element's finishing units down with it. The
             // finishing tool, when one fits, cuts the element alone.
+            // An element no deeper than the floor allowance roughing leaves: it would cut nothing
+            // (the toolpath refuses it). The floor unit cuts it from the top.
+            if (op == Operation::Pocket && top - bottom <= step.axialAllowance + kTol) {
+                std::string fwhy;
+                if (tools_.finisher(e, fwhy) < 0)
+                    gap(elementName(e) + " is " + fmt(top - bottom) + " mm deep, no deeper than the roughing's " +
+                        fmt(step.axialAllowance) + " mm floor allowance" + (fwhy.empty() ? "" : "; " + fwhy));
+                return;
+            }
             if (op == Operation::Pocket && !tools_.roughingReaches(e, r)) {
                 std::string fwhy;
                 if (tools_.finisher(e, fwhy) < 0)
@@ -346,7 +355,7 @@ void Fuser::makeUnits(const DomainElement& e, const TemplateStep& step) {
                 // The finishing tool fits the corners; only passages narrower than it leave
                 // some of that to the wall steps.
                 if (passages) {
-                    const auto thin = toolselect::machinableRatio(g, ct.radius() + tools_.allowanceOf(step, ct));
+                    const auto thin = toolselect::machinableRatio(g, ct.radius() + tools_.allowanceOf(step, ct, &e));
                     rest -= thin.area - thin.machinableArea;
                     eta = thin.eta;
                 }

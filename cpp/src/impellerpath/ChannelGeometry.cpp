@@ -220,7 +220,7 @@ Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::Impell
         throw inputError("impeller toolpaths: blades " + std::to_string(bladeA) + " and " +
                          std::to_string(bladeB % n) + " have no stretch of channel with both walls along it");
     // The hub under this channel: the one face of revolution, or the pieces (an exporter's
-    // piece per channel) whose points lie between the two walls.
+    // piece per channel) with a share of their points between the two walls.
     auto addPiece = [&](int id) {
         HubPiece h;
         h.face = face(id);
@@ -242,7 +242,9 @@ Channel::Channel(const TopTools_IndexedMapOfShape& faces, const impeller::Impell
                 const double span = wrapAngle(tb - ta);
                 in += span > 0 && wrapAngle(t - ta) > 0 && wrapAngle(t - ta) < span;
             }
-            if (pts.empty() || in < 0.5 * pts.size()) continue;
+            // A tenth: an exporter's pieces need not follow the channels (on the shared impeller
+            // each channel runs over two pieces, a third to a half of each inside it).
+            if (pts.empty() || in < 0.1 * pts.size()) continue;
             addPiece(id);
             hub_.back().theta = frame_.theta(pts[pts.size() / 2]);
             for (const auto& p : pts) hubLo = std::min(hubLo, frame_.radius(p)), hubHi = std::max(hubHi, frame_.radius(p));

@@ -1,5 +1,5 @@
 // Impeller toolpaths: the four strategies (Strategies.h) over every channel kind, on two threads,
-// then turned about the axis to every channel (see the header).
+// then turned about the axis to every channel and placed again there (see the header).
 #include <aeronc/impellerpath/ImpellerToolpaths.h>
 
 #include "ChannelGeometry.h"
@@ -18,14 +18,6 @@
 #include <thread>
 
 namespace aeronc::impellerpath {
-
-namespace {
-
-Move turnedMove(const Frame& fr, const Move& m, double angle) {
-    return Move{fr.turned(m.centre, angle), fr.turnedVector(m.axis, angle), m.rapid};
-}
-
-}  // namespace
 
 double CutterShape::radiusAt(double h) const {
     return tipRadius + std::max(h, 0.0) * std::sin(taperDeg * kPi / 180);
@@ -118,17 +110,61 @@ ImpellerProgram impellerToolpaths(const TopoDS_Shape& part, const impeller::Impe
         if (t.error) std::rethrow_exception(t.error);
         merge(prog.check, t.check);
     }
-    // The channels in angular order: channel c is its kind's base turned by its pattern step;
-    // the inducer ahead of a main blade's channel follows it.
-    for (int c = 0; c < channels; ++c) {
-        const int kind = c % kinds;
-        const double angle = (c / kinds) * pitch;
-        for (auto [base, op] : {std::pair{&baseRough, &rough}, {&baseBlades, &blades}, {&baseHub, &hub}, {&baseFillets, &fillets}}) {
-            for (const auto& m : (*base)[kind]) op->moves.push_back(turnedMove(frame, m, angle));
-            if (kind == 0 && bases > kinds)
-                for (const auto& m : (*base)[kinds]) op->moves.push_back(turnedMove(frame, m, angle));
+    // Every other channel: its kind's base turned by its pattern step, then placed again against
+    // its own blades and hub, since exported blades are not exact copies (a turned position may
+    // gouge or touch there): each (channel, operation, base) in turn on the two threads.
+    std::vector<std::vector<Move>>* byOp[4] = {&baseRough, &baseHub, &baseBlades, &baseFillets};
+    const CutterShape* cutterOf[4] = {&rougher, &finisher, &finisher, &fillets.cutter};
+    const Links* linksOf[4] = {&roughLinks, &finishLinks, &finishLinks, &filletLinks};
+    struct Turned {
+        int channel, op, base;
+        CheckResult check;
+        std::vector<Move> moves;
+        std::exception_ptr error;
+    };
+    std::vector<Turned> turned;
+    for (int c = kinds; c < channels; ++c)
+        for (int op = 0; op < 4; ++op)
+            for (int b : {c % kinds, kinds})
+                if ((b < kinds || (c % kinds == 0 && bases > kinds)) && !(*byOp[op])[b].empty())
+                    turned.push_back({c, op, b, {}, {}, nullptr});
+    next = 0;
+    auto placeAgain = [&] {
+        for (size_t i; (i = next++) < turned.size();) {
+            Turned& t = turned[i];
+            try {
+                const Channel ch = t.base == kinds ? Channel(faces, f, t.channel, t.channel + 2) : Channel(faces, f, t.channel);
+                Checker check{ch, *cutterOf[t.op], opt, t.check, t.op == 0 ? opt.roughAllowance : 0.0};
+                placeTurned((*byOp[t.op])[t.base], (t.channel / kinds) * pitch, check, *linksOf[t.op], t.moves);
+            } catch (...) {
+                t.error = std::current_exception();
+            }
         }
+    };
+    std::thread other(placeAgain);
+    placeAgain();
+    other.join();
+    for (const Turned& t : turned) {
+        if (t.error) std::rethrow_exception(t.error);
+        merge(prog.check, t.check);
     }
+    // The channels in angular order; the inducer ahead of a main blade's channel follows it.
+    Operation* opOf[4] = {&rough, &hub, &blades, &fillets};
+    for (int c = 0; c < channels; ++c)
+        for (int op : {0, 2, 1, 3})
+            for (int b : {c % kinds, kinds}) {
+                if (b == kinds && !(c % kinds == 0 && bases > kinds)) continue;
+                const std::vector<Move>* moves = &(*byOp[op])[b];
+                if (c >= kinds) {
+                    if (moves->empty()) continue;
+                    // turned[] holds the tasks in (channel, op, base) order; assembly takes them
+                    // in (channel, rough/blades/hub/fillets, base) order: find this one.
+                    auto it = std::find_if(turned.begin(), turned.end(),
+                                           [&](const Turned& t) { return t.channel == c && t.op == op && t.base == b; });
+                    moves = &it->moves;
+                }
+                opOf[op]->moves.insert(opOf[op]->moves.end(), moves->begin(), moves->end());
+            }
     prog.operations = {rough, blades, hub};
     if (cutters.filletBall) prog.operations.push_back(fillets);
     return prog;

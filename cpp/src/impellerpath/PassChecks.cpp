@@ -127,6 +127,25 @@ void Links::append(std::vector<Move>& out, const std::vector<Move>& whole, Check
     out.push_back(outTop);
 }
 
+void placeTurned(const std::vector<Move>& linked, double angle, Checker& check, const Links& links,
+                 std::vector<Move>& out) {
+    const Frame& fr = check.ch.frame();
+    for (size_t i = 0; i < linked.size();) {
+        if (linked[i].rapid) {
+            ++i;
+            continue;
+        }
+        size_t end = i;
+        while (end < linked.size() && !linked[end].rapid) ++end;
+        // [i, end): the pass's cutting positions, then its exit (rebuilt by append).
+        std::vector<Move> pass;
+        for (size_t k = i; k + 1 < end; ++k)
+            check.add(pass, fr.turned(linked[k].centre, angle), fr.turnedVector(linked[k].axis, angle), links, out);
+        links.append(out, pass, check);
+        i = end;
+    }
+}
+
 void merge(CheckResult& into, const CheckResult& r) {
     into.positions += r.positions;
     into.holderCollisions += r.holderCollisions;

@@ -68,6 +68,13 @@ struct Links {
     void append(std::vector<Move>& out, const std::vector<Move>& pass, Checker& check) const;
 };
 
+// Moves as Links::append writes them (each pass: two rapids in, the cutting positions, the exit
+// at feed, a rapid out) turned about the axis by `angle`, then placed again as `check`'s channel
+// asks: every cutting position stepped back, tilted or left out against that channel's own
+// blades and hub (an exporter's blades are not exact copies), the links made and checked anew.
+void placeTurned(const std::vector<Move>& linked, double angle, Checker& check, const Links& links,
+                 std::vector<Move>& out);
+
 // Adds the counts of r to `into`, keeping the deeper gouge and where it is.
 void merge(CheckResult& into, const CheckResult& r);
 

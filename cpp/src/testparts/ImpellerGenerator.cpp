@@ -239,6 +239,8 @@ TopoDS_Compound compoundOf(const std::vector<TopoDS_Shape>& shapes) {
 
 void checkSpec(const ImpellerSpec& s) {
     if (s.bladeCount < 3 || s.bladeCount > 40) fail("blade count must be 3 to 40");
+    if (s.offPitchBlade >= s.bladeCount || std::abs(s.offPitchDeg) > 1)
+        fail("offPitchBlade must name a main blade, turned off its pitch by at most 1 degree");
     if (s.pumpPlate) {
         if (!(s.plateThickness > 0)) fail("the back plate's thickness must be positive");
         if (s.hubSpline || s.seamAcrossBlade) fail("a pump impeller's hub is a plane: no hub spline, no seam");
@@ -409,13 +411,14 @@ Impeller makeImpeller(const ImpellerSpec& spec) {
     }
     std::vector<BladeBuild> blades;  // in angular order
     for (int k = 0; k < m; ++k) {
+        const double angle = k * pitch + (k == spec.offPitchBlade ? spec.offPitchDeg * kDeg : 0.0);
         gp_Trsf turn;
-        turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), k * pitch);
+        turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), angle);
         const TopLoc_Location loc(turn);
         for (int kind = 0; kind < (spec.splitters ? 2 : 1); ++kind) {
             if (kind == 1 && k == spec.omitSplitter) continue;
             BladeBuild b = proto[kind];
-            b.angle += k * pitch;
+            b.angle += angle;
             b.solid = b.solid.Moved(loc);
             for (auto& w : b.walls) w = w.Moved(loc);
             b.shroud = b.shroud.Moved(loc);
@@ -589,6 +592,8 @@ ImpellerSpec impellerSpecFromJson(const std::string& text) {
         };
         if (k == "bladeCount") integer(s.bladeCount);
         else if (k == "omitSplitter") integer(s.omitSplitter);
+        else if (k == "offPitchBlade") integer(s.offPitchBlade);
+        else if (k == "offPitchDeg") number(s.offPitchDeg);
         else if (k == "splitters") {
             if (!v.is_boolean()) throw inputError("impeller spec: splitters must be true or false");
             s.splitters = v.get<bool>();

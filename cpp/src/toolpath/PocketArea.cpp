@@ -12,7 +12,7 @@ namespace {
 constexpr double kOnContour = 0.1;  // mm: how far an open edge may stray from the contour
 }
 
-PocketArea pocketArea(const PocketUnit& unit, double extension) {
+PocketArea pocketArea(const PocketUnit& unit, double extension, bool openCorners) {
     const Loop contour = checkedLoop(unit.contour, "the contour");
     clip::Paths outer{clip::toPath(contour)};
     if (!ClipperLib::Orientation(outer[0])) ClipperLib::ReversePath(outer[0]);
@@ -39,12 +39,29 @@ PocketArea pocketArea(const PocketUnit& unit, double extension) {
         Point n{-(q[1] - p[1]) / len, (q[0] - p[0]) / len};
         const double probe = std::min(kOnContour * 2, len / 4);
         if (clip::contains(outer, {mid[0] + n[0] * probe, mid[1] + n[1] * probe})) n = {-n[0], -n[1]};
+        // openCorners: where two open edges meet at a convex corner (a pocket open on two sides
+        // of the blank), the rectangle runs on past that end, or the two rectangles would leave
+        // the corner's quadrant out and a tool wider than the pocket could not pass round it.
+        const Point t{(q[0] - p[0]) / len, (q[1] - p[1]) / len};
+        auto beyond = [&](const Point& end, double sign) {
+            if (!openCorners) return 0.0;
+            for (std::size_t j = 0; j < unit.openEdges.size(); ++j) {
+                if (j == i) continue;
+                const auto& other = unit.openEdges[j];
+                if (clip::distance(other.a, end) > kOnContour && clip::distance(other.b, end) > kOnContour) continue;
+                const Point past{end[0] + sign * t[0] * probe, end[1] + sign * t[1] * probe};
+                return clip::contains(outer, past) ? 0.0 : extension;
+            }
+            return 0.0;
+        };
+        const double before = beyond(p, -1), after = beyond(q, 1);
+        const Point a{p[0] - t[0] * before, p[1] - t[1] * before}, b{q[0] + t[0] * after, q[1] + t[1] * after};
         // Starting a little inside, the rectangle overlaps the contour however it was rounded.
         const double in = kOnContour;
-        Loop rect{{p[0] - n[0] * in, p[1] - n[1] * in},
-                  {q[0] - n[0] * in, q[1] - n[1] * in},
-                  {q[0] + n[0] * extension, q[1] + n[1] * extension},
-                  {p[0] + n[0] * extension, p[1] + n[1] * extension}};
+        Loop rect{{a[0] - n[0] * in, a[1] - n[1] * in},
+                  {b[0] - n[0] * in, b[1] - n[1] * in},
+                  {b[0] + n[0] * extension, b[1] + n[1] * extension},
+                  {a[0] + n[0] * extension, a[1] + n[1] * extension}};
         clip::Path r = clip::toPath(rect);
         if (!ClipperLib::Orientation(r)) ClipperLib::ReversePath(r);
         extensions.push_back(r);

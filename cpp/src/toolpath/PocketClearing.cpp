@@ -165,10 +165,17 @@ Toolpath pocketClearing(const PocketUnit& unit, const Cutter& cutter, const Pock
         inWay.islands.clear();
         for (std::size_t i = 0; i < unit.islands.size(); ++i)
             if (present[i]) inWay.islands.push_back(unit.islands[i]);
-        const PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
+        PocketArea area = pocketArea(inWay, 2 * off + p.clearance);
         Centres c;
-        c.region = area.region;
         c.centres = clip::offset(area.region, -off, tol);
+        // A cutter wider than a pocket open on adjacent sides (FTC-09's flanges) finds room only
+        // round the corners between its open edges: those are taken open then, and only then
+        // (beyond a corner there may be material, and the simulation judges what this cuts).
+        if (!(clip::area(c.centres) > 0) && unit.openEdges.size() >= 2) {
+            area = pocketArea(inWay, 2 * off + p.clearance, true);
+            c.centres = clip::offset(area.region, -off, tol);
+        }
+        c.region = area.region;
         if (!(clip::area(c.centres) > 0))
             throw inputError("the cutter (D " + mm(cutter.diameter) + ", radial allowance " + mm(p.radialAllowance) +
                              ") does not fit in the pocket");

@@ -185,10 +185,12 @@ TEST(ToolCrib, NarrowGroovesAreRoughedWithAnAllowanceTheToolCanLeave) {
     });
 }
 
-// Lettering: grooves 0.36 mm wide and 0.5 mm deep. The D0.5 end mill fits in none; the D0.2 micro
-// end mill of schema version 9 roughs and finishes them with an allowance it can leave.
+// Lettering: grooves 0.36 mm wide and 0.6 mm deep (milled_003's are 0.517 mm; at 0.5 mm the
+// roughing's floor allowance would leave it nothing to cut, PocketsShallowerThan... below). The
+// D0.5 end mill fits in none; the D0.2 micro end mill of schema version 9 roughs and finishes
+// them with an allowance it can leave.
 TEST(ToolCrib, LetteringNarrowerThanHalfAMillimetreIsCutWithTheMicroEndMill) {
-    expectGroovesCut(0.36, 0.5, 0.12, "crib_lettering", [](const MachiningUnit& u) {
+    expectGroovesCut(0.36, 0.6, 0.12, "crib_lettering", [](const MachiningUnit& u) {
         EXPECT_LE(u.cutter.diameter, 0.3 + 1e-9) << toString(u.step) << " " << u.tool;
     });
 }
@@ -200,6 +202,27 @@ TEST(ToolCrib, LetteringNarrowerThanHalfAMillimetreIsCutWithTheMicroEndMill) {
 TEST(ToolCrib, LetteringNarrowerThanTheRoughingAllowanceIsCutByTheFinishingToolAlone) {
     expectGroovesCut(0.28, 0.5, 0.1, "crib_strokes", [](const MachiningUnit& u) {
         EXPECT_LE(u.cutter.diameter, 0.2 + 1e-9) << toString(u.step) << " " << u.tool;
+    }, false);
+}
+
+// Strokes 0.22 mm wide (milled_003's narrowest are 0.213 to 0.23 mm): the D0.2 micro end mill
+// fits, but not with the floor step's allowance (0.2 + 2 x 0.025 = 0.25 mm). The finishing steps
+// leave, scaled alike, a quarter of the room the width leaves, so every step fits the stroke and
+// the walls are still finished last with none.
+TEST(ToolCrib, StrokesBarelyWiderThanTheSmallestEndMillAreFinishedWithTheRoomTheyLeave) {
+    expectGroovesCut(0.22, 0.5, 0.08, "crib_tight_strokes", [](const MachiningUnit& u) {
+        EXPECT_LE(u.cutter.diameter, 0.2 + 1e-9) << toString(u.step) << " " << u.tool;
+        if (u.step == StepCode::FinishWall) EXPECT_EQ(u.radialAllowance, 0.0);
+    }, false);
+}
+
+// Pockets 0.4 mm deep (a shallow recess, a logo): the roughing step's 0.5 mm floor allowance
+// leaves nothing for a roughing unit to cut (its toolpath would refuse it, and the gate would
+// take the finishing units with it). No roughing unit is planned; the floor unit cuts each from
+// its top, and every unit has depth to cut below its floor allowance.
+TEST(ToolCrib, PocketsShallowerThanTheRoughingFloorAllowanceAreCutByTheFloorUnit) {
+    expectGroovesCut(3.0, 0.4, 1.0, "crib_shallow", [](const MachiningUnit& u) {
+        EXPECT_LT(u.bottom + u.axialAllowance, u.top) << toString(u.step) << " " << u.tool;
     }, false);
 }
 

@@ -119,4 +119,8 @@ TEST(ImpellerGenerator, RefusesImpossibleSpecs) {
     s = ImpellerSpec{};
     s.bladeCount = 2;
     EXPECT_NE(inputErrorOf([&] { makeImpeller(s); }).find("blade count"), std::string::npos);
+    s = ImpellerSpec{};
+    s.offPitchBlade = 1;
+    s.offPitchDeg = 3;  // beyond an exporter's error: blades that really differ
+    EXPECT_NE(inputErrorOf([&] { makeImpeller(s); }).find("off its pitch"), std::string::npos);
 }

@@ -486,3 +486,24 @@ TEST(PocketClearing, FloorUnitFacesTheLowerIslandTops) {
         if (f.moves[i].kind == Move::Kind::Feed && f.moves[i].h == f.moves[i - 1].h) plain.insert(f.moves[i].h);
     EXPECT_EQ(plain, (std::set<double>{-12}));
 }
+
+// A slot 3 x 22 mm open to the blank on three sides (FTC-09's flanges): only the wall at v = 22
+// holds material. The D32 with its 1 mm allowance is far wider than the slot, but open on two
+// adjacent sides it passes round the corners beyond them: it cuts the slot up to R + allowance
+// from the wall, and no cutting position comes nearer the wall than that.
+TEST(PocketClearing, PocketOpenOnThreeSidesIsClearedByACutterWiderThanIt) {
+    PocketUnit u{rectangle(0, 0, 3, 22), {}, {}, 0, -6};
+    u.openEdges = {{{0, 0}, {3, 0}}, {{3, 0}, {3, 22}}, {{0, 22}, {0, 0}}};
+    const Cutter c{32, 4};
+    const double keep = 16 + 1;
+    const Toolpath t = pocketClearing(u, c, params(16, 1.0, 0.5));
+    int overSlot = 0;
+    for (const Move& m : t.moves)
+        if (m.kind != Move::Kind::Rapid && m.h < u.top) EXPECT_LE(m.v, 22 - keep + 1e-3) << m.u << " " << m.v;
+    // A cut at the floor along the line the wall allows, across the slot's width.
+    forEachSegmentBelow(t, u.top, [&](const Point& a, const Point& b, Move::Kind k) {
+        overSlot += k == Move::Kind::Feed && std::min(a[1], b[1]) >= 22 - keep - 0.5 &&
+                    std::min(a[0], b[0]) - 16 <= 0 && std::max(a[0], b[0]) + 16 >= 3;
+    });
+    EXPECT_GT(overSlot, 0);
+}

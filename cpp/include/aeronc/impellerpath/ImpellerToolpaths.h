@@ -88,8 +88,10 @@ struct RouteCutters {
 };
 
 // Toolpaths for every channel (adjacent pair of blades) of the part: the two kinds of channel
-// (main to splitter, splitter to main) are computed and checked once, the others are copies
-// turned about the axis by the blade pitch. With splitters, the inducer (from one main blade to
+// (main to splitter, splitter to main) are computed once; the others are those turned about the
+// axis by the blade pitch and placed again against their own blades and hub (stepped back,
+// tilted or left out there: an exported part's blades are not exact copies), so the check covers
+// every channel's moves. With splitters, the inducer (from one main blade to
 // the next, ahead of the splitter's leading edge) is roughed and its hub finished as a third
 // kind, repeated once per main blade. Throws inputError when a cutter does not fit (a
 // ball wider than the channel) or when the part has no channel with both walls along it.

@@ -34,6 +34,10 @@ struct ImpellerSpec {
     bool pumpPlate = false;       // open pump impeller: the blades stand on a flat back plate (no nose
                                   // cone; the hub is the plate's top plane) and have a flat tip
     double plateThickness = 8;    // the back plate of a pump impeller (pumpPlate)
+    // As an exporter writes a part, its blades not exact copies: main blade offPitchBlade (with
+    // its splitter) turned offPitchDeg off its pitch, within the recogniser's tolerance.
+    int offPitchBlade = -1;
+    double offPitchDeg = 0;
 };
 
 // One blade's faces, numbered 1-based as TopExp::MapShapes(shape, TopAbs_FACE) numbers them
