@@ -8,6 +8,13 @@ the same element, those of the elements inside it when it is a roughing (they wo
 finishing tool and its feeds, the material it was to remove), and any operation that, once the program is posted
 again without them, removes far more material than it did with them. The programs are then
 simulated again; this repeats until nothing fails.
+
+Before a roughing operation that gouges is left out, it is re-made once (regrow): its allowances
+grown by the gouge's depth and a margin, its toolpath computed again. It is then checked against
+the allowances it was planned with, the ones its element's later units were planned for: what it
+leaves must be at least that stock. Those units then take the thicker layer it leaves; what they
+remove is measured again from there (rebased), not held against the amount they removed before.
+Should it still gouge, it is left out with what depends on it.
 """
 from aeronc.operations.base import mark
 from aeronc.post import readiness
@@ -16,6 +23,11 @@ from aeronc.post import readiness
 # their load: GROWTH times what it removed before, and at least GROWTH_MM3 more.
 GROWTH = 1.5
 GROWTH_MM3 = 100.0
+# A roughing operation that gouges by g is re-made with its allowances grown by g + REGROW_MARGIN,
+# when that growth is at most REGROW_MAX: more would leave the finishing tools a layer thicker
+# than a finishing cut.
+REGROW_MARGIN = 0.2
+REGROW_MAX = 1.5
 
 
 def not_ready(ops):
@@ -34,9 +46,10 @@ def fail(op, why):
     mark(op, readiness.FAILED, why)
 
 
-def passed(op):
-    """Mark an operation whose simulation in the delivered program found nothing wrong."""
-    mark(op, readiness.PASSED, "")
+def passed(op, note=""):
+    """Mark an operation whose simulation in the delivered program found nothing wrong (note: how
+    the gate re-made it, if it did)."""
+    mark(op, readiness.PASSED, note)
 
 
 def short_of_floor(op):
@@ -99,3 +112,42 @@ def grown(first, report, left_out):
                                     now, was, ", ".join(sorted(left_out)[:3]) + (" ..." if len(left_out) > 3 else ""),
                                     "is" if len(left_out) == 1 else "are"))
     return out
+
+
+def regrow(op, depth):
+    """Re-make a roughing operation that gouged depth mm beyond its allowances: both grown by
+    depth + REGROW_MARGIN, its toolpath computed again. Returns {"radial", "axial"} of the
+    allowances it was planned with (those it is to be checked against), or None when it is not
+    re-made (not a roughing, a growth beyond REGROW_MAX, or no toolpath with the grown
+    allowances: it is then as it was)."""
+    grow = float(depth) + REGROW_MARGIN
+    if getattr(op, "Step", "") != "r" or grow > REGROW_MAX:
+        return None
+    planned = {"radial": float(op.RadialAllowance.Value), "axial": float(op.AxialAllowance.Value)}
+    edited = list(op.UserEdited)
+
+    def make(radial, axial):
+        op.RadialAllowance, op.AxialAllowance = radial, axial
+        op.UserEdited = edited  # the gate's choice, not a change by hand
+        op.recompute()
+        return op.Check != readiness.NO_TOOLPATH and bool(op.Path.Commands)
+
+    if make(planned["radial"] + grow, planned["axial"] + grow):
+        return planned
+    make(planned["radial"], planned["axial"])
+    return None
+
+
+def regrown_note(op, planned, depth):
+    """The note of a re-made roughing operation: its allowances, the planned ones and why."""
+    return ("re-made with allowances {:.2f} mm radial, {:.2f} mm axial (planned {:.2f}, {:.2f}): with the "
+            "planned ones it gouged {:.2f} mm; it leaves at least the planned stock, the later units "
+            "of its element finish the rest".format(float(op.RadialAllowance.Value), float(op.AxialAllowance.Value),
+                                                   planned["radial"], planned["axial"], float(depth)))
+
+
+def rebased(first, report, labels):
+    """first with the amounts the operations labels remove taken from report: the baseline
+    grown() measures them against once a roughing before them was re-made."""
+    now = {op["label"]: op for op in report.get("ops", []) if op["label"] in labels}
+    return dict(first, ops=[now.get(op["label"], op) for op in first.get("ops", [])])

@@ -179,7 +179,8 @@ def plunges_marked(moves):
     return out
 
 
-def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, blank, cell_size=0.5, cache=None):
+def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, blank, cell_size=0.5, cache=None,
+                    checked=None):
     """Re-read each posted LinuxCNC program and simulate them all against the blank: (the core's
     report, the number of operations simulated). programs: [{"path", "setup", "partZero", "job",
     "frame"}] in machining order; ops_by_label: {label: (Job, operation)} of the chain's Jobs;
@@ -219,11 +220,12 @@ def verify_programs(programs, ops_by_label, machine, chain, result, part_shape, 
                 raise VerificationError("{} holds an operation '{}' that the Jobs do not".format(
                     os.path.basename(p["path"]), op["label"]))
             cutter = op_base.cutter_of(fc_op.ToolController)
+            allowances = (checked or {}).get(op["label"]) or {"radial": _length(fc_op, "RadialAllowance"),
+                                                              "axial": _length(fc_op, "AxialAllowance")}
             for o in (op, op_job):
                 o.update(cutter={k: cutter[k] for k in ("diameter", "cornerRadius", "tipDiameter", "includedAngle")
                                  if k in cutter},  # a chamfer mill's cone with its angle
-                         radialAllowance=_length(fc_op, "RadialAllowance"),
-                         axialAllowance=_length(fc_op, "AxialAllowance"))
+                         radialAllowance=allowances["radial"], axialAllowance=allowances["axial"])
             sim_ops.append(op)
         setups.append({"name": p["setup"], "id": int(getattr(p["job"], setup_job.SETUP_TAG)),
                        "to_part": to_part, "ops": in_job})

@@ -48,6 +48,8 @@ class MainJob:
         self.simulated = 0     # operations in the last simulation
         self.work = None       # a private folder for the programs the verification re-reads
         self.reread = {}       # what the verification read of each program, kept across the gate's rounds
+        self.regrown = {}      # label -> how the gate re-made a gouging roughing (pipeline.gate.regrow)
+        self.checked = {}      # label -> {"radial", "axial"}: the allowances its simulation checks it against
 
 
 def _counts(result):
@@ -202,8 +204,10 @@ def verify(job):
         grown = gate.grown(first, report, job.left_out) if report is not first else {}
         if not failing and not grown:
             break
-        _leave_out(job, failing, {op["label"]: "gouge" if int(op.get("gouges", 0)) else "rapid"
-                                  for op in report.get("ops", [])})
+        regrown = _regrow(job, failing, report)
+        _leave_out(job, {k: v + ("; " + job.regrown[k]["note"] if k in job.regrown else "")
+                         for k, v in failing.items() if k not in regrown},
+                   {op["label"]: "gouge" if int(op.get("gouges", 0)) else "rapid" for op in report.get("ops", [])})
         _leave_out(job, grown, "dependent")
         _leave_out(job, gate.dependents(_active_operations(job), job.left_out, job.result), "dependent")
         _post_programs(job)
@@ -213,10 +217,16 @@ def verify(job):
         if failing and not grown and all(gate.short_of_floor(job.ops_by_label[k][1]) for k in failing
                                           if k in job.ops_by_label):
             first = report
+        elif regrown and report is not None:
+            # A roughing re-made leaves a thicker layer: what the operations after it remove is
+            # measured from there.
+            after = gate.dependents(_active_operations(job), regrown, job.result)
+            first = gate.rebased(first, report, set(regrown) | set(after))
     job.report = report or {}
     for op in _active_operations(job):
         if op.Label not in job.left_out and report is not None:
-            gate.passed(op)
+            gate.passed(op, job.regrown[op.Label]["note"] if op.Label in job.regrown else "")
+    job.data["regrown"] = [dict(r, label=label) for label, r in job.regrown.items() if label not in job.left_out]
     job.data["leftOut"] = [{"label": label, "setup": job.ops_by_label[label][0].Label if label in job.ops_by_label
                             else "", "kind": job.left_kind[label], "reason": why}
                            for label, why in job.left_out.items()]
@@ -228,6 +238,31 @@ def verify(job):
     _deliver(job)
     job.data["verdict"] = verdict_of(job.data)
     return job.data["verdict"]["text"]
+
+
+def _regrow(job, failing, report):
+    """Re-make, once each, the failing roughing operations that gouge (and rapid through nothing)
+    with grown allowances (pipeline.gate.regrow); returns the labels re-made now. Each is then
+    checked against the allowances it was planned with (job.checked)."""
+    from aeronc.pipeline import gate
+    out = []
+    for op in report.get("ops", []):
+        label = op["label"]
+        if label not in failing or label in job.regrown or label not in job.ops_by_label:
+            continue
+        if not int(op.get("gouges", 0)) or int(op.get("collisions", 0)):
+            continue
+        fc_op = job.ops_by_label[label][1]
+        depth = float(op.get("worstGouge", 0))
+        planned = gate.regrow(fc_op, depth)
+        if planned is None:
+            continue
+        job.checked[label] = planned
+        job.regrown[label] = {"planned": planned, "gouge": depth,
+                              "radial": float(fc_op.RadialAllowance.Value), "axial": float(fc_op.AxialAllowance.Value),
+                              "note": gate.regrown_note(fc_op, planned, depth)}
+        out.append(label)
+    return out
 
 
 def _active_operations(job):
@@ -294,7 +329,7 @@ def _simulate(job):
         return None
     report, job.simulated = verification.verify_programs(
         programs, job.ops_by_label, job.machine, job.chain, job.result, job.part.Shape,
-        setup_job.blank_box(job.group), job.cell_size, cache=job.reread)
+        setup_job.blank_box(job.group), job.cell_size, cache=job.reread, checked=job.checked)
     return report
 
 
