@@ -104,8 +104,23 @@ def prepared(objects, skip_failed=False):
 def left_out_section(left_out):
     """The comment block at the program's start naming the operations left out and why."""
     lines = ["(INCOMPLETE PROGRAM: {} operation{} left out)".format(len(left_out), "" if len(left_out) == 1 else "s")]
-    lines += ["(left out: {}: {})".format(label, why) for label, why in left_out]
+    for label, why in left_out:
+        lines += ["({})".format(piece) for piece in _comment_pieces("left out: {}: {}".format(label, why))]
     return {"kind": "offset", "label": "operations left out", "gcode": "\n".join(lines) + "\n"}
+
+
+# Characters of a comment line's text: controllers and their simulators refuse longer blocks
+# (LinuxCNC's interpreter takes 255 characters a line), and the reasons of an operation left out
+# can run longer.
+COMMENT_WIDTH = 120
+
+
+def _comment_pieces(text):
+    """text cut at spaces into pieces of at most COMMENT_WIDTH characters, the later ones
+    indented: one comment line each."""
+    import textwrap
+    return textwrap.wrap(text, COMMENT_WIDTH, subsequent_indent="  ", break_long_words=True,
+                         break_on_hyphens=False) or [""]
 
 
 def _without_idle_tools(sections):

@@ -269,6 +269,19 @@ class PostTest(unittest.TestCase):
         self.assertIn("Gouging", apt_text)
         self.assertEqual(re.findall(r"LOADTL/(\d+)", apt_text), ["1"])
 
+    def test_a_long_reason_is_cut_into_comment_lines_a_controller_reads(self):
+        self._job_with_failed_operations()
+        where = "move {}, a wall of face 411 at x 577.0 y 23.4 z 254.3".format(112050)
+        why = "; ".join(["gouges the part: 2416 moves, worst 1.51 mm beyond its allowance [{}]".format(where)] * 4)
+        mark(self.doc.getObject("Gouging"), readiness.FAILED, why)
+        for name, start in (("aeronc_linuxcnc", "("), ("aeronc_840d", "; ")):
+            text = self.post(name, "--skip-failed")
+            self.assertTrue(all(len(line) <= 130 for line in text.splitlines()), name)
+            lines = [line for line in text.split("G54")[0].splitlines() if line.startswith(start)]
+            # The reason is all there, read across its lines.
+            strip = (lambda l: l[1:-1].strip()) if start == "(" else (lambda l: l[2:].strip())
+            self.assertIn("left out: Gouging: " + why, " ".join(strip(l) for l in lines))
+
     def test_unknown_machine(self):
         self._expect_error("--machine NOPE-5AX", "unknown machine 'NOPE-5AX'", "AC-5AX", "AC-HEAD")
 
