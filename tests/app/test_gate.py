@@ -72,3 +72,73 @@ class VerdictTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class _Length:
+    def __init__(self, value):
+        self.Value = value
+
+
+class _Roughing:
+    """A roughing operation whose toolpath exists only while its allowances leave at least
+    `room` mm less than the pocket allows (what recompute() of a real operation decides)."""
+
+    def __init__(self, step="r", radial=0.5, axial=0.3, room=10.0):
+        self.Step, self.room, self.recomputed = step, room, 0
+        self.UserEdited = ["Note"]
+        self._radial, self._axial = _Length(radial), _Length(axial)
+        self.Check, self.Path = "", type("P", (), {"Commands": ["G1"]})()
+
+    @property
+    def RadialAllowance(self):
+        return self._radial
+
+    @RadialAllowance.setter
+    def RadialAllowance(self, v):
+        self._radial = _Length(float(v))
+
+    @property
+    def AxialAllowance(self):
+        return self._axial
+
+    @AxialAllowance.setter
+    def AxialAllowance(self, v):
+        self._axial = _Length(float(v))
+
+    def recompute(self):
+        from aeronc.post import readiness
+        self.recomputed += 1
+        ok = self._radial.Value <= self.room
+        self.Check = "" if ok else readiness.NO_TOOLPATH
+        self.Path.Commands = ["G1"] if ok else []
+
+
+class RegrowTest(unittest.TestCase):
+    """A roughing that gouges is re-made once with its allowances grown by the gouge and a margin;
+    the allowances it was planned with are what its simulation then checks it against."""
+
+    def test_a_gouging_roughing_is_re_made_with_grown_allowances(self):
+        op = _Roughing()
+        planned = gate.regrow(op, 0.63)
+        self.assertEqual(planned, {"radial": 0.5, "axial": 0.3})
+        grow = 0.63 + gate.REGROW_MARGIN
+        self.assertAlmostEqual(op.RadialAllowance.Value, 0.5 + grow)
+        self.assertAlmostEqual(op.AxialAllowance.Value, 0.3 + grow)
+        self.assertEqual(op.UserEdited, ["Note"])  # the gate's choice, not an edit by hand
+        note = gate.regrown_note(op, planned, 0.63)
+        self.assertIn("planned 0.50, 0.30", note)
+        self.assertIn("gouged 0.63 mm", note)
+
+    def test_what_is_not_re_made(self):
+        for op, depth in ((_Roughing(step="fs"), 0.1),          # a finishing
+                          (_Roughing(), gate.REGROW_MAX),        # a growth beyond REGROW_MAX
+                          (_Roughing(room=0.6), 0.3)):           # no toolpath with the grown allowances
+            self.assertIsNone(gate.regrow(op, depth))
+            self.assertEqual((op.RadialAllowance.Value, op.AxialAllowance.Value), (0.5, 0.3))
+            self.assertTrue(op.Path.Commands)
+
+    def test_the_operations_after_a_re_made_roughing_are_measured_from_the_new_simulation(self):
+        first = {"ops": [{"label": "a", "removedVolume": 10.0}, {"label": "b", "removedVolume": 200.0}]}
+        report = {"ops": [{"label": "a", "removedVolume": 8.0}, {"label": "b", "removedVolume": 350.0}]}
+        self.assertEqual(sorted(gate.grown(first, report, ["x"])), ["b"])
+        self.assertEqual(gate.grown(gate.rebased(first, report, {"b"}), report, ["x"]), {})
