@@ -412,11 +412,11 @@ TEST(ToolCrib, FloorFilletSmallerThanEveryReachingCornerIsFinishedAndTheFootList
     EXPECT_EQ(toJson(checkChain(c)), toJson(c));
 }
 
-// 90 mm deep pockets, deeper than any end mill of the crib reaches (the longest, 60 mm): each is
-// roughed from its top down 60 mm with a tool reaching that far, nothing goes lower, and the
-// pocket stays listed with the rest in the remainders (30 mm of it, under the roughing).
+// 200 mm deep pockets, deeper than any end mill of the crib reaches (the longest, 160 mm): each
+// is roughed from its top down 160 mm with a tool reaching that far, nothing goes lower, and the
+// pocket stays listed with the rest in the remainders (40 mm of it, under the roughing).
 TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndListed) {
-    const auto tree = recogniseUp(pocketsOnly(100, 10, 6));
+    const auto tree = recogniseUp(pocketsOnly(210, 10, 6));
     const test::KbDir dir("crib_too_deep");
     const auto kb = dir.open();
     const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
@@ -424,7 +424,7 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
     for (const auto& e : tree.elements) {
         if (e.type != recognition::ElementType::ClosedPocket) continue;
         ++pockets;
-        ASSERT_NEAR(e.top - e.level, 90, 1e-6);
+        ASSERT_NEAR(e.top - e.level, 200, 1e-6);
         std::vector<const MachiningUnit*> units;
         for (const MachiningUnit& u : c.units)
             if (u.element == e.id) units.push_back(&u);
@@ -433,11 +433,11 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
         EXPECT_EQ(rough.step, StepCode::Rough);
         EXPECT_EQ(rough.operation, Operation::Pocket);
         EXPECT_TRUE(rough.shortOfFloor);
-        EXPECT_NEAR(rough.bottom, e.top - 60, 1e-6);
+        EXPECT_NEAR(rough.bottom, e.top - 160, 1e-6);
         const ChainTool* t = c.tool(rough.tool);
         ASSERT_TRUE(t) << rough.tool;
-        EXPECT_GE(t->usableLength() + 1e-9, 60) << rough.tool;
-        EXPECT_NE(rough.note.find("roughed down 60 mm of its 90 mm"), std::string::npos) << rough.note;
+        EXPECT_GE(t->usableLength() + 1e-9, 160) << rough.tool;
+        EXPECT_NE(rough.note.find("roughed down 160 mm of its 200 mm"), std::string::npos) << rough.note;
         // Listed first for the element: what was roughed and what it still needs.
         const Unmachined* listed = nullptr;
         for (const Unmachined& m : c.unmachined)
@@ -447,14 +447,14 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
             }
         ASSERT_TRUE(listed) << "element " << e.id;
         EXPECT_EQ(listed->step, StepCode::Rough);
-        EXPECT_NE(listed->reason.find("roughed down 60 mm of its 90 mm with " + rough.tool), std::string::npos)
+        EXPECT_NE(listed->reason.find("roughed down 160 mm of its 200 mm with " + rough.tool), std::string::npos)
             << listed->reason;
-        EXPECT_NE(listed->reason.find("it needs an end mill reaching 90"), std::string::npos) << listed->reason;
+        EXPECT_NE(listed->reason.find("it needs an end mill reaching 200"), std::string::npos) << listed->reason;
         const Remainder* rest = nullptr;
         for (const Remainder& r : c.remainders)
             if (r.element == e.id && r.kind == "depth") rest = &r;
         ASSERT_TRUE(rest) << "element " << e.id;
-        EXPECT_NEAR(rest->depth, 30, 1e-6);
+        EXPECT_NEAR(rest->depth, 40, 1e-6);
         EXPECT_NEAR(rest->area, e.area, 1e-6);
     }
     EXPECT_EQ(pockets, 2);
