@@ -270,6 +270,8 @@ class PostTest(unittest.TestCase):
         self.assertEqual(re.findall(r"LOADTL/(\d+)", apt_text), ["1"])
 
     def test_a_long_reason_is_cut_into_comment_lines_a_controller_reads(self):
+        from aeronc.operations.base import mark
+        from aeronc.post import readiness
         self._job_with_failed_operations()
         where = "move {}, a wall of face 411 at x 577.0 y 23.4 z 254.3".format(112050)
         why = "; ".join(["gouges the part: 2416 moves, worst 1.51 mm beyond its allowance [{}]".format(where)] * 4)
