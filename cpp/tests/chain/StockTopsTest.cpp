@@ -94,3 +94,34 @@ TEST(StockTops, RootBelowTheBlanksTopStartsThere) {
     setStockTops(c);
     EXPECT_FALSE(c.units[0].stockTop.has_value());
 }
+
+// A's roughing leaves 1 mm on A's walls (a 40 x 40 square) until A's walls are finished. A
+// sub-pocket B along A's wall meets that allowance on its way down: the material stands there to
+// A's top. B in the middle of A's floor does not; nor does B once A's walls are finished.
+TEST(StockTops, WallAllowanceOfTheAncestorStandsOverAUnitAlongItsWall) {
+    auto square = [](double x0, double y0, double x1, double y1) { return Loop{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; };
+    auto chain = [&](Loop sub, int wallOrder) {
+        MachiningChain c = handChain(3, 4);
+        c.units[0].contour = square(0, 0, 40, 40), c.units[0].radialAllowance = 1;
+        c.units[1].contour = std::move(sub), c.units[1].cutter.diameter = 4;
+        MachiningUnit wall = unit(5, 0, StepCode::FinishWall, 20, 5, 0, wallOrder);
+        wall.radialAllowance = 0;
+        c.units.push_back(wall);
+        setStockTops(c);
+        return c.units[1].stockTop;
+    };
+    const auto along = chain(square(0, 10, 8, 20), 5);  // B's wall on A's wall at x = 0
+    ASSERT_TRUE(along.has_value());
+    EXPECT_DOUBLE_EQ(*along, 20);
+    EXPECT_FALSE(chain(square(15, 15, 25, 25), 5).has_value());  // B in the middle of A's floor
+    EXPECT_TRUE(chain(square(0.5, 10, 8, 20), 5).has_value());  // 0.5 mm off the wall: in the allowance
+    EXPECT_FALSE(chain(square(1.5, 10, 8, 20), 5).has_value());  // beyond it
+    EXPECT_FALSE(chain(square(0, 10, 8, 20), 0).has_value());    // A's walls finished before B
+    // A hole whose mouth reaches into the allowance.
+    MachiningChain c = handChain(3, 4);
+    c.units[0].contour = square(0, 0, 40, 40), c.units[0].radialAllowance = 1;
+    c.units[1].holes = {HoleTarget{3.5, 20, 6, 5, 0, false, 0}};
+    setStockTops(c);
+    ASSERT_TRUE(c.units[1].stockTop.has_value());
+    EXPECT_DOUBLE_EQ(*c.units[1].stockTop, 20);
+}
