@@ -7,6 +7,7 @@
 #include <aeronc/core/TextFile.h>
 #include <aeronc/kb/KnowledgeBase.h>
 #include <aeronc/kb/LongReach.h>
+#include <aeronc/toolselect/EdgeTools.h>
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
@@ -26,6 +27,7 @@ namespace fs = std::filesystem;
 using aeronc::Error;
 using aeronc::kb::KnowledgeBase;
 using aeronc::toolselect::Tool;
+namespace toolselect = aeronc::toolselect;
 
 using aeronc::test::inputErrorOf;
 
@@ -34,8 +36,8 @@ namespace {
 // Rows of the shipped tool table: 29 end mills, face mill and tap drills, 29 jobber drills,
 // 2 inch jobber drills, the 30 small, necked and long-reach end mills of the shop crib and the
 // 5 extra-long-neck end mills, the long-reach D3 ball of schema version 8, version 9's two
-// micro end mills and version 10's eleven long-reach end mills D16-D32.
-constexpr std::size_t kShippedTools = 109;
+// micro end mills, version 10's eleven long-reach end mills D16-D32 and version 11's D4 x 40.
+constexpr std::size_t kShippedTools = 110;
 // The crib's tools added by schema versions 6 and 7 (docs/tool-crib.md).
 constexpr std::size_t kCribTools = 35;
 // The extra-long-neck series schema version 7 added (8 x D).
@@ -46,6 +48,9 @@ const std::vector<std::string> kVersion9 = {"EM-F0.2", "EM-F0.3"};
 const std::vector<std::string> kVersion10 = {"EM-F16x80",  "EM-F16x100",  "EM-F20x100",   "EM-F20x130",
                                              "EM-F25x125", "EM-F25x160",  "EM-F32x160",   "EM-B16R2x80",
                                              "EM-B20R3x100", "EM-B25R4x125", "EM-B32R4x160"};
+// Schema version 11: a flat D4 reaching 40 mm (10 x D) and two large 90 degree chamfer mills.
+const std::vector<std::string> kVersion11Tools = {"EM-F4x40"};
+const std::vector<std::string> kVersion11EdgeTools = {"CM-90-D25", "CM-90-D32"};
 
 // What schema version 6 added to a new file (docs/tool-crib.md), removed again: the layout and
 // rows of a version-5 file, from which a test makes the older ones.
@@ -940,6 +945,81 @@ TEST_F(KnowledgeBaseTest, MigratesVersionNineAddingTheLongReachEndMills) {
     }
 }
 
+// Version 10 to 11: the D4 x 40 end mill and the 90 degree chamfer mills D25 and D32 join a file
+// that carries the shipped crib, as a new file has them, and not a user's own; the user's rows
+// stay. The end mill reaches 40 mm on its neck (10 x D) with the long-reach data; the chamfer
+// mills cover chamfers up to 10.8 and 13.8 mm wide and take finishing data in every material.
+TEST_F(KnowledgeBaseTest, MigratesVersionTenAddingTheD4x40AndTheLargeChamferMills) {
+    KnowledgeBase shipped = openDefault(dir_ / "fresh11.sqlite");
+    std::map<std::string, Tool> made;
+    for (const Tool& t : shipped.tools()) made[t.id] = t;
+    std::map<std::string, toolselect::EdgeTool> madeEdge;
+    for (const toolselect::EdgeTool& t : shipped.edgeTools()) madeEdge[t.id] = t;
+    for (bool ownCrib : {false, true}) {
+        SCOPED_TRACE(ownCrib ? "a user's own crib" : "the shipped crib");
+        const fs::path p = dir_ / (ownCrib ? "own10.sqlite" : "shipped10.sqlite");
+        { openDefault(p); }
+        rawExec(p, std::string("DELETE FROM tool WHERE id = 'EM-F4x40'; "
+                               "DELETE FROM edge_tool WHERE id IN ('CM-90-D25', 'CM-90-D32'); "
+                               "UPDATE schema_version SET version = 10;") +
+                       (ownCrib ? "DELETE FROM tool; DELETE FROM edge_tool;" : "") +
+                       "INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, reach) "
+                       "VALUES ('MY-F40', 'flat', 'carbide', 40, 0, 4, 60, 120);"
+                       "INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, "
+                       "flutes, reach) VALUES ('MY-CM-D40', 'chamfer', 'carbide', 40, 5, 90, 4, 40);");
+        KnowledgeBase kb = openDefault(p);
+        EXPECT_EQ(kb.schemaVersion(), KnowledgeBase::kSchemaVersion);
+        EXPECT_TRUE(fs::exists(p.string() + ".v10.bak"));
+        std::map<std::string, Tool> byId;
+        for (const Tool& t : kb.tools()) byId[t.id] = t;
+        std::map<std::string, toolselect::EdgeTool> edgeById;
+        for (const toolselect::EdgeTool& t : kb.edgeTools()) edgeById[t.id] = t;
+        EXPECT_TRUE(byId.count("MY-F40"));
+        EXPECT_TRUE(edgeById.count("MY-CM-D40"));
+        EXPECT_EQ(byId.size(), ownCrib ? 1u : kShippedTools + 1);
+        EXPECT_EQ(edgeById.size(), ownCrib ? 1u : madeEdge.size() + 1);
+        if (ownCrib) continue;
+        const aeronc::kb::LongReach reduction = aeronc::kb::LongReach::of(kb);
+        for (const std::string& id : kVersion11Tools) {
+            ASSERT_TRUE(byId.count(id)) << id;
+            const Tool& t = byId[id];
+            EXPECT_NO_THROW(t.validate()) << id;
+            EXPECT_EQ(t.type, "flat") << id;
+            EXPECT_TRUE(t.necked()) << id;
+            EXPECT_DOUBLE_EQ(t.diameter, 4) << id;
+            EXPECT_DOUBLE_EQ(t.neckDiameter, made.at(id).neckDiameter) << id;
+            EXPECT_DOUBLE_EQ(t.usableLength(), 40) << id;
+            EXPECT_DOUBLE_EQ(t.fluteLength, made.at(id).fluteLength) << id;
+            ASSERT_TRUE(reduction.applies(t)) << id;
+            for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+                for (const std::string op : {"roughing", "finishing"})
+                    EXPECT_GT(kb.cuttingCondition(m, t.material, op, t.diameter).fz, 0) << id << " " << m << " " << op;
+        }
+        for (const std::string& id : kVersion11EdgeTools) {
+            ASSERT_TRUE(edgeById.count(id)) << id;
+            const toolselect::EdgeTool& t = edgeById[id];
+            const toolselect::EdgeTool& n = madeEdge.at(id);
+            EXPECT_EQ(t.kind, "chamfer") << id;
+            EXPECT_DOUBLE_EQ(t.includedAngle, 90) << id;
+            EXPECT_DOUBLE_EQ(t.diameter, n.diameter) << id;
+            EXPECT_DOUBLE_EQ(t.tipDiameter, n.tipDiameter) << id;
+            EXPECT_DOUBLE_EQ(t.reach, n.reach) << id;
+            for (const std::string m : {"7050-T7451", "2024-T351", "Ti-6Al-4V", "45 steel"})
+                EXPECT_GT(kb.cuttingCondition(m, t.material, "finishing", t.diameter).fz, 0) << id << " " << m;
+        }
+        // The widths they cover: CTC-05's 9.525 mm countersink and CTC-03's 12.7 mm chamfers, both at 45 degrees.
+        std::vector<toolselect::EdgeTool> crib;
+        for (const auto& [id, t] : edgeById)
+            if (id != "MY-CM-D40") crib.push_back(t);
+        for (const auto& [width, hole, id] : std::vector<std::tuple<double, double, std::string>>{
+                 {9.525, 254, "CM-90-D25"}, {12.7, 0, "CM-90-D32"}}) {
+            const auto c = toolselect::chamferTool(crib, {90, width, width, hole});
+            ASSERT_TRUE(c.tool) << c.why;
+            EXPECT_EQ(c.tool->id, id);
+        }
+    }
+}
+
 // The shop crib as shipped: the catalogue sizes, necks below the cutter, reach beyond the flutes
 // on the necked tools, edge tools, and small-tool cutting data below the standard rows.
 TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
@@ -955,8 +1035,8 @@ TEST_F(KnowledgeBaseTest, ShippedShopCrib) {
             EXPECT_DOUBLE_EQ(t.usableLength(), t.reach) << id;
             EXPECT_DOUBLE_EQ(t.passHeight(), t.fluteLength) << id;
         }
-    // All but EM-BALL16; EM-BALL3x30; version 9's and version 10's.
-    EXPECT_EQ(necked, kCribTools - 1 + 1 + kVersion9.size() + kVersion10.size());
+    // All but EM-BALL16; EM-BALL3x30; version 9's, 10's and 11's.
+    EXPECT_EQ(necked, kCribTools - 1 + 1 + kVersion9.size() + kVersion10.size() + kVersion11Tools.size());
     for (const char* id : {"EM-F0.5", "EM-F1", "EM-F1.5", "EM-F2.5", "EM-BALL0.5", "EM-BALL1"})
         EXPECT_TRUE(byId.count(id)) << id;
     // The long-reach series: D6 x 30, D8 x 40, D10 x 50, D12 x 60, flat and bull-nose.

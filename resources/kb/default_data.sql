@@ -1,4 +1,4 @@
--- AeroNC default knowledge base data, for schema version 10 (resources/kb/schema.sql).
+-- AeroNC default knowledge base data, for schema version 11 (resources/kb/schema.sql).
 --
 -- SOURCE AND ASSUMPTIONS. Except where marked, these values are ASSUMED handbook-style
 -- defaults, chosen to be plausible for shop use and for the tests; they are not
@@ -155,7 +155,10 @@ INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flut
   ('EM-B16R2x80', 'bull', 'carbide', 16,   2, 4, 24.0, 130,  80, 195, 15.0),
   ('EM-B20R3x100','bull', 'carbide', 20,   3, 4, 30.0, 155, 100, 250, 19.0),
   ('EM-B25R4x125','bull', 'carbide', 25,   4, 4, 38.0, 185, 125, 325, 24.0),
-  ('EM-B32R4x160','bull', 'carbide', 32,   4, 4, 48.0, 225, 160, 455, 30.0);
+  ('EM-B32R4x160','bull', 'carbide', 32,   4, 4, 48.0, 225, 160, 455, 30.0),
+-- Extra-long neck 10 x D, flat (schema version 11, migrations/v10_to_v11.sql): small flat-bottomed
+-- holes 35 mm deep milled by helical interpolation (a 5.5 mm hole needs a cutter below 4.4 mm).
+  ('EM-F4x40',   'flat', 'carbide',   4,   0,  3,  6.0, 100,  40,  58, 3.8);
 
 -- Chamfer and corner-rounding mills (docs/tool-crib.md).
 INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included_angle, profile_radius, flutes, reach, cost) VALUES
@@ -168,7 +171,12 @@ INSERT INTO edge_tool (id, kind, tool_material, diameter, tip_diameter, included
   ('CR-R2',      'corner_rounding', 'carbide',  8, 4.0, NULL,    2, 4, 22, 44),
   ('CR-R3',      'corner_rounding', 'carbide', 10, 4.0, NULL,    3, 4, 25, 52),
   ('CR-R4',      'corner_rounding', 'carbide', 12, 4.0, NULL,    4, 4, 28, 60),
-  ('CR-R5',      'corner_rounding', 'carbide', 16, 6.0, NULL,    5, 4, 32, 72);
+  ('CR-R5',      'corner_rounding', 'carbide', 16, 6.0, NULL,    5, 4, 32, 72),
+-- Large 90 degree chamfer mills (schema version 11, migrations/v10_to_v11.sql; last, as a
+-- migrated file holds them): chamfers and countersinks up to 10.8 and 13.8 mm wide (tip radius
+-- + 0.2 mm clearance + width <= radius; toolselect/EdgeTools.h).
+  ('CM-90-D25',  'chamfer',         'carbide', 25, 3.0,   90, NULL, 4, 35, 110),
+  ('CM-90-D32',  'chamfer',         'carbide', 32, 4.0,   90, NULL, 4, 40, 150);
 
 -- Jobber drills (DIN 338 / ISO 235 lengths), HSS. 5, 6.8, 8.5 and 10.2 mm are above.
 INSERT INTO tool (id, type, tool_material, diameter, corner_radius, flutes, flute_length, overall_length, reach, cost) VALUES

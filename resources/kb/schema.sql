@@ -1,4 +1,4 @@
--- AeroNC machining knowledge base, schema version 10.
+-- AeroNC machining knowledge base, schema version 11.
 --
 -- Reviewable source of the database layout. KnowledgeBase::open() runs this text on a new,
 -- empty database and then resources/kb/default_data.sql. A database made by an older
@@ -13,7 +13,7 @@ PRAGMA foreign_keys = ON;
 CREATE TABLE schema_version (
     version INTEGER NOT NULL
 );
-INSERT INTO schema_version (version) VALUES (10);
+INSERT INTO schema_version (version) VALUES (11);
 
 -- Resource facts -----------------------------------------------------------------------
 

@@ -71,7 +71,10 @@ TEST(EdgeTools, ShippedCribHoldsTheChamferMills) {
     std::vector<std::string> chamfers;
     for (const auto& t : tools)
         if (t.kind == "chamfer") chamfers.push_back(t.id);
-    EXPECT_EQ(chamfers, (std::vector<std::string>{"CM-45-D6", "CM-90-D6", "CM-45-D10", "CM-90-D10", "CM-90-D16"}));
+    EXPECT_EQ(chamfers, (std::vector<std::string>{"CM-45-D6", "CM-90-D6", "CM-45-D10", "CM-90-D10", "CM-90-D16",
+                                                  "CM-90-D25", "CM-90-D32"}));
+    for (const auto& t : tools)
+        if (t.kind == "chamfer") EXPECT_GE(t.reach, t.diameter) << t.id;
     const auto d10 = std::find_if(tools.begin(), tools.end(), [](const EdgeTool& t) { return t.id == "CM-90-D10"; });
     ASSERT_NE(d10, tools.end());
     EXPECT_DOUBLE_EQ(d10->includedAngle, 90);
@@ -190,6 +193,27 @@ TopoDS_Shape pocketWithChamferedIsland() {
             return std::abs(r.Z() - 20) < 1e-6 && r.X() > 39 && r.X() < 61 && r.Y() > 24 && r.Y() < 36;
         };
         if (onTop(BRep_Tool::Pnt(a)) && onTop(BRep_Tool::Pnt(b))) ch.Add(2, edge);
+    }
+    ch.Build();
+    return ch.Shape();
+}
+
+// A 160 x 120 x 40 block with an 80 x 60 x 30 pocket whose mouth carries a 45 degree x 12.7 mm
+// chamfer all round (the width of NIST CTC-03's large chamfers): wider than the cone of the
+// crib's 90 degree D16 (16 / 2 - 1 - 0.2 = 6.8 mm) and the D25 (10.8 mm).
+TopoDS_Shape wideChamferedPocket() {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(160, 120, 40)).Shape();
+    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(40, 30, 10), gp_Pnt(120, 90, 50)).Shape();
+    TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
+    BRepFilletAPI_MakeChamfer ch(part);
+    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
+        TopoDS_Vertex a, b;
+        TopExp::Vertices(edge, a, b);
+        auto onMouth = [](const gp_Pnt& r) {
+            return std::abs(r.Z() - 40) < 1e-6 && r.X() > 39 && r.X() < 121 && r.Y() > 29 && r.Y() < 91;
+        };
+        if (onMouth(BRep_Tool::Pnt(a)) && onMouth(BRep_Tool::Pnt(b))) ch.Add(12.7, edge);
     }
     ch.Build();
     return ch.Shape();
@@ -344,6 +368,39 @@ TEST(EdgeTools, IslandChamferedAllRoundIsCutRoundTheIsland) {
     }
     ASSERT_GE(edge->contour.size(), 4u);
     EXPECT_EQ(edge->openEdges.size(), edge->contour.size()) << "the outer loop is open all round";
+    EXPECT_GT(edge->order, wall->order) << "the chamfer comes after the walls under it";
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
+}
+
+// A 12.7 mm wide 45 degree chamfer round a pocket's mouth: only the 90 degree D32 of schema
+// version 11 covers it (2 + 0.2 + 12.7 <= 16); it is cut along the outline after the walls, the
+// axis 2.2 mm inside them, the tip 0.2 mm under the chamfer's lower line (z = 27.3), and nothing
+// of it is listed. Before, the chain listed it: "needs a 90 degree chamfer mill of diameter >= 25.8 mm".
+TEST(EdgeTools, ChamferWiderThanTheD25IsCutByTheD32) {
+    const auto tree = recogniseUp(wideChamferedPocket(), "wide chamfered pocket");
+    const auto [pocket, chamfer] = chamferOf(tree);
+    ASSERT_TRUE(chamfer);
+    EXPECT_NEAR(chamfer->angle, 90, 1e-6);
+    EXPECT_NEAR(chamfer->size, 12.7, 1e-6);
+    EXPECT_TRUE(chamfer->alongContour);
+    EXPECT_NEAR(chamfer->lower, 27.3, 1e-6);
+
+    const test::KbDir dir("edge_wide");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    for (const Unmachined& m : c.unmachined)
+        EXPECT_EQ(m.reason.find("chamfer"), std::string::npos) << "element " << m.element << ": " << m.reason;
+    const auto [edge, wall] = edgeAndWall(c, pocket->id);
+    ASSERT_TRUE(edge);
+    ASSERT_TRUE(wall);
+    EXPECT_EQ(edge->operation, Operation::Chamfer);
+    EXPECT_EQ(edge->tool, "CM-90-D32");
+    EXPECT_DOUBLE_EQ(edge->cutter.includedAngle, 90);
+    EXPECT_NEAR(edge->top, 40, 1e-6);
+    EXPECT_NEAR(edge->bottom, 27.1, 1e-6);
+    EXPECT_NEAR(edge->edgeOffset, 2.2, 1e-12);
+    EXPECT_GT(edge->setting.spindleRpm, 0);
+    EXPECT_GT(edge->setting.feedMmMin, 0);
     EXPECT_GT(edge->order, wall->order) << "the chamfer comes after the walls under it";
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.rule << " " << r.node << ": " << r.message;
 }

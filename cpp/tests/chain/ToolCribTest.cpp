@@ -14,6 +14,10 @@
 #include <aeronc/recognition/Recogniser.h>
 #include <aeronc/testparts/PanelGenerator.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <gp_Ax2.hxx>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -467,5 +471,41 @@ TEST(ToolCrib, PocketDeeperThanEveryReachIsRoughedAsFarAsTheLongestReachesAndLis
     EXPECT_EQ(toolselect::toJson(stored, "7050-T7451"), text);
     EXPECT_EQ(toJson(kb::planChain(tree, kb, stored, "7050-T7451", "AC-5AX")),
               toJson(kb::planChain(tree, kb, "7050-T7451", "AC-5AX")));
+    for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
+}
+
+// A 5.5 mm flat-bottomed hole 35 mm deep in a 40 x 40 x 50 block (NIST FTC-10's element 44):
+// no drill leaves its flat bottom, and helical interpolation needs a flat end mill below 4.4 mm
+// (0.8 x the hole) reaching 35 mm. Before schema version 11 the longest D4 reached 32 mm and the
+// hole was listed; the D4 x 40 mills it down to its bottom, and nothing of it is listed.
+TEST(ToolCrib, DeepSmallFlatBottomedHoleIsMilledByTheD4x40) {
+    const TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(40, 40, 50)).Shape();
+    const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(20, 20, 15), gp_Dir(0, 0, 1)), 2.75, 40).Shape();
+    recognition::RecogniseOptions o;
+    o.directions = {{0, 0, 1}};
+    const auto tree =
+        recognition::recognise(validatedSolid(BRepAlgoAPI_Cut(block, hole).Shape(), "deep hole"), o);
+    const recognition::DomainElement* h = nullptr;
+    for (const auto& e : tree.elements)
+        if (e.hole) h = &e;
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->hole->diameter, 5.5, 1e-6);
+    EXPECT_NEAR(h->hole->depth, 35, 1e-6);
+    EXPECT_FALSE(h->hole->through);
+
+    const test::KbDir dir("crib_deep_hole");
+    const auto kb = dir.open();
+    const MachiningChain c = kb::planChain(tree, kb, "7050-T7451");
+    for (const Unmachined& m : c.unmachined) EXPECT_NE(m.element, h->id) << m.reason;
+    const MachiningUnit* milled = nullptr;
+    for (const MachiningUnit& u : c.units)
+        if (u.element == h->id && u.step == StepCode::HoleMill) milled = &u;
+    ASSERT_TRUE(milled);
+    EXPECT_EQ(milled->tool, "EM-F4x40");
+    EXPECT_NEAR(milled->bottom, 15, 1e-6);
+    const ChainTool* t = c.tool(milled->tool);
+    ASSERT_TRUE(t);
+    EXPECT_GE(t->usableLength() + 1e-9, 35);
+    EXPECT_GT(milled->setting.spindleRpm, 0);
     for (const RuleCheck& r : c.checks) EXPECT_TRUE(r.ok) << r.node << ": " << r.message;
 }

@@ -74,7 +74,7 @@ struct Machine {
 class KnowledgeBase {
 public:
     // The schema version this build writes and reads; older files are migrated on open.
-    static constexpr int kSchemaVersion = 10;
+    static constexpr int kSchemaVersion = 11;
 
     // Opens the knowledge base at `path`. A missing file is built from the two SQL texts
     // (under a temporary name, then renamed, so a half-built file is never left at `path`).
