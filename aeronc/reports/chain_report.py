@@ -61,6 +61,8 @@ def _summary(run):
     for p in run.get("noProgram", []):
         rows.append(("Program " + esc(p.get("setup", "")),
                      '<span class="fail">none: every operation of the setup is left out</span>'))
+    for r in run.get("regrown", []):
+        rows.append(("Re-made by the gate", "{}: {}".format(esc(r.get("label", "")), esc(r.get("note", "")))))
     body = "".join("<tr><td>{}</td><td>{}</td></tr>".format(k, v) for k, v in rows)
     return '<table class="summary">{}</table>'.format(body)
 
@@ -248,7 +250,8 @@ def write(path, run):
 
     run: {"part", "source", "recognition": result, "chain": chain dict, "operations": [{"unit", "setup",
     "cutLength", "minutes"}], "programs": [{"setup", "dialect", "path", "lines", "partZero", "leftOut"}],
-    "noProgram": [{"setup"}], "machine": {"name", "why"}, "verdict": {"ready", "status", "text"} (the first
+    "noProgram": [{"setup"}], "regrown": [{"label", "note"}] (roughings the gate re-made with grown
+    allowances), "machine": {"name", "why"}, "verdict": {"ready", "status", "text"} (the first
     line), "failed": {"stage",
     "error"}, "leftOut": [{"label", "setup", "reason"}], "materialLeft": [{"element", "faces", "area",
     "maxLeft", "reason"}], "verification":

@@ -557,6 +557,8 @@ def run_summary(data):
             "leftOut": data.get("leftOut") or [],
             "programs": [os.path.basename(p["path"]) for p in data.get("programs") or []],
             "noProgram": data.get("noProgram") or [],
+            "regrown": [{k: r.get(k) for k in ("label", "gouge", "planned", "radial", "axial")}
+                        for r in data.get("regrown") or []],
             "gouges": report_ops.get("gouges"), "collisions": report_ops.get("collisions"),
             "materialLeft": {"entries": len(left), "area": sum(areas) if areas else 0.0,
                              "maxLeft": max(thick) if thick else 0.0},

@@ -64,6 +64,14 @@ class ChainReportTest(unittest.TestCase):
         self.assertIn("<td>41, 42</td>", text)
         self.assertIn("<td>all</td>", text)
 
+    def test_a_roughing_the_gate_re_made_is_named_with_its_allowances(self):
+        run = _run()
+        run["regrown"] = [{"label": "Pocket E6 r U0", "note": "re-made with allowances 1.21 mm radial, 0.71 mm "
+                           "axial (planned 1.00, 0.50): with the planned ones it gouged 0.01 mm"}]
+        text = chain_report.render(run)
+        self.assertIn("<td>Re-made by the gate</td><td>Pocket E6 r U0: re-made with allowances 1.21 mm radial", text)
+        self.assertNotIn("Re-made by the gate", chain_report.render(_run()))
+
     def test_every_element_machined_says_so(self):
         run = _run()
         run["chain"]["unmachined"] = []
