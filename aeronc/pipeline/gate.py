@@ -62,8 +62,7 @@ def short_of_floor(op):
 def roughs(op):
     """Whether an operation is a roughing (step r): the one that clears the element's volume,
     where the elements inside it open."""
-    from aeronc.operations.base import unit_of
-    return unit_of(op).get("step") == "r"
+    return getattr(op, "Step", "") == "r"
 
 
 def dependents(ops, left_out, result):
@@ -121,7 +120,7 @@ def regrow(op, depth):
     re-made (not a roughing, a growth beyond REGROW_MAX, or no toolpath with the grown
     allowances: it is then as it was)."""
     grow = float(depth) + REGROW_MARGIN
-    if getattr(op, "Step", "") != "r" or grow > REGROW_MAX:
+    if not roughs(op) or grow > REGROW_MAX:
         return None
     planned = {"radial": float(op.RadialAllowance.Value), "axial": float(op.AxialAllowance.Value)}
     edited = list(op.UserEdited)

@@ -145,16 +145,25 @@ TEST(Recognition, RoundOnTheFloorsOuterEdgeIsNoFloorFillet) {
     EXPECT_EQ(flange->filletFaces.size(), 4u);  // the boss's foot only
 }
 
-// A wall leaning back from the floor (a step whose side slopes up and away) holds the most
-// material at the floor: the region stops there, or a tool clearing the floor cuts into the
-// slope. The slice half-way up would put the wall 3 mm further back.
-TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
-    TopoDS_Shape part = BRepPrimAPI_MakeBox(100, 40, 20).Shape();
+namespace {
+
+// A 100 x 40 x 20 block with a step on it from x = 0 to 60 at its foot, its side sloping back to
+// x = 54 at its top, 10 higher.
+TopoDS_Shape blockWithStepLeaningBack() {
     BRepBuilderAPI_MakePolygon side;
     for (const gp_Pnt& p : {gp_Pnt(0, 0, 20), gp_Pnt(60, 0, 20), gp_Pnt(54, 0, 30), gp_Pnt(0, 0, 30)}) side.Add(p);
     side.Close();
     const TopoDS_Shape step = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(side.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
-    part = BRepAlgoAPI_Fuse(part, step).Shape();
+    return BRepAlgoAPI_Fuse(BRepPrimAPI_MakeBox(100, 40, 20).Shape(), step).Shape();
+}
+
+}  // namespace
+
+// A wall leaning back from the floor (a step whose side slopes up and away) holds the most
+// material at the floor: the region stops there, or a tool clearing the floor cuts into the
+// slope. The slice half-way up would put the wall 3 mm further back.
+TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
+    TopoDS_Shape part = blockWithStepLeaningBack();
     const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));
     const DomainElement* floor = nullptr;
     for (const DomainElement& e : t.elements)
@@ -170,12 +179,7 @@ TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBack) {
 // further back than at its foot (milled_002's bevel beside its blends). The region still stops
 // at the foot.
 TEST(Recognition, RegionStopsAtTheFootOfAWallLeaningBackBesideFloorFillets) {
-    TopoDS_Shape part = BRepPrimAPI_MakeBox(100, 40, 20).Shape();
-    BRepBuilderAPI_MakePolygon side;
-    for (const gp_Pnt& p : {gp_Pnt(0, 0, 20), gp_Pnt(60, 0, 20), gp_Pnt(54, 0, 30), gp_Pnt(0, 0, 30)}) side.Add(p);
-    side.Close();
-    const TopoDS_Shape step = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(side.Wire()).Face(), gp_Vec(0, 40, 0)).Shape();
-    part = BRepAlgoAPI_Fuse(part, step).Shape();
+    TopoDS_Shape part = blockWithStepLeaningBack();
     part = BRepAlgoAPI_Fuse(part, BRepPrimAPI_MakeBox(gp_Pnt(75, 10, 20), 15, 20, 10).Shape()).Shape();
     part = filletEdgesAt(part, 20, 75, 10, 90, 30, 2);
     const DomainTree t = recognise(validatedSolid(part, "test"), along({{0, 0, 1}}));

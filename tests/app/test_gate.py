@@ -13,6 +13,7 @@ class _Op:
         self.Label = label
         self.ElementId = element
         self.Unit = json.dumps(unit or {})
+        self.Step = (unit or {}).get("step", "")  # as the operation carries its unit's step
 
 
 # Element 1 holds element 2; element 3 stands apart.

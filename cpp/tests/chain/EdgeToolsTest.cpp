@@ -155,26 +155,37 @@ TEST(EdgeTools, CountersunkBoltHolesGetAChamferMillPassAfterTheirDrill) {
 
 namespace {
 
-// A 100 x 60 x 20 block with a 60 x 30 x 10 pocket whose mouth carries a 45 degree x 2 mm
-// chamfer all round (four planes: the pocket's corners are sharp), or along its long sides only.
-TopoDS_Shape chamferedPocket(bool allRound = true) {
-    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
-    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
-    TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
+// `part` with a chamfer `width` wide on every edge whose two ends pass `on` (and `keep`).
+template <class On, class Keep>
+TopoDS_Shape chamferEdges(const TopoDS_Shape& part, double width, On on, Keep keep) {
     BRepFilletAPI_MakeChamfer ch(part);
     for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
         const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
         TopoDS_Vertex a, b;
         TopExp::Vertices(edge, a, b);
         const gp_Pnt p = BRep_Tool::Pnt(a), q = BRep_Tool::Pnt(b);
-        auto onMouth = [](const gp_Pnt& r) {
-            return std::abs(r.Z() - 20) < 1e-6 && r.X() > 19 && r.X() < 81 && r.Y() > 14 && r.Y() < 46;
-        };
-        const bool longSide = std::abs(p.Y() - q.Y()) < 1e-6;
-        if (onMouth(p) && onMouth(q) && (allRound || longSide)) ch.Add(2, edge);
+        if (on(p) && on(q) && keep(p, q)) ch.Add(width, edge);
     }
     ch.Build();
     return ch.Shape();
+}
+
+template <class On>
+TopoDS_Shape chamferEdges(const TopoDS_Shape& part, double width, On on) {
+    return chamferEdges(part, width, on, [](const gp_Pnt&, const gp_Pnt&) { return true; });
+}
+
+// A 100 x 60 x 20 block with a 60 x 30 x 10 pocket whose mouth carries a 45 degree x 2 mm
+// chamfer all round (four planes: the pocket's corners are sharp), or along its long sides only.
+TopoDS_Shape chamferedPocket(bool allRound = true) {
+    TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
+    TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
+    auto onMouth = [](const gp_Pnt& r) {
+        return std::abs(r.Z() - 20) < 1e-6 && r.X() > 19 && r.X() < 81 && r.Y() > 14 && r.Y() < 46;
+    };
+    return chamferEdges(BRepAlgoAPI_Cut(block, pocket).Shape(), 2, onMouth, [allRound](const gp_Pnt& p, const gp_Pnt& q) {
+        return allRound || std::abs(p.Y() - q.Y()) < 1e-6;  // the long sides run along x
+    });
 }
 
 // The same pocket with a 20 x 10 island standing to the top in its middle, the island's top
@@ -183,19 +194,9 @@ TopoDS_Shape pocketWithChamferedIsland() {
     TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 60, 20)).Shape();
     TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(20, 15, 10), gp_Pnt(80, 45, 30)).Shape();
     TopoDS_Shape island = BRepPrimAPI_MakeBox(gp_Pnt(40, 25, 10), gp_Pnt(60, 35, 20)).Shape();
-    TopoDS_Shape part = BRepAlgoAPI_Fuse(BRepAlgoAPI_Cut(block, pocket).Shape(), island).Shape();
-    BRepFilletAPI_MakeChamfer ch(part);
-    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
-        TopoDS_Vertex a, b;
-        TopExp::Vertices(edge, a, b);
-        auto onTop = [](const gp_Pnt& r) {
-            return std::abs(r.Z() - 20) < 1e-6 && r.X() > 39 && r.X() < 61 && r.Y() > 24 && r.Y() < 36;
-        };
-        if (onTop(BRep_Tool::Pnt(a)) && onTop(BRep_Tool::Pnt(b))) ch.Add(2, edge);
-    }
-    ch.Build();
-    return ch.Shape();
+    return chamferEdges(BRepAlgoAPI_Fuse(BRepAlgoAPI_Cut(block, pocket).Shape(), island).Shape(), 2, [](const gp_Pnt& r) {
+        return std::abs(r.Z() - 20) < 1e-6 && r.X() > 39 && r.X() < 61 && r.Y() > 24 && r.Y() < 36;
+    });
 }
 
 // A 160 x 120 x 40 block with an 80 x 60 x 30 pocket whose mouth carries a 45 degree x 12.7 mm
@@ -204,19 +205,9 @@ TopoDS_Shape pocketWithChamferedIsland() {
 TopoDS_Shape wideChamferedPocket() {
     TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(160, 120, 40)).Shape();
     TopoDS_Shape pocket = BRepPrimAPI_MakeBox(gp_Pnt(40, 30, 10), gp_Pnt(120, 90, 50)).Shape();
-    TopoDS_Shape part = BRepAlgoAPI_Cut(block, pocket).Shape();
-    BRepFilletAPI_MakeChamfer ch(part);
-    for (TopExp_Explorer x(part, TopAbs_EDGE); x.More(); x.Next()) {
-        const TopoDS_Edge& edge = TopoDS::Edge(x.Current());
-        TopoDS_Vertex a, b;
-        TopExp::Vertices(edge, a, b);
-        auto onMouth = [](const gp_Pnt& r) {
-            return std::abs(r.Z() - 40) < 1e-6 && r.X() > 39 && r.X() < 121 && r.Y() > 29 && r.Y() < 91;
-        };
-        if (onMouth(BRep_Tool::Pnt(a)) && onMouth(BRep_Tool::Pnt(b))) ch.Add(12.7, edge);
-    }
-    ch.Build();
-    return ch.Shape();
+    return chamferEdges(BRepAlgoAPI_Cut(block, pocket).Shape(), 12.7, [](const gp_Pnt& r) {
+        return std::abs(r.Z() - 40) < 1e-6 && r.X() > 39 && r.X() < 121 && r.Y() > 29 && r.Y() < 91;
+    });
 }
 
 recognition::DomainTree recogniseUp(const TopoDS_Shape& shape, const std::string& name) {
